@@ -1,0 +1,42 @@
+// The CPU evaluator: runs a compiled SdfProgram exactly as shaders/common/sdf_scene.glsl does
+// (same formulas in GLM). It is the oracle the GPU renders are tested against and serves
+// picking and bounds.
+#pragma once
+
+#include "scene/scene.hpp"
+#include "sdf/program.hpp"
+
+#include <optional>
+#include <span>
+
+namespace rmsc {
+
+// Surface properties at a point: the distance, the dominant object, and the material blended
+// through smooth operations with the same factor as the distances.
+struct SdfSurface {
+    float distance = 0.0f;
+    std::uint32_t objectId = 0;
+    glm::vec3 baseColor{0.8f};
+    float metallic = 0.0f;
+    float roughness = 0.5f;
+    glm::vec3 emissive{0.0f};
+};
+
+float sdfDistance(const SdfProgram& program, glm::vec3 p);
+// `materials` is indexed by GpuSdfInstruction::material.
+SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p);
+// Normalized gradient by the tetrahedron technique (4 evaluations; Quilez, "normals for an SDF").
+glm::vec3 sdfNormal(const SdfProgram& program, glm::vec3 p, float h);
+
+struct SdfHit {
+    float t = 0.0f; // distance along the normalized direction
+    glm::vec3 position{0.0f};
+    int steps = 0;
+};
+
+// Sphere tracing as the march pass does it: starts at t = tMin, hits when
+// d < settings.surfaceEpsilon * max(t, 1), gives up after settings.maxSteps steps or t > tMax.
+std::optional<SdfHit> sdfCastRay(const SdfProgram& program, const RenderSettings& settings,
+                                 glm::vec3 origin, glm::vec3 direction, float tMin, float tMax);
+
+} // namespace rmsc
