@@ -1,6 +1,8 @@
 # Writes a C++ source that embeds files as byte arrays, keyed by their path relative to ROOT.
-# Run by `cmake -P` at build time: -DROOT=<dir> -DOUT=<file.cpp> -DFILES=<a;b;c> -DNAME=<fn>
+# Run by `cmake -P` at build time: -DROOT=<dir> -DOUT=<file.cpp> -DLIST=<file listing the
+# files, ;-separated> -DNAME=<fn>
 # Defines: std::span<const rmsc::EmbeddedFile> <NAME>();
+file(READ ${LIST} FILES)
 set(body "")
 set(table "")
 set(i 0)

@@ -1,0 +1,17 @@
+// The rmsc subcommands. Each takes its arguments (after the subcommand name) and returns the
+// process exit code: 0 success, 1 bad input (scene, model), 2 bad usage, 3 no GL or I/O error.
+#pragma once
+
+#include <span>
+#include <string>
+
+namespace rmsc::app {
+
+enum ExitCode { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitSystem = 3 };
+
+int runRender(std::span<const std::string> args);
+int runValidate(std::span<const std::string> args);
+int runBench(std::span<const std::string> args);
+int runPrimitives(std::span<const std::string> args);
+
+} // namespace rmsc::app

@@ -1,0 +1,127 @@
+// rmsc render: one frame of a scene to an image file (display colour or an AOV).
+#include "app/commands.hpp"
+#include "app/options.hpp"
+
+#include "core/image_io.hpp"
+#include "gl/context.hpp"
+#include "render/readback.hpp"
+#include "render/renderer.hpp"
+#include "scene/prepared_scene.hpp"
+
+#include <cstdio>
+
+namespace rmsc::app {
+namespace {
+
+const OptionSpec kOptions[] = {
+    {"--output", "-o", "FILE", "image to write (.png; .pfm for float depth/normal)"},
+    {"--size", nullptr, "WxH", "image size in pixels (default 640x360)"},
+    {"--backend", nullptr, "NAME", "auto | egl | osmesa (default auto: EGL, then OSMesa)"},
+    {"--aov", nullptr, "NAME",
+     "color | depth | normal | id (default color); depth is linear view depth"},
+};
+
+const CommandSpec kSpec = {
+    "render", "rmsc render [SCENE] -o OUT.png [--size WxH] [--backend B] [--aov A]",
+    "Renders SCENE (a .json scene, or a .gltf/.glb model opened with a default light and a\n"
+    "framing camera; without SCENE, the built-in demo) headless and writes one image.\n"
+    "AOVs: depth = 16-bit grey PNG, round(65535*(z-near)/(far-near)), 65535 where nothing was\n"
+    "hit (or float view depth in a .pfm); normal = world normal as (n*0.5+0.5) in RGB, black\n"
+    "where nothing was hit (float in a .pfm); id = a stable colour per object.",
+    kOptions, 1};
+
+} // namespace
+
+int runRender(std::span<const std::string> args) {
+    std::string error;
+    std::optional<ParsedArgs> parsed = parseArgs(kSpec, args, error);
+    if (!parsed) {
+        std::fprintf(stderr, "rmsc render: %s\n", error.c_str());
+        return kExitUsage;
+    }
+    if (parsed->help) {
+        std::fputs(formatHelp(kSpec).c_str(), stdout);
+        return kExitOk;
+    }
+    int width = 640, height = 360;
+    if (parsed->has("--size") && !parseSize(parsed->get("--size", ""), width, height)) {
+        std::fprintf(stderr, "rmsc render: --size: expected WxH with sides 1..16384, got '%s'\n",
+                     parsed->get("--size", "").c_str());
+        return kExitUsage;
+    }
+    GlBackend backend = GlBackend::Auto;
+    if (!parseGlBackend(parsed->get("--backend", "auto"), backend)) {
+        std::fprintf(stderr, "rmsc render: --backend: expected auto, egl or osmesa, got '%s'\n",
+                     parsed->get("--backend", "").c_str());
+        return kExitUsage;
+    }
+    const std::string aov = parsed->get("--aov", "color");
+    if (aov != "color" && aov != "depth" && aov != "normal" && aov != "id") {
+        std::fprintf(stderr, "rmsc render: --aov: expected color, depth, normal or id, got '%s'\n",
+                     aov.c_str());
+        return kExitUsage;
+    }
+    const std::filesystem::path output = parsed->get("--output", "");
+    if (output.empty()) {
+        std::fprintf(stderr, "rmsc render: no output file given (-o OUT.png)\n");
+        return kExitUsage;
+    }
+    const bool pfm = output.extension() == ".pfm";
+    if (output.extension() != ".png" && !pfm) {
+        std::fprintf(stderr, "rmsc render: %s: expected a .png or .pfm file name\n",
+                     output.c_str());
+        return kExitUsage;
+    }
+    if (pfm && aov != "depth" && aov != "normal") {
+        std::fprintf(stderr, "rmsc render: .pfm output is for --aov depth or normal\n");
+        return kExitUsage;
+    }
+
+    Diagnostics diagnostics;
+    const std::filesystem::path scenePath =
+        parsed->positionals.empty() ? std::filesystem::path() : std::filesystem::path(parsed->positionals[0]);
+    std::optional<PreparedScene> prepared = openScene(scenePath, diagnostics);
+    std::fputs(diagnostics.format().c_str(), stderr);
+    if (!prepared) return kExitBadInput;
+
+    std::unique_ptr<HeadlessContext> context = createHeadlessContext(backend, false, error);
+    if (!context) {
+        std::fprintf(stderr, "rmsc render: %s\n", error.c_str());
+        return kExitSystem;
+    }
+    std::optional<Renderer> renderer = Renderer::create(ShaderFiles::embedded(), error);
+    if (!renderer) {
+        std::fprintf(stderr, "rmsc render: %s\n", error.c_str());
+        return kExitSystem;
+    }
+    const GpuScene gpuScene = uploadScene(*prepared);
+    FrameTargets targets = createFrameTargets(width, height);
+    const Scene& scene = prepared->scene;
+    renderer->render(gpuScene, scene.camera, scene.render, targets);
+
+    bool written = false;
+    if (aov == "color") {
+        written = writePng8(output, readDisplayColor(targets), error);
+    } else if (aov == "depth") {
+        const Pixels<float> depth = readViewDepth(targets);
+        written = pfm ? writePfm(output, depth, error)
+                      : writePng16(output,
+                                   encodeDepth16(depth, scene.camera.nearPlane,
+                                                 scene.camera.farPlane),
+                                   error);
+    } else if (aov == "normal") {
+        const Pixels<float> normals = readNormals(targets);
+        written = pfm ? writePfm(output, normals, error)
+                      : writePng8(output, encodeNormals(normals), error);
+    } else {
+        written = writePng8(output, encodeObjectIds(readObjectIds(targets)), error);
+    }
+    if (!written) {
+        std::fprintf(stderr, "rmsc render: %s: cannot write the image: %s\n", output.c_str(),
+                     error.c_str());
+        return kExitSystem;
+    }
+    return kExitOk;
+}
+
+} // namespace rmsc::app

@@ -1,0 +1,149 @@
+// Image files and AOV encodings.
+#include "core/image_io.hpp"
+
+#include <png.h>
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+
+namespace rmsc {
+namespace {
+
+// Writes via `writeFile(tmpPath)` then renames over `path`.
+template <class Write>
+bool writeAtomically(const std::filesystem::path& path, std::string& error, Write&& writeFile) {
+    std::filesystem::path tmp = path;
+    tmp += ".tmp";
+    if (!writeFile(tmp)) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        if (error.empty()) error = "cannot write " + tmp.string();
+        return false;
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        error = "cannot rename " + tmp.string() + " to " + path.string() + ": " + ec.message();
+        std::filesystem::remove(tmp, ec);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+bool writePng8(const std::filesystem::path& path, const Pixels<std::uint8_t>& image,
+               std::string& error) {
+    return writeAtomically(path, error, [&](const std::filesystem::path& tmp) {
+        return stbi_write_png(tmp.c_str(), image.width, image.height, image.channels,
+                              image.data.data(), image.width * image.channels) != 0;
+    });
+}
+
+bool writePng16(const std::filesystem::path& path, const Pixels<std::uint16_t>& image,
+                std::string& error) {
+    return writeAtomically(path, error, [&](const std::filesystem::path& tmp) {
+        FILE* file = std::fopen(tmp.c_str(), "wb");
+        if (!file) return false;
+        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+        png_infop info = png ? png_create_info_struct(png) : nullptr;
+        bool ok = false;
+        if (png && info && !setjmp(png_jmpbuf(png))) {
+            png_init_io(png, file);
+            const int colorType = image.channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
+            png_set_IHDR(png, info, png_uint_32(image.width), png_uint_32(image.height), 16,
+                         colorType, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                         PNG_FILTER_TYPE_DEFAULT);
+            png_write_info(png, info);
+            png_set_swap(png); // PNG stores 16-bit samples big-endian
+            for (int y = 0; y < image.height; ++y)
+                png_write_row(png, reinterpret_cast<png_const_bytep>(image.at(0, y)));
+            png_write_end(png, nullptr);
+            ok = true;
+        }
+        png_destroy_write_struct(&png, &info);
+        return std::fclose(file) == 0 && ok;
+    });
+}
+
+bool writePfm(const std::filesystem::path& path, const Pixels<float>& image, std::string& error) {
+    return writeAtomically(path, error, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out << (image.channels == 1 ? "Pf" : "PF") << "\n"
+            << image.width << " " << image.height << "\n-1.0\n";
+        for (int y = image.height - 1; y >= 0; --y)
+            out.write(reinterpret_cast<const char*>(image.at(0, y)),
+                      std::streamsize(sizeof(float) * image.width * image.channels));
+        return bool(out);
+    });
+}
+
+std::optional<Pixels<std::uint8_t>> readPng8(const std::filesystem::path& path, int channels,
+                                             std::string& error) {
+    int width = 0, height = 0, fileChannels = 0;
+    stbi_uc* data = stbi_load(path.c_str(), &width, &height, &fileChannels, channels);
+    if (!data) {
+        error = path.string() + ": " + stbi_failure_reason();
+        return std::nullopt;
+    }
+    Pixels<std::uint8_t> image{width, height, channels, {}};
+    image.data.assign(data, data + std::size_t(width) * height * channels);
+    stbi_image_free(data);
+    return image;
+}
+
+Pixels<std::uint16_t> encodeDepth16(const Pixels<float>& depth, float nearPlane, float farPlane) {
+    Pixels<std::uint16_t> out{depth.width, depth.height, 1, {}};
+    out.data.resize(depth.data.size());
+    for (std::size_t i = 0; i < depth.data.size(); ++i) {
+        const float normalized = (depth.data[i] - nearPlane) / (farPlane - nearPlane);
+        out.data[i] = std::uint16_t(std::lround(65535.0f * std::clamp(normalized, 0.0f, 1.0f)));
+    }
+    return out;
+}
+
+Pixels<std::uint8_t> encodeNormals(const Pixels<float>& normals) {
+    Pixels<std::uint8_t> out{normals.width, normals.height, 3, {}};
+    out.data.resize(std::size_t(normals.width) * normals.height * 3);
+    for (std::size_t i = 0; i < std::size_t(normals.width) * normals.height; ++i) {
+        const float* n = &normals.data[i * 3];
+        const bool hit = n[0] != 0.0f || n[1] != 0.0f || n[2] != 0.0f;
+        for (int c = 0; c < 3; ++c)
+            out.data[i * 3 + c] =
+                hit ? std::uint8_t(std::lround(std::clamp(n[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255))
+                    : 0;
+    }
+    return out;
+}
+
+void objectIdColor(std::uint32_t id, std::uint8_t rgb[3]) {
+    if (id == 0) {
+        rgb[0] = rgb[1] = rgb[2] = 0;
+        return;
+    }
+    // A 32-bit integer hash (the "lowbias32" finalizer by Chris Wellons, hash-prospector).
+    std::uint32_t h = id;
+    h ^= h >> 16;
+    h *= 0x7feb352dU;
+    h ^= h >> 15;
+    h *= 0x846ca68bU;
+    h ^= h >> 16;
+    // Keep colours away from black so no object looks like the background.
+    rgb[0] = std::uint8_t(64 + (h & 0xff) % 192);
+    rgb[1] = std::uint8_t(64 + ((h >> 8) & 0xff) % 192);
+    rgb[2] = std::uint8_t(64 + ((h >> 16) & 0xff) % 192);
+}
+
+Pixels<std::uint8_t> encodeObjectIds(const Pixels<std::uint32_t>& ids) {
+    Pixels<std::uint8_t> out{ids.width, ids.height, 3, {}};
+    out.data.resize(ids.data.size() * 3);
+    for (std::size_t i = 0; i < ids.data.size(); ++i) objectIdColor(ids.data[i], &out.data[i * 3]);
+    return out;
+}
+
+} // namespace rmsc

@@ -1,0 +1,56 @@
+// Camera matrices and the frustum-corner matrix.
+#include "render/frame.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace rmsc {
+
+FrameCamera makeFrameCamera(const Camera& camera, int width, int height) {
+    FrameCamera frame;
+    const float aspect = float(width) / float(std::max(height, 1));
+    const float fovY = glm::radians(camera.fovYDegrees);
+    frame.view = glm::lookAt(camera.position, camera.target, camera.up);
+    frame.projection = glm::perspective(fovY, aspect, camera.nearPlane, camera.farPlane);
+    frame.viewProjection = frame.projection * frame.view;
+    frame.position = camera.position;
+    frame.forward = glm::normalize(camera.target - camera.position);
+    const glm::vec3 right = glm::normalize(glm::cross(frame.forward, camera.up));
+    const glm::vec3 up = glm::cross(right, frame.forward);
+    const float tanY = std::tan(0.5f * fovY);
+    const float tanX = tanY * aspect;
+    auto corner = [&](float sx, float sy) {
+        return glm::vec4(frame.forward + sx * tanX * right + sy * tanY * up, 0.0f);
+    };
+    frame.frustumCorners =
+        glm::mat4(corner(-1, -1), corner(1, -1), corner(-1, 1), corner(1, 1));
+    frame.nearPlane = camera.nearPlane;
+    frame.farPlane = camera.farPlane;
+    return frame;
+}
+
+glm::vec3 pixelRayDirection(const FrameCamera& camera, float x, float y, int width, int height) {
+    const float u = (x + 0.5f) / float(width);
+    const float v = (y + 0.5f) / float(height);
+    const glm::mat4& c = camera.frustumCorners;
+    const glm::vec3 bottom = glm::mix(glm::vec3(c[0]), glm::vec3(c[1]), u);
+    const glm::vec3 top = glm::mix(glm::vec3(c[2]), glm::vec3(c[3]), u);
+    return glm::mix(bottom, top, v);
+}
+
+GpuFrame packFrame(const FrameCamera& camera, const RenderSettings& settings, int width,
+                   int height) {
+    GpuFrame frame{};
+    frame.view = camera.view;
+    frame.viewProjection = camera.viewProjection;
+    frame.frustumCorners = camera.frustumCorners;
+    frame.cameraPosition = glm::vec4(camera.position, camera.nearPlane);
+    frame.cameraForward = glm::vec4(camera.forward, camera.farPlane);
+    frame.background = glm::vec4(settings.background, settings.exposure);
+    frame.ambient = glm::vec4(settings.ambient, 0.0f);
+    frame.march = glm::vec4(float(settings.maxSteps), settings.maxDistance,
+                            settings.surfaceEpsilon, 0.0f);
+    frame.viewport = glm::vec4(float(width), float(height), 0.0f, 0.0f);
+    return frame;
+}
+
+} // namespace rmsc

@@ -1,0 +1,49 @@
+// Per-frame camera data shared by all passes: matrices, the frustum-corner matrix the march
+// pass builds rays from, and the std140 uniform block that carries them
+// (shaders/common/frame.glsl).
+#pragma once
+
+#include "scene/scene.hpp"
+
+#include <glm/glm.hpp>
+
+namespace rmsc {
+
+struct FrameCamera {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::mat4 viewProjection{1.0f};
+    // Columns: world-space directions from the eye through the bottom-left, bottom-right,
+    // top-left and top-right corners of the image, scaled so their component along `forward`
+    // is 1 (so t along an unnormalized corner ray is the view depth).
+    glm::mat4 frustumCorners{1.0f};
+    glm::vec3 position{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};
+    float nearPlane = 0.05f;
+    float farPlane = 200.0f;
+};
+
+FrameCamera makeFrameCamera(const Camera& camera, int width, int height);
+
+// Direction (unnormalized, forward component 1) through pixel centre (x + 0.5, y + 0.5), with
+// y counted from the bottom row, exactly as the march pass computes it.
+glm::vec3 pixelRayDirection(const FrameCamera& camera, float x, float y, int width, int height);
+
+// std140 uniform block at binding 0, mirrored by FrameBlock in shaders/common/frame.glsl.
+struct GpuFrame {
+    glm::mat4 view;
+    glm::mat4 viewProjection;
+    glm::mat4 frustumCorners;
+    glm::vec4 cameraPosition; // xyz, w = near plane
+    glm::vec4 cameraForward;  // xyz, w = far plane
+    glm::vec4 background;     // rgb = background colour, a = exposure
+    glm::vec4 ambient;        // rgb = ambient light
+    glm::vec4 march;          // x = max steps, y = max distance, z = surface epsilon
+    glm::vec4 viewport;       // x = width, y = height
+};
+static_assert(sizeof(GpuFrame) == 3 * 64 + 6 * 16);
+
+GpuFrame packFrame(const FrameCamera& camera, const RenderSettings& settings, int width,
+                   int height);
+
+} // namespace rmsc

@@ -1,0 +1,346 @@
+// Baking a glTF scene into triangle primitives (see gltf_geometry.hpp).
+#include "scene/gltf_geometry.hpp"
+
+#include "scene/gltf_accessors.hpp"
+#include "scene/gltf_validate.hpp"
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace rmsc::gltf {
+
+namespace {
+
+// One primitive as stored in the file, in its mesh's local space.
+struct SourcePrimitive {
+    bool drawable = false; // false for primitives skipped with a warning
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals; // empty when the file has none
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> triangles; // 3 indices per triangle
+    int material = -1;
+};
+
+std::string primitivePointer(std::size_t mesh, std::size_t primitive) {
+    return "/meshes/" + std::to_string(mesh) + "/primitives/" + std::to_string(primitive);
+}
+
+// Converts an index list of `mode` (4, 5 or 6) to a triangle list.
+std::optional<std::vector<std::uint32_t>> toTriangles(const std::vector<std::uint32_t>& indices,
+                                                      int mode, const std::string& pointer,
+                                                      Reporter& report) {
+    std::vector<std::uint32_t> out;
+    const std::size_t n = indices.size();
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        if (n % 3 != 0) {
+            report.error(pointer, std::to_string(n) +
+                                      " indices (or vertices) do not form whole triangles, "
+                                      "expected a multiple of 3");
+            return std::nullopt;
+        }
+        return indices;
+    }
+    if (n < 3) return out;
+    out.reserve((n - 2) * 3);
+    for (std::size_t i = 0; i + 2 < n; ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            // Every other triangle is reversed to keep the strip's winding.
+            const bool odd = i % 2 == 1;
+            out.insert(out.end(),
+                       {indices[i], indices[i + (odd ? 2 : 1)], indices[i + (odd ? 1 : 2)]});
+        } else {
+            out.insert(out.end(), {indices[i + 1], indices[i + 2], indices[0]});
+        }
+    }
+    return out;
+}
+
+bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::size_t primIndex,
+                   Reporter& report, SourcePrimitive& out) {
+    const tinygltf::Primitive& prim = model.meshes[meshIndex].primitives[primIndex];
+    const std::string pointer = primitivePointer(meshIndex, primIndex);
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        report.warning(pointer + "/mode", "points and lines (mode " + std::to_string(prim.mode) +
+                                              ") are not drawn; primitive skipped");
+        return true;
+    }
+    const auto accessorOf = [&](const char* name) -> int {
+        const auto it = prim.attributes.find(name);
+        if (it == prim.attributes.end()) return -1;
+        return it->second >= 0 && std::size_t(it->second) < model.accessors.size() ? it->second
+                                                                                   : -2;
+    };
+    const int positionAccessor = accessorOf("POSITION");
+    if (positionAccessor < 0) {
+        report.error(pointer + "/attributes/POSITION", "expected a valid POSITION accessor");
+        return false;
+    }
+    const std::size_t vertexCount = model.accessors[std::size_t(positionAccessor)].count;
+    for (const auto& [name, accessor] : prim.attributes) {
+        if (accessor < 0 || std::size_t(accessor) >= model.accessors.size()) {
+            report.error(pointer + "/attributes/" + name, "refers to a missing accessor");
+            return false;
+        }
+        const std::size_t count = model.accessors[std::size_t(accessor)].count;
+        if (count != vertexCount) {
+            report.error(pointer + "/attributes/" + name,
+                         "accessor has " + std::to_string(count) + " elements but POSITION has " +
+                             std::to_string(vertexCount) + ", expected the same count");
+            return false;
+        }
+    }
+    std::vector<float> values;
+    if (!readFloatAttribute(model, positionAccessor, 3, false, "POSITION of " + pointer, values,
+                            report))
+        return false;
+    out.positions.resize(vertexCount);
+    for (std::size_t i = 0; i < vertexCount; ++i)
+        out.positions[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
+
+    if (const int normalAccessor = accessorOf("NORMAL"); normalAccessor >= 0) {
+        if (!readFloatAttribute(model, normalAccessor, 3, false, "NORMAL of " + pointer, values,
+                                report))
+            return false;
+        out.normals.resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            out.normals[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
+    }
+    out.uvs.assign(vertexCount, glm::vec2(0.0f));
+    if (const int uvAccessor = accessorOf("TEXCOORD_0"); uvAccessor >= 0) {
+        if (!readFloatAttribute(model, uvAccessor, 2, true, "TEXCOORD_0 of " + pointer, values,
+                                report))
+            return false;
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            out.uvs[i] = {values[2 * i], values[2 * i + 1]};
+    }
+
+    std::vector<std::uint32_t> indices;
+    if (prim.indices >= 0) {
+        if (std::size_t(prim.indices) >= model.accessors.size()) {
+            report.error(pointer + "/indices", "refers to a missing accessor");
+            return false;
+        }
+        if (!readIndices(model, prim.indices, "indices of " + pointer, indices, report))
+            return false;
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            if (indices[i] >= vertexCount) {
+                report.error("/accessors/" + std::to_string(prim.indices),
+                             "index " + std::to_string(indices[i]) + " at element " +
+                                 std::to_string(i) + " (indices of " + pointer +
+                                 ") is not less than the vertex count " +
+                                 std::to_string(vertexCount));
+                return false;
+            }
+        }
+    } else {
+        indices.resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            indices[i] = std::uint32_t(i);
+    }
+    auto triangles = toTriangles(indices, prim.mode, pointer, report);
+    if (!triangles) return false;
+    out.triangles = std::move(*triangles);
+    if (out.triangles.empty()) {
+        report.warning(pointer, "primitive has no triangles; skipped");
+        return true;
+    }
+    out.material = prim.material >= 0 && std::size_t(prim.material) < model.materials.size()
+                       ? prim.material
+                       : -1;
+    out.drawable = true;
+    return true;
+}
+
+std::optional<glm::dmat4> localMatrix(const tinygltf::Node& node, const std::string& pointer,
+                                      Reporter& report) {
+    if (node.matrix.size() == 16) {
+        glm::dmat4 m(1.0);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                m[c][r] = node.matrix[std::size_t(c * 4 + r)];
+        return m;
+    }
+    glm::dmat4 m(1.0);
+    if (node.translation.size() == 3)
+        m = glm::translate(
+            m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    if (node.rotation.size() == 4) {
+        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        const double length = glm::length(q);
+        if (!(length > 1e-6)) {
+            report.error(pointer + "/rotation", "expected a unit quaternion, got length 0");
+            return std::nullopt;
+        }
+        m = m * glm::mat4_cast(q / length);
+    }
+    if (node.scale.size() == 3)
+        m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return m;
+}
+
+// Appends `source` transformed by `world` to the asset.
+bool bake(const SourcePrimitive& source, const glm::dmat4& world, const std::string& nodePointer,
+          Reporter& report, MeshAsset& asset) {
+    std::uint64_t vertices = source.positions.size(), indices = source.triangles.size();
+    for (const MeshPrimitive& p : asset.primitives) {
+        vertices += p.vertices.size();
+        indices += p.indices.size();
+    }
+    if (vertices > kMaxVertices || indices > kMaxIndices) {
+        report.error(nodePointer, "the scene has more than " + std::to_string(kMaxVertices) +
+                                      " vertices or " + std::to_string(kMaxIndices) +
+                                      " indices once its nodes are instanced");
+        return false;
+    }
+    const glm::dmat3 linear(world);
+    const double det = glm::determinant(linear);
+    const glm::dmat3 normalMatrix = std::abs(det) > 1e-300 ? glm::inverseTranspose(linear) : linear;
+    MeshPrimitive out;
+    out.material = source.material;
+    out.vertices.resize(source.positions.size());
+    std::vector<glm::vec3> positions(source.positions.size());
+    for (std::size_t i = 0; i < source.positions.size(); ++i) {
+        const glm::dvec3 p = glm::dvec3(world * glm::dvec4(glm::dvec3(source.positions[i]), 1.0));
+        positions[i] = glm::vec3(p);
+        if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) ||
+            !std::isfinite(positions[i].z)) {
+            report.error(nodePointer, "the node's transform makes positions infinite or NaN");
+            return false;
+        }
+    }
+    out.indices = source.triangles;
+    if (det < 0)
+        for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3)
+            std::swap(out.indices[t + 1], out.indices[t + 2]);
+    std::vector<glm::vec3> normals;
+    if (source.normals.empty()) {
+        normals = smoothNormals(positions, out.indices);
+    } else {
+        normals.resize(source.normals.size());
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            const glm::dvec3 n = normalMatrix * glm::dvec3(source.normals[i]);
+            const double length = glm::length(n);
+            normals[i] = length > 1e-12 && std::isfinite(length) ? glm::vec3(n / length)
+                                                                 : glm::vec3(0.0f, 1.0f, 0.0f);
+        }
+    }
+    for (std::size_t i = 0; i < out.vertices.size(); ++i)
+        out.vertices[i] = {positions[i], normals[i], source.uvs[i]};
+    asset.primitives.push_back(std::move(out));
+    return true;
+}
+
+// The nodes to start from: the default scene's, scene 0's, or every node without a parent.
+std::vector<int> rootNodes(const tinygltf::Model& model) {
+    if (!model.scenes.empty()) {
+        const std::size_t scene =
+            model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
+                ? std::size_t(model.defaultScene)
+                : 0;
+        return model.scenes[scene].nodes;
+    }
+    std::vector<char> isChild(model.nodes.size(), 0);
+    for (const tinygltf::Node& node : model.nodes)
+        for (int child : node.children)
+            if (child >= 0 && std::size_t(child) < model.nodes.size())
+                isChild[std::size_t(child)] = 1;
+    std::vector<int> roots;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i)
+        if (!isChild[i]) roots.push_back(int(i));
+    return roots;
+}
+
+} // namespace
+
+std::vector<glm::vec3> smoothNormals(const std::vector<glm::vec3>& positions,
+                                     const std::vector<std::uint32_t>& triangles) {
+    std::vector<glm::dvec3> sums(positions.size(), glm::dvec3(0.0));
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const std::uint32_t a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+        if (a >= positions.size() || b >= positions.size() || c >= positions.size()) continue;
+        const glm::dvec3 pa(positions[a]), pb(positions[b]), pc(positions[c]);
+        const glm::dvec3 n = glm::cross(pb - pa, pc - pa); // length = twice the area
+        sums[a] += n;
+        sums[b] += n;
+        sums[c] += n;
+    }
+    std::vector<glm::vec3> normals(positions.size());
+    for (std::size_t i = 0; i < sums.size(); ++i) {
+        const double length = glm::length(sums[i]);
+        normals[i] = length > 0 && std::isfinite(length) ? glm::vec3(sums[i] / length)
+                                                         : glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+    return normals;
+}
+
+bool buildGeometry(const tinygltf::Model& model, Reporter& report, MeshAsset& asset) {
+    // Each mesh is read once, when first instanced.
+    std::vector<std::optional<std::vector<SourcePrimitive>>> meshes(model.meshes.size());
+    struct Visit {
+        int node;
+        glm::dmat4 parentWorld;
+        int depth;
+    };
+    std::vector<Visit> stack;
+    const std::vector<int> roots = rootNodes(model);
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.push_back({*it, glm::dmat4(1.0), 1});
+    std::vector<char> visited(model.nodes.size(), 0);
+    while (!stack.empty()) {
+        const Visit visit = stack.back();
+        stack.pop_back();
+        const std::string pointer = "/nodes/" + std::to_string(visit.node);
+        if (visit.node < 0 || std::size_t(visit.node) >= model.nodes.size()) {
+            report.error(pointer, "node does not exist");
+            return false;
+        }
+        if (visited[std::size_t(visit.node)] || visit.depth > kMaxNodeDepth) {
+            report.error(pointer, "node reached twice or nested too deeply, expected a tree");
+            return false;
+        }
+        visited[std::size_t(visit.node)] = 1;
+        const tinygltf::Node& node = model.nodes[std::size_t(visit.node)];
+        const auto local = localMatrix(node, pointer, report);
+        if (!local) return false;
+        const glm::dmat4 world = visit.parentWorld * *local;
+        if (node.mesh >= 0) {
+            const std::size_t m = std::size_t(node.mesh);
+            if (m >= model.meshes.size()) {
+                report.error(pointer + "/mesh", "refers to a missing mesh");
+                return false;
+            }
+            if (!meshes[m]) {
+                std::vector<SourcePrimitive> primitives(model.meshes[m].primitives.size());
+                for (std::size_t p = 0; p < primitives.size(); ++p)
+                    if (!readPrimitive(model, m, p, report, primitives[p])) return false;
+                meshes[m] = std::move(primitives);
+            }
+            for (const SourcePrimitive& source : *meshes[m])
+                if (source.drawable && !bake(source, world, pointer, report, asset)) return false;
+        }
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+            stack.push_back({*it, world, visit.depth + 1});
+    }
+    if (asset.primitives.empty()) {
+        report.warning("", "the file's scene contains no triangles");
+        asset.boundsMin = asset.boundsMax = glm::vec3(0.0f);
+        return true;
+    }
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const MeshPrimitive& p : asset.primitives)
+        for (const MeshVertex& v : p.vertices) {
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
+        }
+    asset.boundsMin = lo;
+    asset.boundsMax = hi;
+    return true;
+}
+
+} // namespace rmsc::gltf

@@ -1,0 +1,368 @@
+// loadGltf: reads a .gltf or .glb through a FileSource, checks it, lets tinygltf parse it
+// with file access confined to the glTF file's folder and images decoded by stb_image, then
+// validates the model and bakes its scene into a MeshAsset.
+#include "scene/mesh_asset.hpp"
+
+#include "scene/gltf_files.hpp"
+#include "scene/gltf_geometry.hpp"
+#include "scene/gltf_json_checks.hpp"
+#include "scene/gltf_report.hpp"
+#include "scene/gltf_tinygltf.hpp"
+#include "scene/gltf_validate.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <limits>
+#include <map>
+#include <new>
+#include <sstream>
+
+namespace rmsc {
+
+namespace {
+
+using gltf::Reporter;
+
+// The base folder handed to tinygltf. It is not a real path: the file callbacks accept only
+// paths below it, which also stops tinygltf's fallback search of the current directory.
+const std::string kFolderToken = "\x1f"
+                                 "gltf-folder";
+
+struct LoadContext {
+    const FileSource* files = nullptr;
+    std::filesystem::path folder; // of the glTF file, as given
+    Reporter* report = nullptr;
+    const tinygltf::Model* model = nullptr;            // being filled by tinygltf
+    std::map<std::string, std::string> bufferPointers; // resolved file -> "/buffers/i/uri"
+};
+
+// The file below the glTF folder that tinygltf asks for, or nullopt for any other path.
+std::optional<std::filesystem::path> confinedPath(const std::string& path, std::string& why) {
+    const std::string prefix = kFolderToken + "/";
+    if (path.rfind(prefix, 0) != 0) {
+        why = "outside the glTF file's folder";
+        return std::nullopt;
+    }
+    return gltf::resolveInFolder(std::string_view(path).substr(prefix.size()), why);
+}
+
+bool fileExists(const std::string& path, void* user) {
+    auto& context = *static_cast<LoadContext*>(user);
+    std::string why;
+    if (path.rfind(kFolderToken, 0) != 0) return false; // the current-directory fallback
+    if (!confinedPath(path, why)) {
+        context.report->error("", "refusing to read \"" + path.substr(kFolderToken.size() + 1) +
+                                      "\": " + why);
+        return false;
+    }
+    return true; // whether it can be read is found out by readWholeFile
+}
+
+std::string expandFilePath(const std::string& path, void*) {
+    return path;
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void* user) {
+    auto& context = *static_cast<LoadContext*>(user);
+    std::string why;
+    const auto relative = confinedPath(path, why);
+    if (relative) {
+        const auto bytes = context.files->read(context.folder / *relative, why);
+        if (bytes) {
+            out->assign(bytes->begin(), bytes->end());
+            return true;
+        }
+    }
+    const std::string name = relative ? relative->generic_string() : path;
+    const auto pointer = context.bufferPointers.find(name);
+    context.report->error(pointer != context.bufferPointers.end() ? pointer->second : "",
+                          "cannot read \"" + name + "\": " + why);
+    if (err) *err = why;
+    return false;
+}
+
+bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&,
+                    void*) {
+    if (err) *err = "rmsc does not write glTF files";
+    return false;
+}
+
+void storeImage(Image&& decoded, tinygltf::Image& image) {
+    image.width = decoded.width;
+    image.height = decoded.height;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.image = std::move(decoded.rgba);
+}
+
+// tinygltf's image callback: embedded (data URI) and buffer view images.
+bool loadImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+               const unsigned char* bytes, int size, void* user) {
+    auto& context = *static_cast<LoadContext*>(user);
+    const std::string pointer = "/images/" + std::to_string(index);
+    if (image->bufferView >= 0) {
+        const tinygltf::Model& model = *context.model;
+        const std::size_t v = std::size_t(image->bufferView);
+        bool inside = v < model.bufferViews.size();
+        if (inside) {
+            const tinygltf::BufferView& view = model.bufferViews[v];
+            std::uint64_t end = 0;
+            inside = view.buffer >= 0 && std::size_t(view.buffer) < model.buffers.size() &&
+                     !__builtin_add_overflow(std::uint64_t(view.byteOffset),
+                                             std::uint64_t(view.byteLength), &end) &&
+                     end <= model.buffers[std::size_t(view.buffer)].data.size() &&
+                     view.byteLength <= std::uint64_t(std::numeric_limits<int>::max());
+        }
+        if (!inside) {
+            context.report->error(pointer + "/bufferView",
+                                  "image data lies outside its buffer, expected /bufferViews/" +
+                                      std::to_string(v) + " to fit in its buffer");
+            return false;
+        }
+    }
+    Image decoded;
+    std::string why;
+    if (size <= 0 || !gltf::decodeImage(bytes, std::size_t(size), decoded, why)) {
+        context.report->error(pointer, size <= 0 ? "image data is empty" : why);
+        return false;
+    }
+    storeImage(std::move(decoded), *image);
+    return true;
+}
+
+// tinygltf's messages, one diagnostic per line, without the folder token and cut to a
+// readable length (they may quote whole data URIs).
+void reportTinygltf(const std::string& text, bool asError, Reporter& report) {
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        for (std::size_t at; (at = line.find(kFolderToken + "/")) != std::string::npos;)
+            line.erase(at, kFolderToken.size() + 1);
+        if (line.size() > 200) line = line.substr(0, 200) + "...";
+        if (line.empty()) continue;
+        if (asError)
+            report.error("", line);
+        else
+            report.warning("", "glTF parser: " + line);
+    }
+}
+
+// External image files, which tinygltf leaves to us (TINYGLTF_NO_EXTERNAL_IMAGE).
+bool loadExternalImages(tinygltf::Model& model, LoadContext& context) {
+    bool ok = true;
+    for (std::size_t i = 0; i < model.images.size(); ++i) {
+        tinygltf::Image& image = model.images[i];
+        if (!image.image.empty() || image.uri.empty() || gltf::isDataUri(image.uri)) continue;
+        const std::string pointer = "/images/" + std::to_string(i) + "/uri";
+        std::string why;
+        const auto decoded = gltf::percentDecode(image.uri);
+        const auto relative =
+            decoded ? gltf::resolveInFolder(*decoded, why) : std::optional<std::filesystem::path>();
+        if (!decoded) why = "malformed percent escape in URI";
+        std::optional<std::string> bytes;
+        if (relative) bytes = context.files->read(context.folder / *relative, why);
+        Image rgba;
+        if (!bytes) {
+            context.report->error(pointer, "cannot read image \"" + image.uri + "\": " + why);
+            ok = false;
+        } else if (!gltf::decodeImage(reinterpret_cast<const unsigned char*>(bytes->data()),
+                                      bytes->size(), rgba, why)) {
+            context.report->error(pointer, "image \"" + image.uri + "\": " + why);
+            ok = false;
+        } else {
+            storeImage(std::move(rgba), image);
+        }
+    }
+    return ok;
+}
+
+void convertMaterials(const tinygltf::Model& model, Reporter& report, MeshAsset& asset) {
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& m = model.materials[i];
+        const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+        MeshMaterial out;
+        out.name = m.name;
+        out.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                        pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+        out.metallicFactor = float(pbr.metallicFactor);
+        out.roughnessFactor = float(pbr.roughnessFactor);
+        out.emissiveFactor =
+            glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+        out.doubleSided = m.doubleSided;
+        const std::string pointer =
+            "/materials/" + std::to_string(i) + "/pbrMetallicRoughness/baseColorTexture";
+        const int texture = pbr.baseColorTexture.index;
+        if (texture >= 0 && std::size_t(texture) < model.textures.size()) {
+            const int source = model.textures[std::size_t(texture)].source;
+            if (source >= 0 && std::size_t(source) < model.images.size())
+                out.baseColorTexture = source;
+            else
+                report.warning("/textures/" + std::to_string(texture),
+                               "texture has no image source rmsc can use; ignored");
+            if (pbr.baseColorTexture.texCoord != 0)
+                report.warning(pointer + "/texCoord",
+                               "only TEXCOORD_0 is supported; the texture uses TEXCOORD_0");
+        }
+        asset.materials.push_back(std::move(out));
+    }
+}
+
+// A GLB holding exactly the chunks we checked, so tinygltf's own GLB reader agrees with ours.
+std::string canonicalGlb(const gltf::GlbChunks& chunks) {
+    std::string out;
+    const auto u32 = [&out](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            out += char((v >> (8 * i)) & 0xff);
+    };
+    const std::uint64_t length =
+        12 + 8 + chunks.json.size() + (chunks.hasBin ? 8 + chunks.bin.size() : 0);
+    out += "glTF";
+    u32(2);
+    u32(std::uint32_t(length));
+    u32(std::uint32_t(chunks.json.size()));
+    u32(0x4E4F534A);
+    out += chunks.json;
+    if (chunks.hasBin) {
+        u32(std::uint32_t(chunks.bin.size()));
+        u32(0x004E4942);
+        out += chunks.bin;
+    }
+    return out;
+}
+
+std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSource& files,
+                              Reporter& report) {
+    std::string why;
+    const auto bytes = files.read(path, why);
+    if (!bytes) {
+        report.error("", "cannot read glTF file: " + why);
+        return std::nullopt;
+    }
+    if (bytes->empty()) {
+        report.error("", "file is empty, expected glTF JSON or binary glTF");
+        return std::nullopt;
+    }
+    if (bytes->size() >= std::numeric_limits<std::uint32_t>::max()) {
+        report.error("", "file is 4 GiB or larger, more than glTF allows");
+        return std::nullopt;
+    }
+    const bool isGlb = gltf::hasGlbMagic(*bytes);
+    gltf::GlbChunks chunks;
+    std::string_view jsonText = *bytes;
+    if (isGlb) {
+        const auto split = gltf::splitGlb(*bytes, why);
+        if (!split) {
+            report.error("", "invalid binary glTF: " + why);
+            return std::nullopt;
+        }
+        chunks = *split;
+        jsonText = chunks.json;
+    }
+    if (gltf::jsonNestingDepth(jsonText, gltf::kMaxJsonDepth) > gltf::kMaxJsonDepth) {
+        report.error("", "JSON is nested more than " + std::to_string(gltf::kMaxJsonDepth) +
+                             " levels deep");
+        return std::nullopt;
+    }
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(jsonText.begin(), jsonText.end());
+    } catch (const nlohmann::json::exception& e) {
+        report.error("", std::string("invalid JSON: ") + e.what());
+        return std::nullopt;
+    }
+    gltf::JsonCheckInput input;
+    input.isGlb = isGlb;
+    input.hasBinChunk = chunks.hasBin;
+    input.binSize = chunks.bin.size();
+    if (!gltf::checkGltfJson(document, input, report)) return std::nullopt;
+
+    tinygltf::Model model;
+    LoadContext context;
+    context.files = &files;
+    context.folder = path.parent_path();
+    context.report = &report;
+    context.model = &model;
+    if (const auto buffers = document.find("buffers");
+        buffers != document.end() && buffers->is_array()) {
+        for (std::size_t i = 0; i < buffers->size(); ++i) {
+            const nlohmann::json& buffer = (*buffers)[i];
+            const auto uri = buffer.is_object() ? buffer.find("uri") : buffer.end();
+            if (uri == buffer.end() || !uri->is_string() ||
+                gltf::isDataUri(uri->get_ref<const std::string&>()))
+                continue;
+            const auto decoded = gltf::percentDecode(uri->get_ref<const std::string&>());
+            if (const auto relative = gltf::resolveInFolder(decoded.value_or(""), why))
+                context.bufferPointers.emplace(relative->generic_string(),
+                                               "/buffers/" + std::to_string(i) + "/uri");
+        }
+    }
+    document = nlohmann::json(); // free it before tinygltf parses its own copy
+
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks(
+        {&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &context});
+    loader.SetImageLoader(&loadImage, &context);
+    std::string err, warn;
+    const int errorsBefore = report.errors;
+    bool ok = false;
+    try {
+        if (isGlb) {
+            const std::string glb = canonicalGlb(chunks);
+            ok = loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                             reinterpret_cast<const unsigned char*>(glb.data()),
+                                             unsigned(glb.size()), kFolderToken);
+        } else {
+            ok = loader.LoadASCIIFromString(&model, &err, &warn, jsonText.data(),
+                                            unsigned(jsonText.size()), kFolderToken);
+        }
+    } catch (const std::exception& e) {
+        report.error("", std::string("glTF parser failed: ") + e.what());
+        return std::nullopt;
+    } catch (...) {
+        report.error("", "glTF parser failed with an unknown exception");
+        return std::nullopt;
+    }
+    reportTinygltf(warn, false, report);
+    reportTinygltf(err, true, report);
+    if (!ok && report.errors == errorsBefore)
+        report.error("", "glTF parser failed without saying why");
+    if (report.errors > 0) return std::nullopt;
+
+    if (!gltf::validateModel(model, report)) return std::nullopt;
+    if (!loadExternalImages(model, context)) return std::nullopt;
+
+    MeshAsset asset;
+    asset.path = path;
+    for (tinygltf::Image& image : model.images) {
+        Image out;
+        out.width = image.width;
+        out.height = image.height;
+        out.rgba = std::move(image.image);
+        asset.images.push_back(std::move(out));
+    }
+    convertMaterials(model, report, asset);
+    if (!gltf::buildGeometry(model, report, asset)) return std::nullopt;
+    if (report.errors > 0) return std::nullopt;
+    return asset;
+}
+
+} // namespace
+
+std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
+                                  Diagnostics& diagnostics) {
+    Reporter report{path.string(), &diagnostics};
+    try {
+        return load(path, files, report);
+    } catch (const std::bad_alloc&) {
+        report.error("", "out of memory while loading the glTF file");
+    } catch (const std::exception& e) {
+        report.error("", std::string("unexpected error while loading: ") + e.what());
+    } catch (...) {
+        report.error("", "unexpected error while loading");
+    }
+    return std::nullopt;
+}
+
+} // namespace rmsc

@@ -1,0 +1,190 @@
+// Writing scenes as format version 1 JSON (sceneToJson): every section, materials referenced by
+// name, shape parameters by their catalogue names, rotations as exact quaternions and numbers in
+// the fewest digits that read back as the same float. Number arrays stay on one line.
+#include "scene/scene_json.hpp"
+
+#include "scene/transform_json.hpp"
+
+#include <set>
+
+namespace rmsc {
+namespace {
+
+constexpr const char* kOpNames[] = {"union",        "subtraction",        "intersection",
+                                    "smooth_union", "smooth_subtraction", "smooth_intersection"};
+
+bool isSmooth(SdfOp op) {
+    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
+           op == SdfOp::SmoothIntersection;
+}
+
+// Material keys of the written file, one per Scene::materials entry. Scenes built in code may
+// have empty or repeated names; those get "material_<index>" so every key is unique.
+std::vector<std::string> materialKeys(const std::vector<Material>& materials) {
+    std::set<std::string> used;
+    for (const Material& m : materials)
+        used.insert(m.name);
+    std::vector<std::string> keys;
+    std::set<std::string> taken;
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        std::string key = materials[i].name;
+        if (key.empty() || taken.count(key)) {
+            int suffix = int(i);
+            do {
+                key = "material_" + std::to_string(suffix++);
+            } while (used.count(key) || taken.count(key));
+        }
+        taken.insert(key);
+        keys.push_back(key);
+    }
+    return keys;
+}
+
+// Writes "material" when `index` names a scene material (out-of-range indices are dropped).
+void writeMaterialRef(int index, const std::vector<std::string>& keys, Json& object) {
+    if (index >= 0 && std::size_t(index) < keys.size()) object["material"] = keys[index];
+}
+
+Json cameraToJson(const Camera& camera) {
+    Json out = Json::object();
+    out["position"] = vec3ToJson(camera.position);
+    out["target"] = vec3ToJson(camera.target);
+    out["up"] = vec3ToJson(camera.up);
+    out["fov"] = floatToJson(camera.fovYDegrees);
+    out["near"] = floatToJson(camera.nearPlane);
+    out["far"] = floatToJson(camera.farPlane);
+    return out;
+}
+
+Json renderToJson(const RenderSettings& render) {
+    Json out = Json::object();
+    out["max_steps"] = render.maxSteps;
+    out["max_distance"] = floatToJson(render.maxDistance);
+    out["surface_epsilon"] = floatToJson(render.surfaceEpsilon);
+    out["background"] = vec3ToJson(render.background);
+    out["ambient"] = vec3ToJson(render.ambient);
+    out["exposure"] = floatToJson(render.exposure);
+    return out;
+}
+
+Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& materials) {
+    Json out = Json::object();
+    if (!node.name.empty()) out["name"] = node.name;
+    if (node.isGroup) {
+        out["op"] = kOpNames[std::size_t(node.op)];
+        if (isSmooth(node.op)) out["smoothness"] = floatToJson(node.smoothness);
+    } else {
+        const PrimitiveSpec& spec = primitiveSpec(node.primitive);
+        out["shape"] = spec.name;
+        for (std::size_t i = 0; i < spec.params.size(); ++i) {
+            const float* value = node.params.data() + paramOffset(spec, int(i));
+            out[std::string(spec.params[i].name)] =
+                spec.params[i].components == 1 ? floatToJson(*value)
+                                               : vec3ToJson({value[0], value[1], value[2]});
+        }
+    }
+    writeTransform(node.transform, out);
+    writeMaterialRef(node.material, materials, out);
+    if (node.isGroup) {
+        Json children = Json::array();
+        for (const SdfNode& child : node.children)
+            children.push_back(sdfNodeToJson(child, materials));
+        out["children"] = std::move(children);
+    }
+    return out;
+}
+
+Json sceneToJsonValue(const Scene& scene) {
+    const std::vector<std::string> materialNames = materialKeys(scene.materials);
+    Json root = Json::object();
+    root["version"] = kSceneFormatVersion;
+    root["camera"] = cameraToJson(scene.camera);
+    root["render"] = renderToJson(scene.render);
+
+    Json materials = Json::object();
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        materials[materialNames[i]] = {{"base_color", vec3ToJson(m.baseColor)},
+                                       {"metallic", floatToJson(m.metallic)},
+                                       {"roughness", floatToJson(m.roughness)},
+                                       {"emissive", vec3ToJson(m.emissive)}};
+    }
+    root["materials"] = std::move(materials);
+
+    Json lights = Json::array();
+    for (const Light& light : scene.lights) {
+        Json out = Json::object();
+        out["type"] = "directional";
+        if (!light.name.empty()) out["name"] = light.name;
+        out["direction"] = vec3ToJson(light.direction);
+        out["color"] = vec3ToJson(light.color);
+        out["intensity"] = floatToJson(light.intensity);
+        lights.push_back(std::move(out));
+    }
+    root["lights"] = std::move(lights);
+
+    Json meshes = Json::array();
+    for (const MeshInstance& mesh : scene.meshes) {
+        Json out = Json::object();
+        out["name"] = mesh.name;
+        out["file"] = mesh.file.empty() ? mesh.path.generic_string() : mesh.file;
+        writeTransform(mesh.transform, out);
+        writeMaterialRef(mesh.materialOverride, materialNames, out);
+        meshes.push_back(std::move(out));
+    }
+    root["meshes"] = std::move(meshes);
+
+    if (scene.sdf) root["sdf"] = sdfNodeToJson(*scene.sdf, materialNames);
+    return root;
+}
+
+std::string scalarText(const Json& value) {
+    return value.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+// Like nlohmann's dump(2), but arrays of numbers stay on one line: "position": [0, 1.5, 5].
+void writePretty(const Json& value, int indent, std::string& out) {
+    const std::string inner(std::size_t(indent + 2), ' ');
+    if (value.is_object() && !value.empty()) {
+        out += "{\n";
+        bool first = true;
+        for (const auto& [key, member] : value.items()) {
+            if (!first) out += ",\n";
+            first = false;
+            out += inner + scalarText(Json(key)) + ": ";
+            writePretty(member, indent + 2, out);
+        }
+        out += "\n" + std::string(std::size_t(indent), ' ') + "}";
+    } else if (value.is_array() && !value.empty()) {
+        bool allNumbers = true;
+        for (const Json& element : value)
+            allNumbers = allNumbers && element.is_number();
+        if (allNumbers) {
+            out += "[";
+            for (std::size_t i = 0; i < value.size(); ++i)
+                out += (i ? ", " : "") + scalarText(value[i]);
+            out += "]";
+            return;
+        }
+        out += "[\n";
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            if (i) out += ",\n";
+            out += inner;
+            writePretty(value[i], indent + 2, out);
+        }
+        out += "\n" + std::string(std::size_t(indent), ' ') + "]";
+    } else {
+        out += scalarText(value);
+    }
+}
+
+} // namespace
+
+std::string sceneToJson(const Scene& scene) {
+    std::string out;
+    writePretty(sceneToJsonValue(scene), 0, out);
+    out += "\n";
+    return out;
+}
+
+} // namespace rmsc

@@ -1,0 +1,59 @@
+#version 450 core
+// March pass: sphere-traces the SDF scene along each pixel's ray, up to the depth the raster
+// pass left, so it never marches behind a mesh. A hit is shaded and writes its own depth; a
+// miss passes the raster pass's colour, normal, depth and id through unchanged.
+#include "common/lighting.glsl"
+#include "common/sdf_scene.glsl"
+
+in vec3 vRayDirection;
+in vec2 vUv;
+
+layout(binding = 0) uniform sampler2D uRasterColor;
+layout(binding = 1) uniform sampler2D uRasterNormal;
+layout(binding = 2) uniform sampler2D uRasterViewDepth;
+layout(binding = 3) uniform usampler2D uRasterObjectId;
+layout(binding = 4) uniform sampler2D uRasterDepth;
+
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outNormal;
+layout(location = 2) out float outViewDepth;
+layout(location = 3) out uint outObjectId;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float rasterViewDepth = texelFetch(uRasterViewDepth, pixel, 0).r;
+
+    // vRayDirection has forward component 1: view depth = t * forwardness of the unit ray.
+    float forwardness = 1.0 / length(vRayDirection);
+    vec3 rd = vRayDirection * forwardness;
+    vec3 ro = frame.cameraPosition.xyz;
+    float tMin = frame.cameraPosition.w / forwardness;
+    float tMax = min(frame.march.y, rasterViewDepth / forwardness);
+
+    float t;
+    int steps;
+    if (tMin < tMax &&
+        sdfMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, t, steps)) {
+        vec3 p = ro + rd * t;
+        SdfSurface surface = sdfSurface(p);
+        vec3 normal = sdfNormal(p, max(frame.march.z * max(t, 1.0), 1e-5));
+        SurfacePoint s;
+        s.position = p;
+        s.normal = normal;
+        s.baseColor = surface.baseColor;
+        s.metallic = surface.metallic;
+        s.roughness = surface.roughness;
+        s.emissive = surface.emissive;
+        outColor = vec4(shadeSurface(s), 1.0);
+        outNormal = vec4(normal, 0.0);
+        outViewDepth = t * forwardness;
+        outObjectId = surface.objectId;
+        gl_FragDepth = windowDepth(p);
+        return;
+    }
+    outColor = texelFetch(uRasterColor, pixel, 0);
+    outNormal = texelFetch(uRasterNormal, pixel, 0);
+    outViewDepth = rasterViewDepth;
+    outObjectId = texelFetch(uRasterObjectId, pixel, 0).r;
+    gl_FragDepth = texelFetch(uRasterDepth, pixel, 0).r;
+}

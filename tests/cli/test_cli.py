@@ -1,0 +1,148 @@
+#!/usr/bin/env python3
+"""End-to-end tests of the rmsc command: help, rendering every AOV, opening glTF files directly,
+and bad input. Each bad input must give a clear message naming the file and the place in it,
+and a non-zero exit, never a crash.
+
+usage: test_cli.py RMSC_BINARY REPOSITORY_ROOT
+"""
+import json
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+
+RMSC, ROOT = sys.argv[1], sys.argv[2]
+SAMPLES = os.path.join(ROOT, "samples")
+failures = []
+passed = 0
+
+
+def run(args, env=None):
+    full_env = dict(os.environ, **(env or {}))
+    return subprocess.run([RMSC] + args, capture_output=True, text=True, timeout=300, env=full_env)
+
+
+def check(name, condition, detail=""):
+    global passed
+    if condition:
+        passed += 1
+    else:
+        failures.append(f"{name}: {detail}")
+        print(f"FAIL {name}: {detail}")
+
+
+def expect(name, args, code, stderr_has=(), stdout_has=(), env=None):
+    r = run(args, env)
+    check(name, r.returncode == code,
+          f"exit {r.returncode}, expected {code}; stderr: {r.stderr.strip()[:600]}")
+    check(name + " (no crash)", r.returncode >= 0, f"killed by signal {-r.returncode}")
+    for text in stderr_has:
+        check(name, text in r.stderr, f"stderr lacks {text!r}: {r.stderr.strip()[:600]}")
+    for text in stdout_has:
+        check(name, text in r.stdout, f"stdout lacks {text!r}: {r.stdout.strip()[:600]}")
+    return r
+
+
+def png_header(path):
+    with open(path, "rb") as f:
+        data = f.read(33)
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    width, height, depth, colour = struct.unpack(">IIBB", data[16:26])
+    return width, height, depth, colour
+
+
+def write(directory, name, text):
+    path = os.path.join(directory, name)
+    with open(path, "w" if isinstance(text, str) else "wb") as f:
+        f.write(text)
+    return path
+
+
+def scene(**sections):
+    return json.dumps(dict({"version": 1}, **sections))
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    # Help on every command.
+    expect("help", ["--help"], 0, stdout_has=["render", "validate", "bench", "primitives"])
+    for command in ["render", "validate", "bench", "primitives"]:
+        expect(f"{command} --help", [command, "--help"], 0, stdout_has=["usage: rmsc " + command])
+    expect("no command", [], 2, stderr_has=["usage"])
+    expect("unknown command", ["paint"], 2, stderr_has=["unknown command 'paint'"])
+
+    # The built-in demo, every AOV.
+    out = os.path.join(tmp, "demo.png")
+    expect("render demo", ["render", "-o", out, "--size", "96x54"], 0)
+    check("demo png size", png_header(out)[:3] == (96, 54, 8), png_header(out))
+    depth = os.path.join(tmp, "depth.png")
+    expect("depth aov", ["render", "-o", depth, "--size", "64x36", "--aov", "depth"], 0)
+    check("depth is 16-bit grey", png_header(depth) == (64, 36, 16, 0), png_header(depth))
+    pfm = os.path.join(tmp, "depth.pfm")
+    expect("depth pfm", ["render", "-o", pfm, "--size", "64x36", "--aov", "depth"], 0)
+    with open(pfm, "rb") as f:
+        check("pfm header", f.read(3) == b"Pf\n")
+    for aov in ["normal", "id"]:
+        path = os.path.join(tmp, aov + ".png")
+        expect(f"{aov} aov", ["render", "-o", path, "--size", "64x36", "--aov", aov], 0)
+        check(f"{aov} is 8-bit RGB", png_header(path)[2:] == (8, 2), png_header(path))
+    for backend in ["egl", "osmesa"]:
+        path = os.path.join(tmp, backend + ".png")
+        expect(f"backend {backend}", ["render", "-o", path, "--size", "32x18", "--backend", backend], 0)
+
+    # glTF files open as scenes.
+    for model in ["sphere.gltf", "cube.glb", "cube_external.gltf"]:
+        path = os.path.join(tmp, model + ".png")
+        expect(f"open {model}", ["render", os.path.join(SAMPLES, "assets", model), "-o", path,
+                                 "--size", "48x48"], 0)
+    expect("validate samples", ["validate"] + [os.path.join(SAMPLES, "scenes", s) for s in
+                                               sorted(os.listdir(os.path.join(SAMPLES, "scenes")))], 0)
+    expect("primitives", ["primitives"], 0, stdout_has=["sphere", "round_box", "half_extents"])
+
+    # Bad usage: exit 2.
+    expect("bad size", ["render", "-o", out, "--size", "0x10"], 2, stderr_has=["--size"])
+    expect("bad backend", ["render", "-o", out, "--backend", "vulkan"], 2, stderr_has=["--backend"])
+    expect("bad aov", ["render", "-o", out, "--aov", "albedo"], 2, stderr_has=["--aov"])
+    expect("no output", ["render"], 2, stderr_has=["-o"])
+    expect("bad extension", ["render", "-o", os.path.join(tmp, "x.jpg")], 2, stderr_has=[".png"])
+    expect("unknown option", ["render", "--frobnicate"], 2, stderr_has=["--frobnicate"])
+
+    # Bad input: exit 1, message names the file and the JSON pointer.
+    missing = os.path.join(tmp, "missing.json")
+    expect("missing scene", ["render", missing, "-o", out], 1, stderr_has=[missing, "not found"])
+    expect("directory as scene", ["validate", tmp], 1, stderr_has=[tmp])
+    bad = write(tmp, "malformed.json", '{"version": 1,\n  "camera": {"fov": 45,,}\n}')
+    expect("malformed json", ["render", bad, "-o", out], 1, stderr_has=[bad, "line 2"])
+    bad = write(tmp, "shape.json", scene(sdf={"shape": "blob"}))
+    expect("unknown shape", ["validate", bad], 1, stderr_has=[bad, "/sdf", "blob"])
+    bad = write(tmp, "op.json", scene(sdf={"op": "melt", "children": [{"shape": "sphere"}]}))
+    expect("unknown operation", ["validate", bad], 1, stderr_has=["/sdf/op", "melt"])
+    bad = write(tmp, "type.json", scene(camera={"fov": "wide"}))
+    expect("wrong type", ["validate", bad], 1, stderr_has=["/camera/fov"])
+    bad = write(tmp, "negative.json", scene(sdf={"children": [
+        {"shape": "sphere"}, {"shape": "box"}, {"shape": "torus"}, {"shape": "sphere", "radius": -1}]}))
+    expect("negative size", ["render", bad, "-o", out], 1, stderr_has=["/sdf/children/3/radius"])
+    bad = write(tmp, "nan.json", '{"version": 1, "sdf": {"shape": "sphere", "radius": 1e999}}')
+    expect("non-finite number", ["validate", bad], 1, stderr_has=["/sdf/radius"])
+    bad = write(tmp, "several.json", scene(camera={"fov": -3}, sdf={"shape": "box", "half_extents": [1, -1, 1]}))
+    r = expect("every problem reported", ["validate", bad], 1, stderr_has=["/camera/fov", "/sdf/half_extents"])
+    missing_mesh = write(tmp, "missing_mesh.json", scene(meshes=[{"file": "nowhere.gltf"}]))
+    expect("missing glTF", ["render", missing_mesh, "-o", out], 1, stderr_has=["/meshes/0", "nowhere.gltf"])
+    write(tmp, "broken.gltf", '{"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 7}}]}]}')
+    broken = write(tmp, "broken_mesh.json", scene(meshes=[{"file": "broken.gltf"}]))
+    expect("broken glTF", ["validate", broken], 1, stderr_has=["/meshes/0", "broken.gltf"])
+    with open(os.path.join(SAMPLES, "assets", "cube.glb"), "rb") as f:
+        glb = f.read()
+    truncated = write(tmp, "truncated.glb", glb[: len(glb) // 2])
+    expect("truncated glb", ["render", truncated, "-o", out], 1, stderr_has=["truncated.glb"])
+    check("no output after failures", not os.path.exists(out) or png_header(out)[:2] == (96, 54))
+
+    # No GL 4.5 context: a clear message and exit 3.
+    expect("no GL context", ["render", "-o", os.path.join(tmp, "nogl.png"), "--size", "8x8"], 3,
+           stderr_has=["no OpenGL", "EGL", "OSMesa"], env={"MESA_GL_VERSION_OVERRIDE": "3.3"})
+    unwritable = os.path.join(tmp, "no-such-folder", "out.png")
+    expect("unwritable output", ["render", "-o", unwritable, "--size", "8x8"], 3,
+           stderr_has=["cannot write"])
+
+print(f"{passed} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,127 @@
+// GPU test support: shared context, rendering, reference-image comparison.
+#include "gpu_test_support.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace rmsc::test {
+namespace {
+
+struct SharedGl {
+    std::unique_ptr<HeadlessContext> context;
+    std::optional<Renderer> renderer;
+};
+
+SharedGl& sharedGl() {
+    static SharedGl gl = [] {
+        SharedGl g;
+        GlBackend backend = GlBackend::Auto;
+        if (const char* name = std::getenv("RMSC_TEST_BACKEND")) parseGlBackend(name, backend);
+        std::string error;
+        g.context = createHeadlessContext(backend, true, error);
+        if (!g.context) {
+            ADD_FAILURE() << "no GL context for the GPU tests: " << error;
+            std::abort();
+        }
+        g.renderer = Renderer::create(ShaderFiles::embedded(), error);
+        if (!g.renderer) {
+            ADD_FAILURE() << error;
+            std::abort();
+        }
+        return g;
+    }();
+    return gl;
+}
+
+} // namespace
+
+Renderer& sharedRenderer() { return *sharedGl().renderer; }
+
+void expectNoGlErrors() {
+    const std::string errors = takeGlDebugErrors();
+    EXPECT_TRUE(errors.empty()) << errors;
+}
+
+FrameTargets renderPrepared(const PreparedScene& prepared, int width, int height,
+                            const Camera* camera) {
+    Renderer& renderer = sharedRenderer();
+    const GpuScene gpu = uploadScene(prepared);
+    FrameTargets targets = createFrameTargets(width, height);
+    renderer.render(gpu, camera ? *camera : prepared.scene.camera, prepared.scene.render, targets);
+    expectNoGlErrors();
+    return targets;
+}
+
+PreparedScene openRepositoryScene(const std::string& relativePath) {
+    Diagnostics diagnostics;
+    std::optional<PreparedScene> prepared =
+        openScene(std::filesystem::path(RMSC_TEST_SOURCE_DIR) / relativePath, diagnostics);
+    EXPECT_TRUE(prepared.has_value()) << diagnostics.format();
+    if (!prepared) throw std::runtime_error("cannot open " + relativePath);
+    return std::move(*prepared);
+}
+
+std::filesystem::path testOutputDirectory() {
+    const std::filesystem::path dir = std::filesystem::path(RMSC_TEST_BINARY_DIR) / "test-output";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+::testing::AssertionResult imageMatchesReference(const Pixels<std::uint8_t>& actual,
+                                                 const std::string& name,
+                                                 ImageTolerance tolerance) {
+    const std::filesystem::path reference =
+        std::filesystem::path(RMSC_TEST_SOURCE_DIR) / "tests" / "reference" / (name + ".png");
+    std::string error;
+    const char* update = std::getenv("RMSC_UPDATE_REFERENCES");
+    if (update && std::string(update) == "1") {
+        if (!writePng8(reference, actual, error))
+            return ::testing::AssertionFailure() << "cannot write " << reference << ": " << error;
+        return ::testing::AssertionSuccess() << "reference updated";
+    }
+    const std::filesystem::path actualPath = testOutputDirectory() / (name + ".actual.png");
+    std::optional<Pixels<std::uint8_t>> expected = readPng8(reference, actual.channels, error);
+    if (!expected) {
+        writePng8(actualPath, actual, error);
+        return ::testing::AssertionFailure()
+               << "no reference image " << reference << " (actual written to " << actualPath
+               << "; run with RMSC_UPDATE_REFERENCES=1 to accept it)";
+    }
+    if (expected->width != actual.width || expected->height != actual.height)
+        return ::testing::AssertionFailure()
+               << "size " << actual.width << "x" << actual.height << " differs from reference "
+               << expected->width << "x" << expected->height;
+
+    Pixels<std::uint8_t> diff{actual.width, actual.height, 3, {}};
+    diff.data.assign(std::size_t(actual.width) * actual.height * 3, 0);
+    std::size_t differing = 0;
+    int worst = 0;
+    for (int y = 0; y < actual.height; ++y) {
+        for (int x = 0; x < actual.width; ++x) {
+            int delta = 0;
+            for (int c = 0; c < 3; ++c)
+                delta = std::max(delta, std::abs(int(actual.at(x, y)[c]) - int(expected->at(x, y)[c])));
+            worst = std::max(worst, delta);
+            std::uint8_t* d = diff.at(x, y);
+            if (delta > tolerance.channelDelta) {
+                ++differing;
+                d[0] = 255; // differing pixels in red
+            } else {
+                d[0] = d[1] = d[2] = std::uint8_t(actual.at(x, y)[1] / 4); // context, dimmed
+            }
+        }
+    }
+    const double share = double(differing) / double(actual.width * actual.height);
+    if (share <= tolerance.maxDifferingShare)
+        return ::testing::AssertionSuccess() << share * 100 << "% pixels differ";
+    const std::filesystem::path diffPath = testOutputDirectory() / (name + ".diff.png");
+    writePng8(actualPath, actual, error);
+    writePng8(diffPath, diff, error);
+    return ::testing::AssertionFailure()
+           << name << ": " << differing << " pixels (" << share * 100
+           << "%) differ by more than " << tolerance.channelDelta << " (worst " << worst
+           << "); allowed " << tolerance.maxDifferingShare * 100 << "%. Actual: " << actualPath
+           << ", diff: " << diffPath;
+}
+
+} // namespace rmsc::test

@@ -1,0 +1,49 @@
+// Support for tests that need a GL context: one headless context per test process (backend
+// from RMSC_TEST_BACKEND, default auto), rendering a prepared scene to frame targets, and
+// comparing images with a reference PNG under a stated tolerance, writing actual and diff
+// images when they differ.
+#pragma once
+
+#include "core/image_io.hpp"
+#include "gl/context.hpp"
+#include "render/readback.hpp"
+#include "render/renderer.hpp"
+#include "scene/prepared_scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace rmsc::test {
+
+// The process-wide context and renderer; the first call creates them (GL debug output on).
+Renderer& sharedRenderer();
+
+// Fails the current test if KHR_debug reported a GL error since the last call.
+void expectNoGlErrors();
+
+// Renders `prepared` at width x height with its own camera, unless `camera` is given.
+FrameTargets renderPrepared(const PreparedScene& prepared, int width, int height,
+                            const Camera* camera = nullptr);
+
+// Opens a scene file from the repository (path relative to the repository root).
+PreparedScene openRepositoryScene(const std::string& relativePath);
+
+// Where tests write their output images (actual, diff): <build>/test-output/.
+std::filesystem::path testOutputDirectory();
+
+struct ImageTolerance {
+    int channelDelta = 8;            // a pixel differs if any channel differs by more than this
+    double maxDifferingShare = 0.005; // the images match if at most this share of pixels differ
+};
+
+// Compares `actual` (RGBA8) with tests/reference/<name>.png. On a mismatch writes
+// <output>/<name>.actual.png and <name>.diff.png and returns a failure naming them. With
+// RMSC_UPDATE_REFERENCES=1 the reference is (re)written instead.
+::testing::AssertionResult imageMatchesReference(const Pixels<std::uint8_t>& actual,
+                                                 const std::string& name,
+                                                 ImageTolerance tolerance = {});
+
+} // namespace rmsc::test
