@@ -10,7 +10,6 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <span>

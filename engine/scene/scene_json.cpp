@@ -7,8 +7,6 @@
 #include "scene/transform_json.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <exception>
 
 namespace rmsc {

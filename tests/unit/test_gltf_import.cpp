@@ -43,7 +43,8 @@ template <typename T> void append(std::string& bytes, const std::vector<T>& valu
     const std::size_t start = bytes.size();
     bytes.resize(start + values.size() * sizeof(T));
     std::memcpy(bytes.data() + start, values.data(), values.size() * sizeof(T));
-    while (bytes.size() % 4) bytes += '\0';
+    while (bytes.size() % 4)
+        bytes += '\0';
 }
 
 // A one-mesh glTF with the given float positions (xyz triples), optional normals and u32
@@ -58,7 +59,8 @@ std::string makeGltf(const std::vector<float>& positions, const std::vector<floa
                              std::size_t count) {
         const std::size_t offset = bytes.size();
         append(bytes, values);
-        views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size() - offset}});
+        views.push_back(
+            {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size() - offset}});
         accessors.push_back({{"bufferView", views.size() - 1},
                              {"componentType", componentType},
                              {"type", type},
@@ -105,7 +107,8 @@ glm::vec3 triangleNormal(const MeshPrimitive& p, std::size_t t) {
 
 void expectUnitNormals(const MeshAsset& asset) {
     for (const MeshPrimitive& p : asset.primitives)
-        for (const MeshVertex& v : p.vertices) ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
+        for (const MeshVertex& v : p.vertices)
+            ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
 }
 
 // Every triangle's winding agrees with its vertices' normals.
@@ -188,11 +191,11 @@ TEST(GltfImport, CheckerPlaneTextureIsDecodedToRgba) {
     EXPECT_EQ(image.height, 64);
     ASSERT_EQ(image.rgba.size(), 64u * 64u * 4u);
     const auto pixel = [&](int x, int y) { return &image.rgba[std::size_t(y * 64 + x) * 4]; };
-    EXPECT_EQ(pixel(0, 0)[0], 230);   // light square
-    EXPECT_EQ(pixel(8, 0)[0], 40);    // dark square
-    EXPECT_EQ(pixel(8, 8)[1], 230);   // light again
-    EXPECT_EQ(pixel(63, 0)[2], 40);   // 7th square along x is dark
-    EXPECT_EQ(pixel(5, 9)[3], 255);   // opaque alpha added to RGB
+    EXPECT_EQ(pixel(0, 0)[0], 230); // light square
+    EXPECT_EQ(pixel(8, 0)[0], 40);  // dark square
+    EXPECT_EQ(pixel(8, 8)[1], 230); // light again
+    EXPECT_EQ(pixel(63, 0)[2], 40); // 7th square along x is dark
+    EXPECT_EQ(pixel(5, 9)[3], 255); // opaque alpha added to RGB
     ASSERT_EQ(asset.materials.size(), 1u);
     EXPECT_EQ(asset.materials[0].baseColorTexture, 0);
 }
@@ -219,8 +222,8 @@ TEST(GltfImport, GlbAndExternalBufferMatchTheGltfCube) {
 
 TEST(GltfImport, LoadsThroughTheEmbeddedFileSource) {
     Diagnostics diagnostics;
-    const auto asset = loadGltf("samples/assets/cube_external.gltf", embeddedFileSource(),
-                                diagnostics);
+    const auto asset =
+        loadGltf("samples/assets/cube_external.gltf", embeddedFileSource(), diagnostics);
     ASSERT_TRUE(asset) << diagnostics.format();
     EXPECT_EQ(asset->primitives.at(0).vertices.size(), 24u);
 }
@@ -272,9 +275,10 @@ TEST(GltfImport, NonUniformScaleUsesInverseTransposeForNormals) {
     const nlohmann::json nodes = {{{"scale", {1, 2, 1}}, {"mesh", 0}}};
     const float s = 1.0f / std::sqrt(2.0f);
     Diagnostics diagnostics;
-    const auto asset = loadText(makeGltf({0, 0, 0, 1, 0, 0, 0, 1, 1}, {0, s, -s, 0, s, -s, 0, s, -s},
-                                         {}, 4, nodes, nlohmann::json{0}),
-                                diagnostics);
+    const auto asset =
+        loadText(makeGltf({0, 0, 0, 1, 0, 0, 0, 1, 1}, {0, s, -s, 0, s, -s, 0, s, -s}, {}, 4, nodes,
+                          nlohmann::json{0}),
+                 diagnostics);
     ASSERT_TRUE(asset) << diagnostics.format();
     expectVec3Near(asset->primitives.at(0).vertices[0].normal,
                    glm::normalize(glm::vec3(0, 0.5f, -1)));
@@ -285,9 +289,9 @@ TEST(GltfImport, MissingNormalsPointOutwardOnATetrahedron) {
     const std::vector<float> positions = {1, 1, 1, -1, -1, 1, -1, 1, -1, 1, -1, -1};
     const std::vector<std::uint32_t> indices = {0, 1, 3, 0, 2, 1, 0, 3, 2, 1, 2, 3};
     Diagnostics diagnostics;
-    const auto asset = loadText(makeGltf(positions, {}, indices, 4,
-                                         nlohmann::json{{{"mesh", 0}}}, nlohmann::json{0}),
-                                diagnostics);
+    const auto asset = loadText(
+        makeGltf(positions, {}, indices, 4, nlohmann::json{{{"mesh", 0}}}, nlohmann::json{0}),
+        diagnostics);
     ASSERT_TRUE(asset) << diagnostics.format();
     const MeshPrimitive& p = asset->primitives.at(0);
     ASSERT_EQ(p.vertices.size(), 4u);
@@ -319,9 +323,8 @@ TEST(GltfImport, MissingNormalsAreFlatWithoutSharedVertices) {
 
 TEST(GltfImport, NonIndexedPrimitiveGetsSequentialIndices) {
     Diagnostics diagnostics;
-    const auto asset = loadText(makeGltf({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1},
-                                         {}, {}, 4, nlohmann::json{{{"mesh", 0}}},
-                                         nlohmann::json{0}),
+    const auto asset = loadText(makeGltf({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1}, {},
+                                         {}, 4, nlohmann::json{{{"mesh", 0}}}, nlohmann::json{0}),
                                 diagnostics);
     ASSERT_TRUE(asset) << diagnostics.format();
     EXPECT_EQ(asset->primitives.at(0).indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
@@ -342,9 +345,9 @@ TEST(GltfImport, StripAndFanBecomeTriangleLists) {
         EXPECT_GT(triangleNormal(asset->primitives[0], t).z, 0.0f) << "strip keeps winding";
 
     const std::vector<float> fan = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 0, 0};
-    asset = loadText(makeGltf(fan, {}, {0, 1, 2, 3, 4}, 6, nlohmann::json{{{"mesh", 0}}},
-                              nlohmann::json{0}),
-                     diagnostics);
+    asset = loadText(
+        makeGltf(fan, {}, {0, 1, 2, 3, 4}, 6, nlohmann::json{{{"mesh", 0}}}, nlohmann::json{0}),
+        diagnostics);
     ASSERT_TRUE(asset) << diagnostics.format();
     EXPECT_EQ(asset->primitives.at(0).indices,
               (std::vector<std::uint32_t>{1, 2, 0, 2, 3, 0, 3, 4, 0}));
