@@ -191,9 +191,12 @@ GpuSdfInstruction shapeInstruction(const PlannedNode& planned) {
         glm::vec4(node.params[0], node.params[1], node.params[2], node.params[3]);
     instruction.params[1] =
         glm::vec4(node.params[4], node.params[5], node.params[6], node.params[7]);
+    instruction.params[2] =
+        glm::vec4(node.params[8], node.params[9], node.params[10], node.params[11]);
     for (int row = 0; row < 3; ++row)
         instruction.worldToLocal[row] = planned.worldToLocal[row];
-    instruction.misc = glm::vec4(planned.distanceScale, 0.0f, 0.0f, 0.0f);
+    instruction.misc =
+        glm::vec4(planned.distanceScale * primitiveSpec(node.primitive).stepScale, 0.0f, 0.0f, 0.0f);
     return instruction;
 }
 

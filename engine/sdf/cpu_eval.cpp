@@ -23,7 +23,9 @@ float shapeDistance(const GpuSdfInstruction& instruction, glm::vec3 p) {
     const PrimitiveParams params = {instruction.params[0].x, instruction.params[0].y,
                                     instruction.params[0].z, instruction.params[0].w,
                                     instruction.params[1].x, instruction.params[1].y,
-                                    instruction.params[1].z, instruction.params[1].w};
+                                    instruction.params[1].z, instruction.params[1].w,
+                                    instruction.params[2].x, instruction.params[2].y,
+                                    instruction.params[2].z, instruction.params[2].w};
     const PrimitiveSpec& spec = primitiveSpec(PrimitiveId(instruction.kind));
     return spec.distance(q, params.data()) * instruction.misc.x;
 }

@@ -131,13 +131,13 @@ PrimitiveParams defaultParams(const PrimitiveSpec& spec) {
 }
 
 std::string generateGlslDispatch() {
-    // Float k of the packed parameters lives in a[k] for k < 4, b[k - 4] otherwise.
+    // Float k of the packed parameters lives in a[k], b[k - 4] or c[k - 8].
     auto component = [](int k) {
-        return std::string(k < 4 ? "a" : "b") + "[" + std::to_string(k % 4) + "]";
+        return std::string(1, char('a' + k / 4)) + "[" + std::to_string(k % 4) + "]";
     };
     std::ostringstream out;
     out << "// Generated from the primitive catalogue (engine/sdf/primitives.cpp).\n"
-        << "float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b) {\n    switch (id) {\n";
+        << "float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b, vec4 c) {\n    switch (id) {\n";
     for (const PrimitiveSpec& spec : kCatalogue) {
         out << "    case " << std::uint32_t(spec.id) << "u: return " << spec.glslFunction << "(p";
         for (std::size_t i = 0; i < spec.params.size(); ++i) {

@@ -26,7 +26,7 @@ enum class PrimitiveId : std::uint32_t {
 };
 
 // A primitive's parameters packed in catalogue order; a vec3 parameter takes three floats.
-constexpr int kMaxPrimitiveFloats = 8;
+constexpr int kMaxPrimitiveFloats = 12;
 using PrimitiveParams = std::array<float, kMaxPrimitiveFloats>;
 
 struct ParamSpec {
@@ -48,6 +48,9 @@ struct PrimitiveSpec {
     float (*distance)(glm::vec3 p, const float* params);
     std::string_view description;
     std::string_view source; // where the formula comes from
+    // Distances are multiplied by this while marching: 1 for exact distances and well-behaved
+    // bounds, below 1 for bounds that can overestimate near the surface (fractal estimators).
+    float stepScale = 1.0f;
 };
 
 std::span<const PrimitiveSpec> primitiveCatalogue();
@@ -59,9 +62,9 @@ int paramOffset(const PrimitiveSpec& spec, int paramIndex);
 // Parameters filled with the catalogue defaults.
 PrimitiveParams defaultParams(const PrimitiveSpec& spec);
 
-// GLSL source of `float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b)`, a switch that calls each
-// row's GLSL function with its parameters unpacked from the two vec4s (a = floats 0..3,
-// b = floats 4..7). Prepended to the shaders as the virtual file "generated/primitives.glsl".
+// GLSL source of `float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b, vec4 c)`, a switch that
+// calls each row's GLSL function with its parameters unpacked from the three vec4s (a = floats
+// 0..3, b = floats 4..7, c = floats 8..11). Prepended to the shaders as the virtual file "generated/primitives.glsl".
 std::string generateGlslDispatch();
 
 } // namespace rmsc

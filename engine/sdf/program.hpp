@@ -22,23 +22,23 @@ enum class SdfOpcode : std::uint32_t {
     Combine = 1, // pop b, pop a, push op `kind` (an SdfOp) of a and b
 };
 
-// One instruction. std430: 112 bytes, 16-byte aligned; mirrored by struct SdfInstruction in GLSL.
+// One instruction. std430: 128 bytes, 16-byte aligned; mirrored by struct SdfInstruction in GLSL.
 struct GpuSdfInstruction {
     std::uint32_t opcode = 0;   // SdfOpcode
     std::uint32_t kind = 0;     // PrimitiveId for Shape, SdfOp for Combine
     std::uint32_t material = 0; // Shape: index into the material buffer
     std::uint32_t objectId = 0; // Shape: object id (kSdfIdBase + node pre-order index)
-    glm::vec4 params[2]{};      // Shape: PrimitiveParams; Combine: params[0].x = smoothness k
+    glm::vec4 params[3]{};      // Shape: PrimitiveParams; Combine: params[0].x = smoothness k
     glm::vec4 worldToLocal[3]{};// Shape: rows of the affine world-to-local matrix (scale removed
                                 // only as far as `distanceScale` accounts for it)
     glm::vec4 misc{};           // Shape: x = distance scale (smallest scale factor of the
-                                // node's world transform; exact for uniform scale, a bound
-                                // otherwise)
+                                // node's world transform, exact for uniform scale, a bound
+                                // otherwise, times the primitive's step scale)
 };
-static_assert(sizeof(GpuSdfInstruction) == 112);
+static_assert(sizeof(GpuSdfInstruction) == 128);
 static_assert(offsetof(GpuSdfInstruction, params) == 16);
-static_assert(offsetof(GpuSdfInstruction, worldToLocal) == 48);
-static_assert(offsetof(GpuSdfInstruction, misc) == 96);
+static_assert(offsetof(GpuSdfInstruction, worldToLocal) == 64);
+static_assert(offsetof(GpuSdfInstruction, misc) == 112);
 
 // Header at the start of the SDF SSBO, before the instruction array.
 struct GpuSdfHeader {

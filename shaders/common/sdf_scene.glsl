@@ -29,7 +29,7 @@ struct SdfInstruction {
     uint kind;           // primitive id for a shape, SDF_OP_* for a combine
     uint material;       // shape: index into materials[]
     uint objectId;       // shape: object id
-    vec4 params[2];      // shape: primitive parameters; combine: params[0].x = smoothness k
+    vec4 params[3];      // shape: primitive parameters; combine: params[0].x = smoothness k
     vec4 worldToLocal[3];// shape: rows of the affine world-to-local matrix
     vec4 misc;           // shape: x = distance scale
 };
@@ -47,7 +47,7 @@ float sdfShapeDistance(uint i, vec3 p) {
                   dot(sdfInstructions[i].worldToLocal[1], p4),
                   dot(sdfInstructions[i].worldToLocal[2], p4));
     return sdfPrimitive(sdfInstructions[i].kind, q, sdfInstructions[i].params[0],
-                        sdfInstructions[i].params[1]) *
+                        sdfInstructions[i].params[1], sdfInstructions[i].params[2]) *
            sdfInstructions[i].misc.x;
 }
 

@@ -203,7 +203,7 @@ TEST(SdfPrimitives, DefaultsAreWithinRangesAndParamsFit) {
 
 TEST(SdfPrimitives, GlslDispatchCallsEveryFunction) {
     const std::string glsl = generateGlslDispatch();
-    EXPECT_NE(glsl.find("float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b)"), std::string::npos);
+    EXPECT_NE(glsl.find("float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b, vec4 c)"), std::string::npos);
     for (const PrimitiveSpec& spec : primitiveCatalogue()) {
         const std::string call = "case " + std::to_string(std::uint32_t(spec.id)) + "u: return " +
                                  std::string(spec.glslFunction) + "(p";
