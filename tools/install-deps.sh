@@ -14,7 +14,11 @@ packages=(
   libosmesa6-dev                      # headless GL through OSMesa
   libgl1-mesa-dri                     # Mesa's llvmpipe software rasterizer
   libglfw3-dev                        # windows and input for the viewer
+  libimgui-dev                        # Dear ImGui (with GLFW and OpenGL 3 back ends) for the viewer's editor
+  xvfb                                # a virtual X display for the viewer's end-to-end test
   libgtest-dev                        # unit and GPU tests
+  clang libclang-rt-14-dev            # libFuzzer harnesses (tools/fuzz.sh): clang and its fuzzer runtime
+  python3-jsonschema                  # the CLI test checks the samples against docs/scene.schema.json
 )
 if [ "$(id -u)" -ne 0 ]; then sudo=sudo; else sudo=; fi
 export DEBIAN_FRONTEND=noninteractive

@@ -9,6 +9,7 @@ for scene in samples/scenes/*.json; do
   name=$(basename "$scene" .json)
   "$rmsc" render "$scene" -o "docs/images/$name.png" --size 640x360
 done
+"$rmsc" render -o docs/images/demo-small.png --size 320x180
 for aov in depth normal id; do
   "$rmsc" render -o "docs/images/demo-$aov.png" --size 320x180 --aov "$aov"
 done

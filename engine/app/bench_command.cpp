@@ -1,15 +1,12 @@
 // rmsc bench: times frames of a scene and reports medians (wall and per-pass GPU time), the
 // shader build time and peak memory. Numbers for tracking, never asserted by tests.
 #include "app/commands.hpp"
-#include "app/options.hpp"
-
-#include "gl/context.hpp"
-#include "render/renderer.hpp"
-#include "scene/prepared_scene.hpp"
+#include "app/headless_session.hpp"
 
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <vector>
@@ -22,15 +19,29 @@ const OptionSpec kOptions[] = {
     {"--frames", nullptr, "N", "timed frames (default 10)"},
     {"--warmup", nullptr, "N", "untimed frames first (default 2)"},
     {"--backend", nullptr, "NAME", "auto | egl | osmesa"},
+    {"--sdf-strategy", nullptr, "NAME",
+     "baked (default), buffer, interpreter, or all (each in turn, with ratios to baked)"},
     {"--json", nullptr, nullptr, "print one JSON object instead of text"},
 };
 
 const CommandSpec kSpec = {
-    "bench", "rmsc bench [SCENE] [--size WxH] [--frames N] [--warmup N] [--json]",
+    "bench",
+    "rmsc bench [SCENE] [--size WxH] [--frames N] [--warmup N] [--sdf-strategy NAME|all] "
+    "[--json]",
     "Renders SCENE (default: the built-in demo) repeatedly and reports, over the timed frames,\n"
     "the median, minimum and maximum of the wall time per frame (glFinish after each) and of\n"
-    "each pass's GPU time (timer queries), the shader build time and the peak resident memory.",
+    "each pass's GPU time (timer queries), the time to compile the scene's shaders and the\n"
+    "peak resident memory. With --sdf-strategy all, every strategy runs in turn in the same\n"
+    "process and the ratios of their median frame times to the baked one are reported.",
     kOptions, 1};
+
+// One strategy's timings.
+struct StrategyRun {
+    SdfStrategy strategy = SdfStrategy::Baked;
+    double compileMs = 0.0;
+    std::vector<double> wall;
+    std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
+};
 
 struct Stats {
     double median = 0, min = 0, max = 0;
@@ -61,87 +72,111 @@ int runBench(std::span<const std::string> args) {
         std::fputs(formatHelp(kSpec).c_str(), stdout);
         return kExitOk;
     }
-    int width = 640, height = 360, frames = 10, warmup = 2;
-    GlBackend backend = GlBackend::Auto;
-    if ((parsed->has("--size") && !parseSize(parsed->get("--size", ""), width, height)) ||
-        (parsed->has("--frames") && !parsePositiveInt(parsed->get("--frames", ""), 100000, frames)) ||
-        (parsed->has("--warmup") &&
-         !(parsed->get("--warmup", "") == "0" ||
-           parsePositiveInt(parsed->get("--warmup", ""), 100000, warmup))) ||
-        !parseGlBackend(parsed->get("--backend", "auto"), backend)) {
-        std::fprintf(stderr, "rmsc bench: bad option value (see rmsc bench --help)\n");
+    int frames = 10, warmup = 2;
+    const std::string warmupText = parsed->get("--warmup", "2");
+    if ((parsed->has("--frames") &&
+         !parsePositiveInt(parsed->get("--frames", ""), 100000, frames)) ||
+        !(warmupText == "0" || parsePositiveInt(warmupText, 100000, warmup))) {
+        std::fprintf(stderr, "rmsc bench: --frames and --warmup take whole numbers (warm-up may "
+                             "be 0)\n");
         return kExitUsage;
     }
-    if (parsed->get("--warmup", "") == "0") warmup = 0;
+    if (warmupText == "0") warmup = 0;
 
-    Diagnostics diagnostics;
+    const bool all = parsed->get("--sdf-strategy", "") == "all";
+    if (all) parsed->values.erase("--sdf-strategy");
+    FrameOptions frame;
+    if (!readFrameOptions("bench", *parsed, frame)) return kExitUsage;
+
+    HeadlessSession session;
     const std::string scenePath = parsed->positionals.empty() ? "" : parsed->positionals[0];
-    std::optional<PreparedScene> prepared = openScene(scenePath, diagnostics);
-    std::fputs(diagnostics.format().c_str(), stderr);
-    if (!prepared) return kExitBadInput;
+    if (const int code = openHeadlessSession("bench", scenePath, frame, session)) return code;
+    Renderer& renderer = *session.renderer;
+    FrameTargets targets = createFrameTargets(frame.width, frame.height);
+    const Scene& scene = session.prepared->scene;
 
-    std::unique_ptr<HeadlessContext> context = createHeadlessContext(backend, false, error);
-    if (!context) {
-        std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
-        return kExitSystem;
-    }
-    const auto buildStart = std::chrono::steady_clock::now();
-    std::optional<Renderer> renderer = Renderer::create(ShaderFiles::embedded(), error);
-    glFinish();
-    const double buildMs = millisecondsSince(buildStart);
-    if (!renderer) {
-        std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
-        return kExitSystem;
-    }
-    const GpuScene gpuScene = uploadScene(*prepared);
-    FrameTargets targets = createFrameTargets(width, height);
-    const Scene& scene = prepared->scene;
-
-    std::vector<double> wall;
-    std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
-    for (int i = 0; i < warmup + frames; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        renderer->render(gpuScene, scene.camera, scene.render, targets);
-        glFinish();
-        const double ms = millisecondsSince(start);
-        if (i < warmup) continue;
-        wall.push_back(ms);
-        const PassTimes times = renderer->lastPassTimes();
-        for (std::size_t p = 0; p < times.size(); ++p) passes[p].push_back(times[p]);
+    std::vector<StrategyRun> runs;
+    const std::vector<SdfStrategy> strategies =
+        all ? std::vector<SdfStrategy>{SdfStrategy::Baked, SdfStrategy::Buffer,
+                                       SdfStrategy::Interpreter}
+            : std::vector<SdfStrategy>{frame.strategy};
+    for (SdfStrategy strategy : strategies) {
+        StrategyRun run;
+        run.strategy = effectiveSdfStrategy(session.prepared->sdf, strategy);
+        if (std::any_of(runs.begin(), runs.end(),
+                        [&](const StrategyRun& r) { return r.strategy == run.strategy; }))
+            continue; // a scene too large for generated code runs the interpreter only once
+        const GpuScene gpuScene = uploadScene(*session.prepared, strategy);
+        const auto compileStart = std::chrono::steady_clock::now();
+        if (!renderer.prepare(gpuScene, error)) {
+            std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
+            return kExitSystem;
+        }
+        run.compileMs =
+            strategy == frame.strategy ? session.shaderBuildMs : millisecondsSince(compileStart);
+        for (int i = 0; i < warmup + frames; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            renderer.render(gpuScene, scene.camera, scene.render, targets);
+            glFinish();
+            const double ms = millisecondsSince(start);
+            if (i < warmup) continue;
+            run.wall.push_back(ms);
+            const PassTimes times = renderer.lastPassTimes();
+            for (std::size_t p = 0; p < times.size(); ++p)
+                run.passes[p].push_back(times[p]);
+        }
+        runs.push_back(std::move(run));
     }
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     const double peakMiB = double(usage.ru_maxrss) / 1024.0;
 
-    const char* passNames[] = {"raster", "march", "post"};
-    const Stats wallStats = stats(wall);
+    const char* passNames[] = {"raster", "march", "post", "shadow"};
     const std::string name = scenePath.empty() ? "(built-in demo)" : scenePath;
+    const HeadlessContext& context = *session.context;
+    const double bakedMedian = stats(runs.front().wall).median;
     if (parsed->has("--json")) {
         std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"frames\": %d, "
-                    "\"renderer\": \"%s\", \"shader_build_ms\": %.3f, \"peak_rss_mib\": %.1f, "
-                    "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
-                    "\"pass_gpu_ms\": {",
-                    name.c_str(), width, height, frames, context->renderer().c_str(), buildMs,
-                    peakMiB, wallStats.median, wallStats.min, wallStats.max);
-        for (std::size_t p = 0; p < passes.size(); ++p) {
-            const Stats s = stats(passes[p]);
-            std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}",
-                        p ? ", " : "", passNames[p], s.median, s.min, s.max);
+                    "\"renderer\": \"%s\", \"peak_rss_mib\": %.1f, \"strategies\": [",
+                    name.c_str(), frame.width, frame.height, frames, context.renderer().c_str(),
+                    peakMiB);
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            const StrategyRun& run = runs[r];
+            const Stats wallStats = stats(run.wall);
+            std::printf("%s{\"strategy\": \"%s\", \"shader_build_ms\": %.3f, "
+                        "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
+                        "\"ratio_to_first\": %.3f, \"pass_gpu_ms\": {",
+                        r ? ", " : "", std::string(sdfStrategyName(run.strategy)).c_str(),
+                        run.compileMs, wallStats.median, wallStats.min, wallStats.max,
+                        wallStats.median / bakedMedian);
+            for (std::size_t p = 0; p < run.passes.size(); ++p) {
+                const Stats s = stats(run.passes[p]);
+                std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}",
+                            p ? ", " : "", passNames[p], s.median, s.min, s.max);
+            }
+            std::printf("}}");
         }
-        std::printf("}}\n");
+        std::printf("]}\n");
         return kExitOk;
     }
     std::printf("scene     %s\nsize      %dx%d, %d frames after %d warm-up\nrenderer  %s (%s)\n",
-                name.c_str(), width, height, frames, warmup, context->renderer().c_str(),
-                std::string(context->backendName()).c_str());
-    std::printf("shaders   %.1f ms to build\nmemory    %.1f MiB peak resident\n", buildMs,
-                peakMiB);
-    std::printf("%-9s %9s %9s %9s\n", "ms", "median", "min", "max");
-    std::printf("%-9s %9.2f %9.2f %9.2f\n", "frame", wallStats.median, wallStats.min,
-                wallStats.max);
-    for (std::size_t p = 0; p < passes.size(); ++p) {
-        const Stats s = stats(passes[p]);
-        std::printf("%-9s %9.2f %9.2f %9.2f\n", passNames[p], s.median, s.min, s.max);
+                name.c_str(), frame.width, frame.height, frames, warmup, context.renderer().c_str(),
+                std::string(context.backendName()).c_str());
+    std::printf("memory    %.1f MiB peak resident\n", peakMiB);
+    for (const StrategyRun& run : runs) {
+        const Stats wallStats = stats(run.wall);
+        std::printf("\nstrategy  %s: shaders %.1f ms to build",
+                    std::string(sdfStrategyName(run.strategy)).c_str(), run.compileMs);
+        if (runs.size() > 1)
+            std::printf(", %.2fx the %s frame time", wallStats.median / bakedMedian,
+                        std::string(sdfStrategyName(runs.front().strategy)).c_str());
+        std::printf("\n%-9s %9s %9s %9s\n", "ms", "median", "min", "max");
+        std::printf("%-9s %9.2f %9.2f %9.2f\n", "frame", wallStats.median, wallStats.min,
+                    wallStats.max);
+        for (std::size_t p = 0; p < run.passes.size(); ++p) {
+            const Stats s = stats(run.passes[p]);
+            std::printf("%-9s %9.2f %9.2f %9.2f\n", passNames[p], s.median, s.min, s.max);
+        }
     }
     return kExitOk;
 }

@@ -13,5 +13,7 @@ int runRender(std::span<const std::string> args);
 int runValidate(std::span<const std::string> args);
 int runBench(std::span<const std::string> args);
 int runPrimitives(std::span<const std::string> args);
+int runView(std::span<const std::string> args);
+int runSchema(std::span<const std::string> args);
 
 } // namespace rmsc::app

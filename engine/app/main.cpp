@@ -17,6 +17,8 @@ const char* kUsage =
     "  validate SCENE...           load and check scenes, report every problem\n"
     "  bench [SCENE]               time frames of a scene (median, min, max per pass)\n"
     "  primitives                  list the SDF primitives and their parameters\n"
+    "  view [SCENE]                open the viewer and scene editor in a window\n"
+    "  schema                      print the JSON Schema of scene files\n"
     "\n"
     "'rmsc <command> --help' describes each command.\n";
 
@@ -38,6 +40,8 @@ int main(int argc, char** argv) {
     if (args[0] == "validate") return runValidate(rest);
     if (args[0] == "bench") return runBench(rest);
     if (args[0] == "primitives") return runPrimitives(rest);
+    if (args[0] == "view") return runView(rest);
+    if (args[0] == "schema") return runSchema(rest);
     std::fprintf(stderr, "rmsc: unknown command '%s'\n\n%s", args[0].c_str(), kUsage);
     return kExitUsage;
 }

@@ -1,12 +1,9 @@
 // rmsc render: one frame of a scene to an image file (display colour or an AOV).
 #include "app/commands.hpp"
-#include "app/options.hpp"
+#include "app/headless_session.hpp"
 
 #include "core/image_io.hpp"
-#include "gl/context.hpp"
 #include "render/readback.hpp"
-#include "render/renderer.hpp"
-#include "scene/prepared_scene.hpp"
 
 #include <cstdio>
 
@@ -17,6 +14,8 @@ const OptionSpec kOptions[] = {
     {"--output", "-o", "FILE", "image to write (.png; .pfm for float depth/normal)"},
     {"--size", nullptr, "WxH", "image size in pixels (default 640x360)"},
     {"--backend", nullptr, "NAME", "auto | egl | osmesa (default auto: EGL, then OSMesa)"},
+    {"--sdf-strategy", nullptr, "NAME",
+     "how the SDF scene reaches the shader: baked (default), buffer or interpreter"},
     {"--aov", nullptr, "NAME",
      "color | depth | normal | id (default color); depth is linear view depth"},
 };
@@ -43,18 +42,8 @@ int runRender(std::span<const std::string> args) {
         std::fputs(formatHelp(kSpec).c_str(), stdout);
         return kExitOk;
     }
-    int width = 640, height = 360;
-    if (parsed->has("--size") && !parseSize(parsed->get("--size", ""), width, height)) {
-        std::fprintf(stderr, "rmsc render: --size: expected WxH with sides 1..16384, got '%s'\n",
-                     parsed->get("--size", "").c_str());
-        return kExitUsage;
-    }
-    GlBackend backend = GlBackend::Auto;
-    if (!parseGlBackend(parsed->get("--backend", "auto"), backend)) {
-        std::fprintf(stderr, "rmsc render: --backend: expected auto, egl or osmesa, got '%s'\n",
-                     parsed->get("--backend", "").c_str());
-        return kExitUsage;
-    }
+    FrameOptions frame;
+    if (!readFrameOptions("render", *parsed, frame)) return kExitUsage;
     const std::string aov = parsed->get("--aov", "color");
     if (aov != "color" && aov != "depth" && aov != "normal" && aov != "id") {
         std::fprintf(stderr, "rmsc render: --aov: expected color, depth, normal or id, got '%s'\n",
@@ -77,38 +66,23 @@ int runRender(std::span<const std::string> args) {
         return kExitUsage;
     }
 
-    Diagnostics diagnostics;
-    const std::filesystem::path scenePath =
-        parsed->positionals.empty() ? std::filesystem::path() : std::filesystem::path(parsed->positionals[0]);
-    std::optional<PreparedScene> prepared = openScene(scenePath, diagnostics);
-    std::fputs(diagnostics.format().c_str(), stderr);
-    if (!prepared) return kExitBadInput;
-
-    std::unique_ptr<HeadlessContext> context = createHeadlessContext(backend, false, error);
-    if (!context) {
-        std::fprintf(stderr, "rmsc render: %s\n", error.c_str());
-        return kExitSystem;
-    }
-    std::optional<Renderer> renderer = Renderer::create(ShaderFiles::embedded(), error);
-    if (!renderer) {
-        std::fprintf(stderr, "rmsc render: %s\n", error.c_str());
-        return kExitSystem;
-    }
-    const GpuScene gpuScene = uploadScene(*prepared);
-    FrameTargets targets = createFrameTargets(width, height);
-    const Scene& scene = prepared->scene;
-    renderer->render(gpuScene, scene.camera, scene.render, targets);
+    HeadlessSession session;
+    const std::string scenePath = parsed->positionals.empty() ? "" : parsed->positionals[0];
+    if (const int code = openHeadlessSession("render", scenePath, frame, session)) return code;
+    FrameTargets targets = createFrameTargets(frame.width, frame.height);
+    const Scene& scene = session.prepared->scene;
+    session.renderer->render(*session.gpuScene, scene.camera, scene.render, targets);
 
     bool written = false;
     if (aov == "color") {
         written = writePng8(output, readDisplayColor(targets), error);
     } else if (aov == "depth") {
         const Pixels<float> depth = readViewDepth(targets);
-        written = pfm ? writePfm(output, depth, error)
-                      : writePng16(output,
-                                   encodeDepth16(depth, scene.camera.nearPlane,
-                                                 scene.camera.farPlane),
-                                   error);
+        written =
+            pfm ? writePfm(output, depth, error)
+                : writePng16(output,
+                             encodeDepth16(depth, scene.camera.nearPlane, scene.camera.farPlane),
+                             error);
     } else if (aov == "normal") {
         const Pixels<float> normals = readNormals(targets);
         written = pfm ? writePfm(output, normals, error)

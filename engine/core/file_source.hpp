@@ -3,6 +3,8 @@
 // demo scene and its glTF assets load exactly like files on disk.
 #pragma once
 
+#include "core/limits.hpp"
+
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -17,7 +19,7 @@ struct FileSource {
 };
 
 // Reads from the local file system; refuses files larger than maxBytes.
-FileSource diskFileSource(std::uintmax_t maxBytes = std::uintmax_t(1) << 30);
+FileSource diskFileSource(std::uintmax_t maxBytes = limits::kInputFileBytes);
 
 // Reads the files embedded at build time from samples/ (paths like "samples/scenes/demo.json").
 FileSource embeddedFileSource();

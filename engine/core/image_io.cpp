@@ -1,6 +1,8 @@
 // Image files and AOV encodings.
 #include "core/image_io.hpp"
 
+#include "core/atomic_file.hpp"
+
 #include <png.h>
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -14,25 +16,10 @@
 namespace rmsc {
 namespace {
 
-// Writes via `writeFile(tmpPath)` then renames over `path`.
+// Writes via `writeFile(tmpPath)`, then flushes and renames over `path` (core/atomic_file.hpp).
 template <class Write>
 bool writeAtomically(const std::filesystem::path& path, std::string& error, Write&& writeFile) {
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    if (!writeFile(tmp)) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        if (error.empty()) error = "cannot write " + tmp.string();
-        return false;
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        error = "cannot rename " + tmp.string() + " to " + path.string() + ": " + ec.message();
-        std::filesystem::remove(tmp, ec);
-        return false;
-    }
-    return true;
+    return replaceFileAtomically(path, false, error, writeFile);
 }
 
 } // namespace
@@ -142,7 +129,8 @@ void objectIdColor(std::uint32_t id, std::uint8_t rgb[3]) {
 Pixels<std::uint8_t> encodeObjectIds(const Pixels<std::uint32_t>& ids) {
     Pixels<std::uint8_t> out{ids.width, ids.height, 3, {}};
     out.data.resize(ids.data.size() * 3);
-    for (std::size_t i = 0; i < ids.data.size(); ++i) objectIdColor(ids.data[i], &out.data[i * 3]);
+    for (std::size_t i = 0; i < ids.data.size(); ++i)
+        objectIdColor(ids.data[i], &out.data[i * 3]);
     return out;
 }
 

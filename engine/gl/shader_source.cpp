@@ -39,8 +39,9 @@ struct Assembler {
         while (std::getline(lines, line)) {
             ++lineNumber;
             const std::size_t first = line.find_first_not_of(" \t");
-            const std::string_view trimmed =
-                first == std::string::npos ? std::string_view() : std::string_view(line).substr(first);
+            const std::string_view trimmed = first == std::string::npos
+                                                 ? std::string_view()
+                                                 : std::string_view(line).substr(first);
             if (trimmed.starts_with("#version")) {
                 if (!isRoot || lineNumber != 1) {
                     error = std::string(path) + ":" + std::to_string(lineNumber) +
@@ -70,8 +71,8 @@ struct Assembler {
                     fileIndex(target);
                     if (!append(target, *source, defines, depth + 1)) return false;
                 }
-                out.text += "#line " + std::to_string(lineNumber + 1) + " " +
-                            std::to_string(index) + "\n";
+                out.text +=
+                    "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
                 continue;
             }
             out.text += line + "\n";
@@ -87,6 +88,10 @@ ShaderFiles ShaderFiles::embedded() {
     for (const EmbeddedFile& file : embeddedShaders())
         shaderFiles.files.emplace(std::string(file.path), std::string(file.data));
     shaderFiles.files.emplace("generated/primitives.glsl", generateGlslDispatch());
+    // Until a scene supplies its own map: the interpreter over every primitive.
+    shaderFiles.files.emplace("generated/sdf_map.glsl",
+                              "#include \"generated/primitives.glsl\"\n"
+                              "#include \"common/sdf_interpreter.glsl\"\n");
     return shaderFiles;
 }
 

@@ -18,7 +18,9 @@ struct ShaderFiles {
     std::map<std::string, std::string, std::less<>> files;
     std::string overrideDirectory;
 
-    static ShaderFiles embedded(); // embedded shaders + "generated/primitives.glsl"
+    // Embedded shaders, "generated/primitives.glsl" (the full catalogue dispatch) and a default
+    // "generated/sdf_map.glsl" (the interpreter); the renderer replaces the map per scene.
+    static ShaderFiles embedded();
     std::optional<std::string> find(std::string_view path) const;
 };
 

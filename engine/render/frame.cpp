@@ -3,6 +3,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+
 namespace rmsc {
 
 FrameCamera makeFrameCamera(const Camera& camera, int width, int height) {
@@ -21,8 +23,7 @@ FrameCamera makeFrameCamera(const Camera& camera, int width, int height) {
     auto corner = [&](float sx, float sy) {
         return glm::vec4(frame.forward + sx * tanX * right + sy * tanY * up, 0.0f);
     };
-    frame.frustumCorners =
-        glm::mat4(corner(-1, -1), corner(1, -1), corner(-1, 1), corner(1, 1));
+    frame.frustumCorners = glm::mat4(corner(-1, -1), corner(1, -1), corner(-1, 1), corner(1, 1));
     frame.nearPlane = camera.nearPlane;
     frame.farPlane = camera.farPlane;
     return frame;
@@ -47,10 +48,33 @@ GpuFrame packFrame(const FrameCamera& camera, const RenderSettings& settings, in
     frame.cameraForward = glm::vec4(camera.forward, camera.farPlane);
     frame.background = glm::vec4(settings.background, settings.exposure);
     frame.ambient = glm::vec4(settings.ambient, 0.0f);
-    frame.march = glm::vec4(float(settings.maxSteps), settings.maxDistance,
-                            settings.surfaceEpsilon, 0.0f);
+    frame.march =
+        glm::vec4(float(settings.maxSteps), settings.maxDistance, settings.surfaceEpsilon, 0.0f);
     frame.viewport = glm::vec4(float(width), float(height), 0.0f, 0.0f);
+    const ShadowSettings& shadows = settings.shadows;
+    frame.shadow =
+        glm::vec4(shadows.enabled ? float(std::clamp(shadows.steps, 1, 256)) : 0.0f,
+                  shadows.minDistance, std::min(shadows.maxDistance, settings.maxDistance), 0.0f);
+    frame.shadowMap =
+        glm::vec4(shadows.enabled ? float(shadows.mapSize) : 0.0f,
+                  float(std::clamp(shadows.pcfRadius, 0, 3)), shadows.normalOffset, 0.0f);
+    frame.ao = glm::vec4(float(std::clamp(settings.ao.samples, 0, 16)), settings.ao.distance,
+                         settings.ao.strength, settings.fxaa ? 1.0f : 0.0f);
+    frame.fog = glm::vec4(0.0f);
     return frame;
+}
+
+void packEnvironment(const Environment& environment, int imageLevels, GpuFrame& frame) {
+    SkyType sky = environment.sky;
+    if (sky == SkyType::Image && imageLevels <= 0) sky = SkyType::Constant; // image not loaded
+    frame.sky =
+        glm::vec4(float(int(sky)), environment.intensity, float(std::max(imageLevels - 1, 0)),
+                  glm::radians(environment.rotationDegrees));
+    frame.skyZenith =
+        glm::vec4(sky == SkyType::Gradient ? environment.zenith : environment.color, 0.0f);
+    frame.skyHorizon = glm::vec4(environment.horizon, 0.0f);
+    frame.skyGround = glm::vec4(environment.ground, 0.0f);
+    frame.fog = glm::vec4(environment.fogColor, environment.fogDensity);
 }
 
 } // namespace rmsc

@@ -40,8 +40,19 @@ struct GpuFrame {
     glm::vec4 ambient;        // rgb = ambient light
     glm::vec4 march;          // x = max steps, y = max distance, z = surface epsilon
     glm::vec4 viewport;       // x = width, y = height
+    glm::vec4 sky;            // x = SkyType, y = intensity, z = image's top mip level, w = rotation
+    glm::vec4 skyZenith;      // rgb = constant colour or gradient zenith
+    glm::vec4 skyHorizon;     // rgb = gradient horizon
+    glm::vec4 skyGround;      // rgb = gradient ground
+    glm::vec4 fog;            // rgb = colour, a = density
+    glm::vec4 shadow;         // x = SDF shadow steps (0 = off), y = min distance, z = max distance
+    glm::vec4 shadowMap;      // x = map size, y = PCF radius, z = normal offset (texels)
+    glm::vec4 ao;             // x = samples (0 = off), y = distance, z = strength, w = FXAA on
 };
-static_assert(sizeof(GpuFrame) == 3 * 64 + 6 * 16);
+static_assert(sizeof(GpuFrame) == 3 * 64 + 14 * 16);
+
+// Fills the sky and fog fields of `frame` (imageLevels: mip levels of the sky image, 0 = none).
+void packEnvironment(const Environment& environment, int imageLevels, GpuFrame& frame);
 
 GpuFrame packFrame(const FrameCamera& camera, const RenderSettings& settings, int width,
                    int height);

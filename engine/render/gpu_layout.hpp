@@ -7,25 +7,74 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace rmsc {
 
 // SSBO binding points, the same numbers as in shaders/common/scene_buffers.glsl.
-enum SsboBinding : unsigned { kSdfProgramBinding = 0, kMaterialBinding = 1, kLightBinding = 2 };
+enum SsboBinding : unsigned {
+    kSdfProgramBinding = 0,
+    kMaterialBinding = 1,
+    kLightBinding = 2,
+    kShadowViewBinding = 3,
+    kSdfDataBinding = 4, // SdfProgram::data (shaders/common/sdf_scene.glsl)
+};
+
+// Texture units of the lighting inputs every shading pass samples (shaders/common/sky.glsl,
+// shadows.glsl); passes keep their own textures on lower units.
+enum LightingTextureUnit : unsigned { kSkyImageUnit = 14, kShadowMapUnit = 15 };
+
+// GpuLight::directionType.w.
+enum GpuLightType : int { kGpuDirectional = 0, kGpuPoint = 1, kGpuSpot = 2 };
+
+// Texture units of the SDF material textures in the march pass (shaders/common/
+// material_textures.glsl): texture slot i (MaterialTexture::image) is bound to unit
+// kSdfMaterialTextureFirstUnit + i, for i < kMaxSdfMaterialTextures.
+enum SdfMaterialTextureUnit : unsigned { kSdfMaterialTextureFirstUnit = 5 };
+
+// One triplanar texture of a material (std430, 16 bytes).
+struct GpuMaterialTexture {
+    std::int32_t slot = -1; // texture slot (MaterialTexture::image), -1 = none
+    float scale = 1.0f;     // repeats per local unit
+    float sharpness = 4.0f; // triplanar blend exponent
+    float strength = 1.0f;  // normal maps: x and y scale
+};
+static_assert(sizeof(GpuMaterialTexture) == 16);
 
 struct GpuMaterial {
-    glm::vec4 baseColorMetallic;   // rgb = base colour (linear), a = metallic
-    glm::vec4 emissiveRoughness;   // rgb = emissive (linear), a = roughness
+    glm::vec4 baseColorMetallic; // rgb = base colour (linear), a = metallic
+    glm::vec4 emissiveRoughness; // rgb = emissive (linear), a = roughness
+    GpuMaterialTexture baseColorTexture;
+    GpuMaterialTexture normalTexture;
+    GpuMaterialTexture roughnessTexture;
 };
-static_assert(sizeof(GpuMaterial) == 32);
+static_assert(sizeof(GpuMaterial) == 80);
+static_assert(offsetof(GpuMaterial, baseColorTexture) == 32);
+static_assert(offsetof(GpuMaterial, roughnessTexture) == 64);
 
 struct GpuLight {
-    glm::vec4 directionType;  // xyz = direction the light travels (normalized), w = type (0 = dir.)
+    glm::vec4 directionType;  // xyz = direction the light travels (normalized), w = GpuLightType
     glm::vec4 colorIntensity; // rgb = linear colour, a = intensity
+    glm::vec4 positionRange;  // xyz = position (point, spot), w = range (0 = unlimited)
+    // x, y = spot cone scale and offset (KHR_lights_punctual: attenuation =
+    // saturate(cos(angle) * x + y)^2), z = SDF shadow softness w (0 = casts no shadows),
+    // w = first shadow view (index into the shadow view buffer, -1 = none; points use 6)
+    glm::vec4 spotShadow;
 };
-static_assert(sizeof(GpuLight) == 32);
+static_assert(sizeof(GpuLight) == 64);
 static_assert(offsetof(GpuLight, colorIntensity) == 16);
+static_assert(offsetof(GpuLight, positionRange) == 32);
+static_assert(offsetof(GpuLight, spotShadow) == 48);
+
+// One rendered shadow map: a layer of the shadow map array (the layer is the view's index).
+struct GpuShadowView {
+    glm::mat4 lightViewProjection; // world -> the light's clip space
+    // x = world size of a texel (orthographic) or texel size per unit distance (perspective),
+    // y = 1 for perspective views, z = layer
+    glm::vec4 params;
+};
+static_assert(sizeof(GpuShadowView) == 80);
 
 // Header of the light buffer, before the array.
 struct GpuLightHeader {
@@ -35,7 +84,10 @@ struct GpuLightHeader {
 // The scene's materials followed by the default material (used where none is named); the
 // default's index is scene.materials.size().
 std::vector<GpuMaterial> packMaterials(const std::vector<Material>& materials);
-std::vector<GpuLight> packLights(const std::vector<Light>& lights);
+// Lights without shadow views; `defaultSoftness` is used where a light sets none, and
+// `shadowsEnabled` false (or a light's castShadows false) gives softness 0 (no SDF shadows).
+std::vector<GpuLight> packLights(const std::vector<Light>& lights, bool shadowsEnabled = false,
+                                 float defaultSoftness = 0.05f);
 GpuMaterial packMaterial(const Material& m);
 
 } // namespace rmsc

@@ -1,7 +1,10 @@
-// Uploading mesh assets: interleaved vertex buffers, 32-bit indices, sRGB textures.
+// Uploading mesh assets: interleaved vertex buffers, 32-bit indices, material textures.
 #include "render/gpu_mesh.hpp"
 
-#include <cmath>
+#include "render/gpu_texture.hpp"
+
+#include <map>
+#include <tuple>
 
 namespace rmsc {
 
@@ -19,29 +22,41 @@ GpuMesh uploadMesh(const MeshAsset& asset) {
         const GLuint vao = p.vertexArray.id();
         glVertexArrayVertexBuffer(vao, 0, p.vertices.id(), 0, sizeof(MeshVertex));
         glVertexArrayElementBuffer(vao, p.indices.id());
+        // Attribute locations as in shaders/passes/raster.vert.
         const GLuint offsets[] = {offsetof(MeshVertex, position), offsetof(MeshVertex, normal),
-                                  offsetof(MeshVertex, uv)};
-        const GLint sizes[] = {3, 3, 2};
-        for (GLuint a = 0; a < 3; ++a) {
+                                  offsetof(MeshVertex, uv), offsetof(MeshVertex, uv1),
+                                  offsetof(MeshVertex, tangent)};
+        const GLint sizes[] = {3, 3, 2, 2, 4};
+        for (GLuint a = 0; a < 5; ++a) {
             glEnableVertexArrayAttrib(vao, a);
             glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
             glVertexArrayAttribBinding(vao, a, 0);
         }
         mesh.primitives.push_back(std::move(p));
     }
-    for (const Image& image : asset.images) {
-        gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
-        const int levels =
-            1 + int(std::floor(std::log2(float(std::max(image.width, image.height)))));
-        glTextureStorage2D(texture.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
-        glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA,
-                            GL_UNSIGNED_BYTE, image.rgba.data());
-        glGenerateTextureMipmap(texture.id());
-        glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-        mesh.textures.push_back(std::move(texture));
+    // Textures by (image, sRGB, sampler): a glTF image used with two samplers or in two
+    // colour spaces becomes two GL textures.
+    std::map<std::tuple<int, bool, int, int, int, int>, int> known;
+    const auto textureFor = [&](const MeshTextureRef& ref, bool srgb) -> int {
+        if (!ref.present() || std::size_t(ref.image) >= asset.images.size()) return -1;
+        const auto key =
+            std::make_tuple(ref.image, srgb, ref.sampler.magFilter, ref.sampler.minFilter,
+                            ref.sampler.wrapS, ref.sampler.wrapT);
+        if (const auto found = known.find(key); found != known.end()) return found->second;
+        const int index = int(mesh.textures.size());
+        mesh.textures.push_back(
+            uploadTexture(asset.images[std::size_t(ref.image)], srgb, ref.sampler));
+        known.emplace(key, index);
+        return index;
+    };
+    for (const MeshMaterial& m : asset.materials) {
+        GpuMeshMaterialTextures t;
+        t.baseColor = textureFor(m.baseColorTexture, true);
+        t.metallicRoughness = textureFor(m.metallicRoughnessTexture, false);
+        t.normal = textureFor(m.normalTexture, false);
+        t.emissive = textureFor(m.emissiveTexture, true);
+        t.occlusion = textureFor(m.occlusionTexture, false);
+        mesh.materialTextures.push_back(t);
     }
     return mesh;
 }

@@ -1,4 +1,4 @@
-// A MeshAsset uploaded to GL: one vertex array per primitive and one texture per image.
+// A MeshAsset uploaded to GL: one vertex array per primitive and the materials' textures.
 #pragma once
 
 #include "gl/handles.hpp"
@@ -16,9 +16,21 @@ struct GpuMeshPrimitive {
     int material = -1; // index into MeshAsset::materials
 };
 
+// A material's textures as indices into GpuMesh::textures (-1 = none).
+struct GpuMeshMaterialTextures {
+    int baseColor = -1;
+    int metallicRoughness = -1;
+    int normal = -1;
+    int emissive = -1;
+    int occlusion = -1;
+};
+
 struct GpuMesh {
     std::vector<GpuMeshPrimitive> primitives;
-    std::vector<gl::Texture> textures; // per MeshAsset::images, SRGB8_ALPHA8 with mipmaps
+    // One texture per distinct (image, colour space, sampler) the materials use, at the
+    // image's own size with mipmaps: sRGB for base colour and emissive, linear otherwise.
+    std::vector<gl::Texture> textures;
+    std::vector<GpuMeshMaterialTextures> materialTextures; // per MeshAsset::materials
 };
 
 GpuMesh uploadMesh(const MeshAsset& asset);

@@ -2,6 +2,11 @@
 #include "render/gpu_scene.hpp"
 
 #include "render/gpu_layout.hpp"
+#include "render/gpu_texture.hpp"
+#include "render/shadow_views.hpp"
+
+#include <algorithm>
+#include <cmath>
 
 #include <cstring>
 
@@ -25,9 +30,13 @@ void GpuScene::bindBuffers() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfProgramBinding, sdfProgram.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer.id());
+    for (std::size_t i = 0; i < materialTextures.size(); ++i)
+        glBindTextureUnit(kSdfMaterialTextureFirstUnit + GLuint(i), materialTextures[i].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, shadowViewBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfDataBinding, sdfData.id());
 }
 
-GpuScene uploadScene(const PreparedScene& prepared) {
+GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     GpuScene gpu;
     for (const MeshAsset& asset : prepared.assets) {
         gpu.meshes.push_back(uploadMesh(asset));
@@ -48,16 +57,68 @@ GpuScene uploadScene(const PreparedScene& prepared) {
     GpuSdfHeader sdfHeader;
     sdfHeader.instructionCount = std::uint32_t(prepared.sdf.instructions.size());
     sdfHeader.stackDepth = std::uint32_t(prepared.sdf.stackDepth);
+    sdfHeader.pointStackDepth = std::uint32_t(prepared.sdf.pointStackDepth);
+    sdfHeader.dataCount = std::uint32_t(prepared.sdf.data.size());
+    std::vector<glm::vec4> sdfData = prepared.sdf.data;
+    if (sdfData.empty()) sdfData.emplace_back(0.0f); // a buffer is never empty
+    gpu.sdfData =
+        gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
     gpu.sdfProgram = createHeaderedBuffer(sdfHeader, prepared.sdf.instructions);
+    gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
     gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());
 
     const std::vector<GpuMaterial> materials = packMaterials(prepared.materials);
+    for (const TextureImage& texture : prepared.textures)
+        gpu.materialTextures.push_back(uploadTexture(texture.image, texture.srgb));
     gpu.materialBuffer = gl::createBufferWithData(
         GLsizeiptr(materials.size() * sizeof(GpuMaterial)), materials.data());
 
-    const std::vector<GpuLight> lights = packLights(scene.lights);
+    // Lights from the file and the glTF files (PreparedScene::lights); scenes prepared in code
+    // without them use the file's.
+    const std::vector<Light>& sceneLights =
+        prepared.lights.empty() ? scene.lights : prepared.lights;
+    const ShadowSettings& shadows = scene.render.shadows;
+    CasterBounds casters;
+    for (const GpuMeshInstance& instance : gpu.instances) {
+        if (instance.mesh < 0) continue;
+        const MeshAsset& asset = prepared.assets[std::size_t(instance.mesh)];
+        if (asset.primitives.empty()) continue;
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner(c & 1 ? asset.boundsMax.x : asset.boundsMin.x,
+                                   c & 2 ? asset.boundsMax.y : asset.boundsMin.y,
+                                   c & 4 ? asset.boundsMax.z : asset.boundsMin.z);
+            casters.add(glm::vec3(instance.model * glm::vec4(corner, 1.0f)));
+        }
+    }
+    const ShadowViewPlan plan = planShadowViews(sceneLights, casters, shadows);
+    std::vector<GpuLight> lights = packLights(sceneLights, shadows.enabled, shadows.softness);
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        lights[i].spotShadow.w = float(plan.firstView[i]);
     GpuLightHeader lightHeader{glm::uvec4(std::uint32_t(lights.size()), 0, 0, 0)};
     gpu.lightBuffer = createHeaderedBuffer(lightHeader, lights);
+    gpu.shadowViews = plan.views;
+    std::vector<GpuShadowView> views = plan.views;
+    if (views.empty()) views.push_back(GpuShadowView{}); // a buffer is never empty
+    gpu.shadowViewBuffer =
+        gl::createBufferWithData(GLsizeiptr(views.size() * sizeof(GpuShadowView)), views.data());
+    gpu.shadowMapSize = plan.views.empty() ? 0 : std::clamp(shadows.mapSize, 1, 4096);
+    gpu.shadowSlopeBias = shadows.slopeBias;
+
+    gpu.environment = scene.environment;
+    const SkyImage& sky = prepared.skyImage;
+    if (scene.environment.sky == SkyType::Image && sky.width > 0 && sky.height > 0) {
+        gpu.skyLevels = 1 + int(std::floor(std::log2(double(std::max(sky.width, sky.height)))));
+        gpu.skyImage = gl::createTexture(GL_TEXTURE_2D);
+        glTextureStorage2D(gpu.skyImage.id(), gpu.skyLevels, GL_RGB16F, sky.width, sky.height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(gpu.skyImage.id(), 0, 0, 0, sky.width, sky.height, GL_RGB, GL_FLOAT,
+                            sky.rgb.data());
+        glGenerateTextureMipmap(gpu.skyImage.id());
+        glTextureParameteri(gpu.skyImage.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(gpu.skyImage.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(gpu.skyImage.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(gpu.skyImage.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
     return gpu;
 }
 

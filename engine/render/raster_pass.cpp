@@ -3,6 +3,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <array>
+
 namespace rmsc {
 
 std::optional<RasterPass> RasterPass::create(const ShaderFiles& files, std::string& error) {
@@ -16,7 +18,7 @@ std::optional<RasterPass> RasterPass::create(const ShaderFiles& files, std::stri
     pass.baseColorFactor_ = uniformLocation(pass.program_, "uBaseColorFactor");
     pass.metallicRoughness_ = uniformLocation(pass.program_, "uMetallicRoughness");
     pass.emissive_ = uniformLocation(pass.program_, "uEmissive");
-    pass.hasBaseColorTexture_ = uniformLocation(pass.program_, "uHasBaseColorTexture");
+    pass.texCoord_ = uniformLocation(pass.program_, "uTexCoord");
     pass.objectId_ = uniformLocation(pass.program_, "uObjectId");
     return pass;
 }
@@ -44,33 +46,49 @@ void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
         glUniform1ui(objectId_, instance.objectId);
         for (const GpuMeshPrimitive& primitive : mesh.primitives) {
             glm::vec4 baseColor(1.0f);
-            glm::vec2 metallicRoughness(1.0f, 1.0f);
+            // metallic, roughness, normal scale, occlusion strength
+            glm::vec4 metallicRoughness(1.0f, 1.0f, 1.0f, 1.0f);
             glm::vec3 emissive(0.0f);
-            int texture = -1;
+            // Per texture unit 0..4 (raster.frag): the texture and the TEXCOORD set it reads.
+            std::array<int, 5> textures{-1, -1, -1, -1, -1};
+            std::array<GLint, 5> texCoords{-1, -1, -1, -1, -1};
             if (instance.materialOverride >= 0) {
                 const Material& m = scene.materials[std::size_t(instance.materialOverride)];
                 baseColor = glm::vec4(m.baseColor, 1.0f);
-                metallicRoughness = {m.metallic, m.roughness};
+                metallicRoughness = {m.metallic, m.roughness, 1.0f, 1.0f};
                 emissive = m.emissive;
             } else if (primitive.material >= 0) {
-                const MeshMaterial& m = meshMaterials[std::size_t(primitive.material)];
+                const std::size_t index = std::size_t(primitive.material);
+                const MeshMaterial& m = meshMaterials[index];
                 baseColor = m.baseColorFactor;
-                metallicRoughness = {m.metallicFactor, m.roughnessFactor};
-                emissive = m.emissiveFactor;
-                texture = m.baseColorTexture;
+                metallicRoughness = {m.metallicFactor, m.roughnessFactor, m.normalScale,
+                                     m.occlusionStrength};
+                emissive = m.emissiveFactor * m.emissiveStrength;
+                if (index < mesh.materialTextures.size()) {
+                    const GpuMeshMaterialTextures& t = mesh.materialTextures[index];
+                    textures = {t.baseColor, t.metallicRoughness, t.normal, t.emissive,
+                                t.occlusion};
+                    const MeshTextureRef* refs[] = {&m.baseColorTexture,
+                                                    &m.metallicRoughnessTexture, &m.normalTexture,
+                                                    &m.emissiveTexture, &m.occlusionTexture};
+                    for (std::size_t u = 0; u < 5; ++u)
+                        if (textures[u] >= 0) texCoords[u] = refs[u]->texCoord;
+                }
             }
             glUniform4fv(baseColorFactor_, 1, glm::value_ptr(baseColor));
-            glUniform4f(metallicRoughness_, metallicRoughness.x, metallicRoughness.y, 0.0f, 0.0f);
+            glUniform4fv(metallicRoughness_, 1, glm::value_ptr(metallicRoughness));
             glUniform3fv(emissive_, 1, glm::value_ptr(emissive));
-            const bool hasTexture = texture >= 0 && std::size_t(texture) < mesh.textures.size();
-            glUniform1i(hasBaseColorTexture_, hasTexture ? 1 : 0);
-            glBindTextureUnit(0, hasTexture ? mesh.textures[std::size_t(texture)].id() : 0);
+            glUniform1iv(texCoord_, 5, texCoords.data());
+            for (std::size_t u = 0; u < 5; ++u)
+                glBindTextureUnit(
+                    GLuint(u), textures[u] >= 0 ? mesh.textures[std::size_t(textures[u])].id() : 0);
             glBindVertexArray(primitive.vertexArray.id());
             glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
         }
     }
     glBindVertexArray(0);
-    glBindTextureUnit(0, 0);
+    for (GLuint unit = 0; unit < 5; ++unit)
+        glBindTextureUnit(unit, 0);
 }
 
 } // namespace rmsc

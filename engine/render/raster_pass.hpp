@@ -11,15 +11,15 @@
 namespace rmsc {
 
 class RasterPass {
-public:
+  public:
     static std::optional<RasterPass> create(const ShaderFiles& files, std::string& error);
     // Clears `target` to the background, then draws. Expects the frame UBO and scene SSBOs bound.
     void draw(const GpuScene& scene, const glm::vec3& background, const GBuffer& target) const;
 
-private:
+  private:
     gl::Program program_;
     GLint model_ = -1, normalMatrix_ = -1, baseColorFactor_ = -1, metallicRoughness_ = -1,
-          emissive_ = -1, hasBaseColorTexture_ = -1, objectId_ = -1;
+          emissive_ = -1, texCoord_ = -1, objectId_ = -1;
 };
 
 } // namespace rmsc

@@ -1,6 +1,9 @@
 // Frame orchestration.
 #include "render/renderer.hpp"
 
+#include <chrono>
+#include <stdexcept>
+
 namespace rmsc {
 
 FrameTargets createFrameTargets(int width, int height) {
@@ -8,28 +11,52 @@ FrameTargets createFrameTargets(int width, int height) {
             createDisplayTarget(width, height)};
 }
 
-Renderer::Renderer(RasterPass raster, MarchPass march, PostPass post)
-    : raster_(std::move(raster)), march_(std::move(march)), post_(std::move(post)) {
+Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow)
+    : files_(std::move(files)), post_(std::move(post)), shadow_(std::move(shadow)) {
     frameBuffer_ = gl::createBufferWithData(sizeof(GpuFrame), nullptr);
-    for (gl::Query& timer : timers_) timer = gl::createQuery(GL_TIME_ELAPSED);
+    for (gl::Query& timer : timers_)
+        timer = gl::createQuery(GL_TIME_ELAPSED);
 }
 
-std::optional<Renderer> Renderer::create(const ShaderFiles& files, std::string& error) {
-    std::optional<RasterPass> raster = RasterPass::create(files, error);
-    if (!raster) return std::nullopt;
-    std::optional<MarchPass> march = MarchPass::create(files, error);
-    if (!march) return std::nullopt;
+std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) {
     std::optional<PostPass> post = PostPass::create(files, error);
     if (!post) return std::nullopt;
-    return Renderer(std::move(*raster), std::move(*march), std::move(*post));
+    std::optional<ShadowPass> shadow = ShadowPass::create(files, error);
+    if (!shadow) return std::nullopt;
+    return Renderer(std::move(files), std::move(*post), std::move(*shadow));
+}
+
+bool Renderer::prepare(const GpuScene& scene, std::string& error) {
+    lastCompileMs_ = 0.0;
+    if (sdfPasses_.contains(scene.sdfMap)) return true;
+    const auto start = std::chrono::steady_clock::now();
+    ShaderFiles files = files_;
+    files.files["generated/sdf_map.glsl"] = scene.sdfMap;
+    std::optional<RasterPass> raster = RasterPass::create(files, error);
+    if (!raster) return false;
+    std::optional<MarchPass> march = MarchPass::create(files, error);
+    if (!march) return false;
+    glFinish(); // drivers may finish compiling lazily
+    lastCompileMs_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    // A small cache: an editing session alternates between a few structures at most.
+    constexpr std::size_t kMaxCachedMaps = 8;
+    if (sdfPasses_.size() >= kMaxCachedMaps) sdfPasses_.clear();
+    sdfPasses_.emplace(scene.sdfMap, SdfPasses{std::move(*raster), std::move(*march)});
+    return true;
 }
 
 void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderSettings& settings,
                       FrameTargets& targets) {
+    std::string error;
+    if (!prepare(scene, error)) throw std::runtime_error("the SDF shaders do not build: " + error);
+    const SdfPasses& sdf = sdfPasses_.find(scene.sdfMap)->second;
     const int width = targets.display.width;
     const int height = targets.display.height;
     const FrameCamera frameCamera = makeFrameCamera(camera, width, height);
-    const GpuFrame frame = packFrame(frameCamera, settings, width, height);
+    GpuFrame frame = packFrame(frameCamera, settings, width, height);
+    packEnvironment(scene.environment, scene.skyLevels, frame);
+    frame.shadowMap.x = settings.shadows.enabled ? float(scene.shadowMapSize) : 0.0f;
     glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(GpuFrame), &frame);
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameBuffer_.id());
     scene.bindBuffers();
@@ -39,9 +66,14 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
         draw();
         glEndQuery(GL_TIME_ELAPSED);
     };
-    timed(Pass::Raster, [&] { raster_.draw(scene, settings.background, targets.raster); });
-    timed(Pass::March, [&] { march_.draw(targets.raster, targets.combined); });
+    timed(Pass::Shadow, [&] { shadow_.draw(scene); });
+    glBindTextureUnit(kShadowMapUnit, shadow_.maps().id());
+    glBindTextureUnit(kSkyImageUnit, scene.skyImage.id());
+    timed(Pass::Raster, [&] { sdf.raster.draw(scene, settings.background, targets.raster); });
+    timed(Pass::March, [&] { sdf.march.draw(targets.raster, targets.combined); });
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
+    glBindTextureUnit(kShadowMapUnit, 0);
+    glBindTextureUnit(kSkyImageUnit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
 }

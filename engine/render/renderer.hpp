@@ -1,5 +1,5 @@
-// The frame: raster pass -> march pass -> post pass, with the per-frame uniform block and
-// per-pass GPU timers. Owns the passes (the programs), not the scene or the targets.
+// The frame: shadow pass -> raster pass -> march pass -> post pass, with the per-frame uniform
+// block and per-pass GPU timers. Owns the passes (the programs), not the scene or the targets.
 #pragma once
 
 #include "render/frame.hpp"
@@ -8,8 +8,10 @@
 #include "render/march_pass.hpp"
 #include "render/post_pass.hpp"
 #include "render/raster_pass.hpp"
+#include "render/shadow_pass.hpp"
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -24,28 +26,46 @@ struct FrameTargets {
 
 FrameTargets createFrameTargets(int width, int height);
 
-enum class Pass { Raster, March, Post, Count };
+enum class Pass { Raster, March, Post, Shadow, Count };
 
 // GPU milliseconds of each pass in the last frame (timer queries).
 using PassTimes = std::array<double, std::size_t(Pass::Count)>;
 
-class Renderer {
-public:
-    static std::optional<Renderer> create(const ShaderFiles& files, std::string& error);
+// The passes whose shaders include the scene's SDF map (generated/sdf_map.glsl).
+struct SdfPasses {
+    RasterPass raster; // marches shadow rays and AO through the SDF
+    MarchPass march;
+};
 
+class Renderer {
+  public:
+    // Builds the passes that do not depend on the scene; the SDF passes are built per map.
+    static std::optional<Renderer> create(ShaderFiles files, std::string& error);
+
+    // Makes the programs for the scene's SDF map ready: from the cache (keyed by the map's
+    // text, so scenes of one structure share them) or compiled now. False with the compile
+    // log in `error` when the shaders do not build.
+    bool prepare(const GpuScene& scene, std::string& error);
+    // Milliseconds the last prepare() spent compiling and linking (0 on a cache hit).
+    double lastCompileMs() const { return lastCompileMs_; }
+
+    // Renders one frame; prepares the scene first (throws std::runtime_error if its shaders
+    // do not build, which is a bug in rmsc, not in the scene).
     void render(const GpuScene& scene, const Camera& camera, const RenderSettings& settings,
                 FrameTargets& targets);
     // Waits for the last frame and returns its pass times.
     PassTimes lastPassTimes() const;
 
-private:
-    RasterPass raster_;
-    MarchPass march_;
+  private:
+    ShaderFiles files_;
+    std::map<std::string, SdfPasses, std::less<>> sdfPasses_; // by map text
+    double lastCompileMs_ = 0.0;
     PostPass post_;
+    ShadowPass shadow_;
     gl::Buffer frameBuffer_; // GpuFrame uniform block
     std::array<gl::Query, std::size_t(Pass::Count)> timers_;
 
-    Renderer(RasterPass raster, MarchPass march, PostPass post);
+    Renderer(ShaderFiles files, PostPass post, ShadowPass shadow);
 };
 
 } // namespace rmsc

@@ -232,7 +232,9 @@ bool readFloatAttribute(const tinygltf::Model& model, int index, int components,
                         Reporter& report) {
     const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
     const std::string pointer = accessorPointer(index);
-    const int expectedType = components == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
+    const int expectedType = components == 2   ? TINYGLTF_TYPE_VEC2
+                             : components == 4 ? TINYGLTF_TYPE_VEC4
+                                               : TINYGLTF_TYPE_VEC3;
     const bool isFloat = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
     const bool isNormalized =
         a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||

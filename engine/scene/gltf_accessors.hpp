@@ -3,6 +3,7 @@
 // sparse accessors and non-finite values.
 #pragma once
 
+#include "core/limits.hpp"
 #include "scene/gltf_report.hpp"
 #include "scene/gltf_tinygltf.hpp"
 
@@ -12,8 +13,8 @@
 
 namespace rmsc::gltf {
 
-constexpr std::uint64_t kMaxVertices = 16u << 20; // per accessor and per asset
-constexpr std::uint64_t kMaxIndices = 48u << 20;  // per accessor and per asset
+constexpr std::uint64_t kMaxVertices = limits::kGltfVertices; // per accessor and per asset
+constexpr std::uint64_t kMaxIndices = limits::kGltfIndices;   // per accessor and per asset
 
 // Bytes per component (0 for a component type glTF accessors may not use).
 int componentSize(int componentType);

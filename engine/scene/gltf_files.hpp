@@ -3,6 +3,7 @@
 // decoding (stb_image, always RGBA8).
 #pragma once
 
+#include "core/limits.hpp"
 #include "scene/mesh_asset.hpp"
 
 #include <cstddef>
@@ -14,8 +15,9 @@
 
 namespace rmsc::gltf {
 
-constexpr int kMaxImageDimension = 8192; // images wider or taller are refused
-constexpr int kMaxJsonDepth = 128;       // deeper JSON nesting is refused before parsing
+constexpr int kMaxImageDimension = limits::kTextureDimension; // images wider or taller are refused
+constexpr int kMaxJsonDepth =
+    limits::kGltfJsonDepth; // deeper JSON nesting is refused before parsing
 
 // Decodes %XX escapes (RFC 3986). Returns nullopt for a '%' not followed by two hex digits or
 // an escape that decodes to a NUL byte.

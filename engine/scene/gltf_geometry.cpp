@@ -1,5 +1,6 @@
 // Baking a glTF scene into triangle primitives (see gltf_geometry.hpp).
 #include "scene/gltf_geometry.hpp"
+#include "scene/gltf_lights.hpp"
 
 #include "scene/gltf_accessors.hpp"
 #include "scene/gltf_validate.hpp"
@@ -8,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -20,11 +22,35 @@ namespace {
 struct SourcePrimitive {
     bool drawable = false; // false for primitives skipped with a warning
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals; // empty when the file has none
-    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec3> normals;       // empty when the file has none
+    std::vector<glm::vec2> uvs;           // TEXCOORD_0, zeros when absent
+    std::vector<glm::vec2> uvs1;          // TEXCOORD_1, zeros when absent
+    std::vector<glm::vec4> tangents;      // empty when the file has none
     std::vector<std::uint32_t> triangles; // 3 indices per triangle
     int material = -1;
+    int tangentUvSet = 0; // the TEXCOORD set of the material's normal texture
 };
+
+// The TEXCOORD sets the textures of `material` read, as a pointer per set ("" = unused).
+std::array<std::string, 2> texCoordUsers(const tinygltf::Model& model, int material) {
+    std::array<std::string, 2> users;
+    if (material < 0 || std::size_t(material) >= model.materials.size()) return users;
+    const tinygltf::Material& m = model.materials[std::size_t(material)];
+    const std::string pointer = "/materials/" + std::to_string(material);
+    const auto use = [&](int index, int texCoord, const std::string& name) {
+        if (index >= 0 && (texCoord == 0 || texCoord == 1) && users[std::size_t(texCoord)].empty())
+            users[std::size_t(texCoord)] = pointer + name;
+    };
+    const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+    use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+        "/pbrMetallicRoughness/baseColorTexture");
+    use(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+        "/pbrMetallicRoughness/metallicRoughnessTexture");
+    use(m.normalTexture.index, m.normalTexture.texCoord, "/normalTexture");
+    use(m.emissiveTexture.index, m.emissiveTexture.texCoord, "/emissiveTexture");
+    use(m.occlusionTexture.index, m.occlusionTexture.texCoord, "/occlusionTexture");
+    return users;
+}
 
 std::string primitivePointer(std::size_t mesh, std::size_t primitive) {
     return "/meshes/" + std::to_string(mesh) + "/primitives/" + std::to_string(primitive);
@@ -111,13 +137,41 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
         for (std::size_t i = 0; i < vertexCount; ++i)
             out.normals[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
     }
-    out.uvs.assign(vertexCount, glm::vec2(0.0f));
-    if (const int uvAccessor = accessorOf("TEXCOORD_0"); uvAccessor >= 0) {
-        if (!readFloatAttribute(model, uvAccessor, 2, true, "TEXCOORD_0 of " + pointer, values,
+    const std::array<std::string, 2> uvUsers = texCoordUsers(model, prim.material);
+    for (int set = 0; set < 2; ++set) {
+        const std::string name = "TEXCOORD_" + std::to_string(set);
+        std::vector<glm::vec2>& uvs = set == 0 ? out.uvs : out.uvs1;
+        uvs.assign(vertexCount, glm::vec2(0.0f));
+        const int uvAccessor = accessorOf(name.c_str());
+        if (uvAccessor < 0) {
+            if (!uvUsers[std::size_t(set)].empty()) {
+                report.error(pointer + "/attributes",
+                             "the material's texture " + uvUsers[std::size_t(set)] + " reads " +
+                                 name + ", expected the primitive to have a " + name +
+                                 " attribute");
+                return false;
+            }
+            continue;
+        }
+        if (!readFloatAttribute(model, uvAccessor, 2, true, name + " of " + pointer, values,
                                 report))
             return false;
         for (std::size_t i = 0; i < vertexCount; ++i)
-            out.uvs[i] = {values[2 * i], values[2 * i + 1]};
+            uvs[i] = {values[2 * i], values[2 * i + 1]};
+    }
+    if (const int tangentAccessor = accessorOf("TANGENT"); tangentAccessor >= 0) {
+        if (!readFloatAttribute(model, tangentAccessor, 4, false, "TANGENT of " + pointer, values,
+                                report))
+            return false;
+        out.tangents.resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i) {
+            out.tangents[i] = {values[4 * i], values[4 * i + 1], values[4 * i + 2],
+                               values[4 * i + 3] < 0.0f ? -1.0f : 1.0f};
+        }
+    }
+    if (prim.material >= 0 && std::size_t(prim.material) < model.materials.size()) {
+        const int set = model.materials[std::size_t(prim.material)].normalTexture.texCoord;
+        out.tangentUvSet = set == 1 ? 1 : 0;
     }
 
     std::vector<std::uint32_t> indices;
@@ -230,8 +284,27 @@ bool bake(const SourcePrimitive& source, const glm::dmat4& world, const std::str
                                                                  : glm::vec3(0.0f, 1.0f, 0.0f);
         }
     }
+    std::vector<glm::vec4> tangents;
+    if (source.tangents.empty()) {
+        tangents = generateTangents(
+            positions, normals, source.tangentUvSet == 1 ? source.uvs1 : source.uvs, out.indices);
+    } else {
+        // Tangents transform like positions (not like normals); a mirroring transform flips
+        // the bitangent's handedness, as it flips the cross product n x t.
+        tangents.resize(source.tangents.size());
+        for (std::size_t i = 0; i < tangents.size(); ++i) {
+            glm::dvec3 t = linear * glm::dvec3(glm::vec3(source.tangents[i]));
+            const glm::dvec3 n(normals[i]);
+            t -= n * glm::dot(n, t);
+            const double length = glm::length(t);
+            const glm::vec3 unit = length > 1e-12 && std::isfinite(length)
+                                       ? glm::vec3(t / length)
+                                       : anyPerpendicular(normals[i]);
+            tangents[i] = glm::vec4(unit, det < 0 ? -source.tangents[i].w : source.tangents[i].w);
+        }
+    }
     for (std::size_t i = 0; i < out.vertices.size(); ++i)
-        out.vertices[i] = {positions[i], normals[i], source.uvs[i]};
+        out.vertices[i] = {positions[i], normals[i], source.uvs[i], source.uvs1[i], tangents[i]};
     asset.primitives.push_back(std::move(out));
     return true;
 }
@@ -257,6 +330,57 @@ std::vector<int> rootNodes(const tinygltf::Model& model) {
 }
 
 } // namespace
+
+glm::vec3 anyPerpendicular(const glm::vec3& n) {
+    const glm::vec3 axis = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    return glm::normalize(glm::cross(glm::cross(n, axis), n));
+}
+
+// Eric Lengyel, "Computing Tangent Space Basis Vectors for an Arbitrary Mesh" (Terathon
+// Software, 2001): per triangle, solve the edge vectors for the directions of +u (sdir) and
+// +v (tdir), sum them per vertex, Gram-Schmidt the tangent against the normal. glTF's v axis
+// points down the image while a normal map's +y points up it, so the bitangent the map expects
+// is -dP/dv (as in the Khronos glTF sample viewer); the handedness w is taken against that.
+std::vector<glm::vec4> generateTangents(const std::vector<glm::vec3>& positions,
+                                        const std::vector<glm::vec3>& normals,
+                                        const std::vector<glm::vec2>& uvs,
+                                        const std::vector<std::uint32_t>& triangles) {
+    const std::size_t count = positions.size();
+    std::vector<glm::dvec3> uDirections(count, glm::dvec3(0.0)),
+        vDirections(count, glm::dvec3(0.0));
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const std::uint32_t i0 = triangles[t], i1 = triangles[t + 1], i2 = triangles[t + 2];
+        if (i0 >= count || i1 >= count || i2 >= count || i0 >= uvs.size() || i1 >= uvs.size() ||
+            i2 >= uvs.size())
+            continue;
+        const glm::dvec3 e1 = glm::dvec3(positions[i1]) - glm::dvec3(positions[i0]);
+        const glm::dvec3 e2 = glm::dvec3(positions[i2]) - glm::dvec3(positions[i0]);
+        const glm::dvec2 d1 = glm::dvec2(uvs[i1]) - glm::dvec2(uvs[i0]);
+        const glm::dvec2 d2 = glm::dvec2(uvs[i2]) - glm::dvec2(uvs[i0]);
+        const double det = d1.x * d2.y - d2.x * d1.y;
+        if (!(std::abs(det) > 1e-20) || !std::isfinite(det)) continue; // no UV area
+        const glm::dvec3 uDir = (e1 * d2.y - e2 * d1.y) / det;
+        const glm::dvec3 vDir = (e2 * d1.x - e1 * d2.x) / det;
+        for (std::uint32_t i : {i0, i1, i2}) {
+            uDirections[i] += uDir;
+            vDirections[i] += vDir;
+        }
+    }
+    std::vector<glm::vec4> tangents(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 n(normals[i]);
+        glm::dvec3 t = uDirections[i] - n * glm::dot(n, uDirections[i]);
+        const double length = glm::length(t);
+        if (!(length > 1e-12) || !std::isfinite(length)) {
+            tangents[i] = glm::vec4(anyPerpendicular(normals[i]), 1.0f);
+            continue;
+        }
+        t /= length;
+        const double handedness = glm::dot(glm::cross(n, t), -vDirections[i]);
+        tangents[i] = glm::vec4(glm::vec3(t), handedness < 0.0 ? -1.0f : 1.0f);
+    }
+    return tangents;
+}
 
 std::vector<glm::vec3> smoothNormals(const std::vector<glm::vec3>& positions,
                                      const std::vector<std::uint32_t>& triangles) {
@@ -309,6 +433,7 @@ bool buildGeometry(const tinygltf::Model& model, Reporter& report, MeshAsset& as
         const auto local = localMatrix(node, pointer, report);
         if (!local) return false;
         const glm::dmat4 world = visit.parentWorld * *local;
+        addNodeLight(model, node, world, pointer, report, asset);
         if (node.mesh >= 0) {
             const std::size_t m = std::size_t(node.mesh);
             if (m >= model.meshes.size()) {

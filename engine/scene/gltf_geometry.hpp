@@ -21,4 +21,15 @@ bool buildGeometry(const tinygltf::Model& model, Reporter& report, MeshAsset& as
 std::vector<glm::vec3> smoothNormals(const std::vector<glm::vec3>& positions,
                                      const std::vector<std::uint32_t>& triangles);
 
+// Per-vertex tangents from UVs (Lengyel's method; see the .cpp), xyz orthogonal to the normal,
+// w = +-1 so that cross(normal, tangent) * w points up the image (towards -v). Vertices
+// without UV area get any perpendicular tangent.
+std::vector<glm::vec4> generateTangents(const std::vector<glm::vec3>& positions,
+                                        const std::vector<glm::vec3>& normals,
+                                        const std::vector<glm::vec2>& uvs,
+                                        const std::vector<std::uint32_t>& triangles);
+
+// A unit vector perpendicular to the unit vector n.
+glm::vec3 anyPerpendicular(const glm::vec3& n);
+
 } // namespace rmsc::gltf

@@ -178,10 +178,45 @@ bool loadExternalImages(tinygltf::Model& model, LoadContext& context) {
     return ok;
 }
 
+// One textureInfo of a material: resolves texture -> image and sampler. Indices were range
+// checked on the JSON and by validateModel; what is left here is what rmsc cannot use.
+MeshTextureRef convertTexture(const tinygltf::Model& model, int index, int texCoord,
+                              const std::string& pointer, Reporter& report) {
+    MeshTextureRef out;
+    if (index < 0) return out;
+    if (std::size_t(index) >= model.textures.size()) {
+        report.error(pointer + "/index", "refers to a texture that does not exist");
+        return out;
+    }
+    const tinygltf::Texture& texture = model.textures[std::size_t(index)];
+    if (texture.source < 0 || std::size_t(texture.source) >= model.images.size()) {
+        report.warning("/textures/" + std::to_string(index),
+                       "texture has no image source rmsc can use (PNG or JPEG); ignored");
+        return out;
+    }
+    if (texCoord != 0 && texCoord != 1) {
+        report.warning(pointer + "/texCoord", "TEXCOORD_" + std::to_string(texCoord) +
+                                                  " is not supported (only TEXCOORD_0 and "
+                                                  "TEXCOORD_1); the texture is ignored");
+        return out;
+    }
+    out.image = texture.source;
+    out.texCoord = texCoord;
+    if (texture.sampler >= 0 && std::size_t(texture.sampler) < model.samplers.size()) {
+        const tinygltf::Sampler& sampler = model.samplers[std::size_t(texture.sampler)];
+        if (sampler.magFilter >= 0) out.sampler.magFilter = sampler.magFilter;
+        if (sampler.minFilter >= 0) out.sampler.minFilter = sampler.minFilter;
+        out.sampler.wrapS = sampler.wrapS;
+        out.sampler.wrapT = sampler.wrapT;
+    }
+    return out;
+}
+
 void convertMaterials(const tinygltf::Model& model, Reporter& report, MeshAsset& asset) {
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+        const std::string pointer = "/materials/" + std::to_string(i);
         MeshMaterial out;
         out.name = m.name;
         out.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
@@ -191,20 +226,27 @@ void convertMaterials(const tinygltf::Model& model, Reporter& report, MeshAsset&
         out.emissiveFactor =
             glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
         out.doubleSided = m.doubleSided;
-        const std::string pointer =
-            "/materials/" + std::to_string(i) + "/pbrMetallicRoughness/baseColorTexture";
-        const int texture = pbr.baseColorTexture.index;
-        if (texture >= 0 && std::size_t(texture) < model.textures.size()) {
-            const int source = model.textures[std::size_t(texture)].source;
-            if (source >= 0 && std::size_t(source) < model.images.size())
-                out.baseColorTexture = source;
-            else
-                report.warning("/textures/" + std::to_string(texture),
-                               "texture has no image source rmsc can use; ignored");
-            if (pbr.baseColorTexture.texCoord != 0)
-                report.warning(pointer + "/texCoord",
-                               "only TEXCOORD_0 is supported; the texture uses TEXCOORD_0");
-        }
+        out.baseColorTexture =
+            convertTexture(model, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                           pointer + "/pbrMetallicRoughness/baseColorTexture", report);
+        out.metallicRoughnessTexture = convertTexture(
+            model, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+            pointer + "/pbrMetallicRoughness/metallicRoughnessTexture", report);
+        out.normalTexture = convertTexture(model, m.normalTexture.index, m.normalTexture.texCoord,
+                                           pointer + "/normalTexture", report);
+        out.normalScale = float(m.normalTexture.scale);
+        out.emissiveTexture =
+            convertTexture(model, m.emissiveTexture.index, m.emissiveTexture.texCoord,
+                           pointer + "/emissiveTexture", report);
+        out.occlusionTexture =
+            convertTexture(model, m.occlusionTexture.index, m.occlusionTexture.texCoord,
+                           pointer + "/occlusionTexture", report);
+        out.occlusionStrength = float(m.occlusionTexture.strength);
+        // KHR_materials_emissive_strength; the value was checked by validateModel.
+        if (const auto ext = m.extensions.find("KHR_materials_emissive_strength");
+            ext != m.extensions.end() && ext->second.Has("emissiveStrength") &&
+            ext->second.Get("emissiveStrength").IsNumber())
+            out.emissiveStrength = float(ext->second.Get("emissiveStrength").GetNumberAsDouble());
         asset.materials.push_back(std::move(out));
     }
 }

@@ -4,6 +4,8 @@
 #include "scene/gltf_accessors.hpp"
 
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 namespace rmsc::gltf {
@@ -151,6 +153,46 @@ void checkMaterials(const tinygltf::Model& model, Reporter& report) {
                          "expected a number from 0 to 1");
         if (m.emissiveFactor.size() != 3 || !allFinite(m.emissiveFactor))
             report.error(pointer + "/emissiveFactor", "expected 3 finite numbers");
+        if (m.normalTexture.index >= 0 && !std::isfinite(m.normalTexture.scale))
+            report.error(pointer + "/normalTexture/scale", "expected a finite number");
+        if (m.occlusionTexture.index >= 0 &&
+            !(m.occlusionTexture.strength >= 0 && m.occlusionTexture.strength <= 1))
+            report.error(pointer + "/occlusionTexture/strength", "expected a number from 0 to 1");
+        if (const auto ext = m.extensions.find("KHR_materials_emissive_strength");
+            ext != m.extensions.end() && ext->second.Has("emissiveStrength")) {
+            const tinygltf::Value& strength = ext->second.Get("emissiveStrength");
+            if (!strength.IsNumber() || !std::isfinite(strength.GetNumberAsDouble()) ||
+                strength.GetNumberAsDouble() < 0)
+                report.error(pointer + "/extensions/KHR_materials_emissive_strength/"
+                                       "emissiveStrength",
+                             "expected a finite number >= 0");
+        }
+    }
+}
+
+// Sampler filters and wrap modes must be the GL enums glTF allows (glTF 2.0 section 5.26).
+void checkSamplers(const tinygltf::Model& model, Reporter& report) {
+    const auto oneOf = [](int value, std::initializer_list<int> allowed) {
+        for (int a : allowed)
+            if (value == a) return true;
+        return false;
+    };
+    for (std::size_t i = 0; i < model.samplers.size(); ++i) {
+        const tinygltf::Sampler& s = model.samplers[i];
+        const std::string pointer = "/samplers/" + std::to_string(i);
+        if (s.magFilter != -1 && !oneOf(s.magFilter, {9728, 9729}))
+            report.error(pointer + "/magFilter", "expected 9728 (NEAREST) or 9729 (LINEAR), got " +
+                                                     std::to_string(s.magFilter));
+        if (s.minFilter != -1 && !oneOf(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}))
+            report.error(pointer + "/minFilter",
+                         "expected 9728, 9729 or 9984 to 9987 (a GL minification filter), got " +
+                             std::to_string(s.minFilter));
+        for (const auto& [value, name] : {std::pair{s.wrapS, "wrapS"}, {s.wrapT, "wrapT"}})
+            if (!oneOf(value, {33071, 33648, 10497}))
+                report.error(pointer + "/" + name,
+                             "expected 33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT) or 10497 "
+                             "(REPEAT), got " +
+                                 std::to_string(value));
     }
 }
 
@@ -180,6 +222,7 @@ bool validateModel(const tinygltf::Model& model, Reporter& report) {
     checkNodes(model, report);
     checkHierarchy(model, report);
     checkMaterials(model, report);
+    checkSamplers(model, report);
     checkPrimitiveModes(model, report);
     return report.errors == errorsBefore;
 }

@@ -4,12 +4,13 @@
 // checked on the JSON already (gltf_json_checks.hpp).
 #pragma once
 
+#include "core/limits.hpp"
 #include "scene/gltf_report.hpp"
 #include "scene/gltf_tinygltf.hpp"
 
 namespace rmsc::gltf {
 
-constexpr int kMaxNodeDepth = 64;
+constexpr int kMaxNodeDepth = limits::kGltfNodeDepth;
 
 // Reports every problem found; returns true when there were none.
 bool validateModel(const tinygltf::Model& model, Reporter& report);

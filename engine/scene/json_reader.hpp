@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/diagnostics.hpp"
+#include "core/limits.hpp"
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -21,7 +22,8 @@ namespace rmsc {
 
 using Json = nlohmann::ordered_json;
 
-constexpr int kMaxJsonDepth = 256; // arrays and objects nested deeper than this are refused
+constexpr int kMaxJsonDepth =
+    limits::kSceneJsonDepth; // arrays and objects nested deeper than this are refused
 
 // Where diagnostics for one file go.
 struct JsonReader {

@@ -5,6 +5,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/file_source.hpp"
+#include "scene/scene.hpp"
 
 #include <glm/glm.hpp>
 
@@ -20,7 +21,9 @@ namespace rmsc {
 struct MeshVertex {
     glm::vec3 position;
     glm::vec3 normal;
-    glm::vec2 uv;
+    glm::vec2 uv;      // TEXCOORD_0, (0, 0) when absent
+    glm::vec2 uv1;     // TEXCOORD_1, (0, 0) when absent
+    glm::vec4 tangent; // xyz = unit tangent (direction of +u), w = +-1 bitangent sign
 };
 
 // An 8-bit RGBA image, rows top to bottom.
@@ -30,13 +33,40 @@ struct Image {
     std::vector<std::uint8_t> rgba;
 };
 
+// How a glTF texture is sampled: the glTF sampler's GL enums (glTF 2.0 section 5.26), with the
+// defaults for a texture without a sampler (repeat, linear with linear mipmaps).
+struct MeshSampler {
+    int magFilter = 0x2601; // GL_LINEAR
+    int minFilter = 0x2703; // GL_LINEAR_MIPMAP_LINEAR
+    int wrapS = 0x2901;     // GL_REPEAT
+    int wrapT = 0x2901;
+};
+
+// One texture slot of a material (a glTF textureInfo): the image, its sampler and the
+// TEXCOORD set it reads. image = -1: the slot is empty.
+struct MeshTextureRef {
+    int image = -1;   // index into MeshAsset::images
+    int texCoord = 0; // 0 = TEXCOORD_0, 1 = TEXCOORD_1
+    MeshSampler sampler;
+
+    bool present() const { return image >= 0; }
+};
+
+// A glTF metallic-roughness material with every texture of the core specification.
 struct MeshMaterial {
     std::string name;
     glm::vec4 baseColorFactor{1.0f}; // linear RGBA
     float metallicFactor = 1.0f;
     float roughnessFactor = 1.0f;
     glm::vec3 emissiveFactor{0.0f};
-    int baseColorTexture = -1; // index into MeshAsset::images, sRGB
+    float emissiveStrength = 1.0f;   // KHR_materials_emissive_strength, multiplies emissiveFactor
+    MeshTextureRef baseColorTexture; // sRGB, multiplies baseColorFactor
+    MeshTextureRef metallicRoughnessTexture; // linear: B = metallic, G = roughness
+    MeshTextureRef normalTexture;            // linear, tangent space
+    float normalScale = 1.0f;                // normalTexture.scale: scales the map's x and y
+    MeshTextureRef emissiveTexture;          // sRGB, multiplies the emissive factor
+    MeshTextureRef occlusionTexture;         // linear: R = ambient occlusion
+    float occlusionStrength = 1.0f;          // occlusionTexture.strength: 0 = no effect
     bool doubleSided = false;
 };
 
@@ -52,6 +82,7 @@ struct MeshAsset {
     std::vector<MeshPrimitive> primitives;
     std::vector<MeshMaterial> materials;
     std::vector<Image> images;
+    std::vector<Light> lights; // KHR_lights_punctual lights, in the asset's root space
     glm::vec3 boundsMin{0.0f}; // axis-aligned bounds of all primitives
     glm::vec3 boundsMax{0.0f};
 };

@@ -5,8 +5,10 @@
 
 #include "core/diagnostics.hpp"
 #include "core/file_source.hpp"
+#include "scene/material_textures.hpp"
 #include "scene/mesh_asset.hpp"
 #include "scene/scene.hpp"
+#include "scene/sky_image.hpp"
 #include "sdf/program.hpp"
 
 #include <filesystem>
@@ -21,6 +23,12 @@ struct PreparedScene {
     std::vector<int> instanceAsset;  // per scene.meshes: index into assets
     SdfProgram sdf;                  // empty when the scene has no SDF tree
     std::vector<Material> materials; // scene.materials + the default material
+    std::vector<TextureImage>
+        textures;      // images of the materials' textures (MaterialTexture::image)
+    SkyImage skyImage; // the image sky's pixels (empty unless it has one)
+    // What lights the scene: scene.lights, then the glTF KHR_lights_punctual lights of each mesh
+    // instance (placed by the instance's transform); at most limits::kLights in all.
+    std::vector<Light> lights;
 };
 
 // The material used where none is named.
@@ -30,6 +38,11 @@ Material defaultMaterial();
 // `files`; errors name the mesh instance's JSON pointer and the glTF element.
 std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
                                           Diagnostics& diagnostics);
+
+// scene.lights followed by the lights of the glTF assets placed by their instances; errors at
+// the instance that goes over limits::kLights.
+std::vector<Light> gatherLights(const Scene& scene, const std::vector<MeshAsset>& assets,
+                                const std::vector<int>& instanceAsset, Diagnostics& diagnostics);
 
 // Opens what the user named: a scene file (.json), a glTF model (.gltf / .glb, opened as a
 // scene with a default light and a framing camera), or, for an empty path, the built-in demo.

@@ -3,7 +3,10 @@
 // JSON pointer and carrying on, so one run shows everything wrong with a file.
 #include "scene/scene_json.hpp"
 
+#include "core/limits.hpp"
 #include "scene/json_reader.hpp"
+#include "scene/lighting_json.hpp"
+#include "scene/material_texture_json.hpp"
 #include "scene/transform_json.hpp"
 
 #include <algorithm>
@@ -12,39 +15,47 @@
 namespace rmsc {
 namespace {
 
-constexpr int kMaxLights = 64;
-constexpr int kMaxSdfGroupDepth = 128;
-constexpr int kMaxSdfNodes = 100000;
+constexpr int kMaxLights = limits::kLights;
+constexpr int kMaxSdfGroupDepth = limits::kSdfGroupDepth;
+constexpr int kMaxSdfNodes = limits::kSdfNodes;
 
-const std::vector<std::string> kRootKeys = {"version", "camera", "render", "materials",
-                                            "lights",  "meshes", "sdf"};
+const std::vector<std::string> kRootKeys = {"version", "camera", "render",      "materials",
+                                            "lights",  "meshes", "environment", "sdf"};
 const std::vector<std::string> kCameraKeys = {"position", "target", "up", "fov", "near", "far"};
 const std::vector<std::string> kRenderKeys = {"max_steps",  "max_distance", "surface_epsilon",
                                               "background", "ambient",      "exposure"};
 const std::vector<std::string> kMaterialKeys = {"base_color", "metallic", "roughness", "emissive"};
-const std::vector<std::string> kLightKeys = {"type", "name", "direction", "color", "intensity"};
-const std::vector<std::string> kLightTypes = {"directional"};
 const std::vector<std::string> kMeshKeys = {"name",       "file",  "position", "rotation",
                                             "quaternion", "scale", "material"};
-const std::vector<std::string> kGroupKeys = {"name",       "op",       "smoothness",
-                                             "children",   "position", "rotation",
-                                             "quaternion", "scale",    "material"};
-const std::vector<std::string> kShapeCommonKeys = {"name",       "shape", "position", "rotation",
-                                                   "quaternion", "scale", "material"};
+const std::vector<std::string> kGroupKeys = {"name",     "op",       "smoothness", "blend",
+                                             "children", "position", "rotation",   "quaternion",
+                                             "scale",    "material", "modifiers",  "cut"};
+const std::vector<std::string> kShapeCommonKeys = {
+    "name", "shape", "position", "rotation", "quaternion", "scale", "material", "modifiers", "cut"};
 
 struct OpName {
     SdfOp op;
     const char* name;
-    bool smooth;
+    bool smooth; // needs "smoothness" (smooth: blend width; chamfer, round: radius)
+    bool blend;  // accepts "blend" (the smooth-minimum curve)
 };
+// In SdfOp order.
 constexpr OpName kOps[] = {
-    {SdfOp::Union, "union", false},
-    {SdfOp::Subtraction, "subtraction", false},
-    {SdfOp::Intersection, "intersection", false},
-    {SdfOp::SmoothUnion, "smooth_union", true},
-    {SdfOp::SmoothSubtraction, "smooth_subtraction", true},
-    {SdfOp::SmoothIntersection, "smooth_intersection", true},
+    {SdfOp::Union, "union", false, false},
+    {SdfOp::Subtraction, "subtraction", false, false},
+    {SdfOp::Intersection, "intersection", false, false},
+    {SdfOp::SmoothUnion, "smooth_union", true, true},
+    {SdfOp::SmoothSubtraction, "smooth_subtraction", true, true},
+    {SdfOp::SmoothIntersection, "smooth_intersection", true, true},
+    {SdfOp::Xor, "xor", false, false},
+    {SdfOp::ChamferUnion, "chamfer_union", true, false},
+    {SdfOp::ChamferSubtraction, "chamfer_subtraction", true, false},
+    {SdfOp::ChamferIntersection, "chamfer_intersection", true, false},
+    {SdfOp::RoundUnion, "round_union", true, false},
+    {SdfOp::RoundSubtraction, "round_subtraction", true, false},
+    {SdfOp::RoundIntersection, "round_intersection", true, false},
 };
+const std::vector<std::string> kBlendNames = {"polynomial", "circular"}; // SmoothBlend order
 
 // Everything the section readers share.
 struct SceneReader {
@@ -122,8 +133,12 @@ void readCamera(const SceneReader& r, const Json& object, Camera& camera) {
 void readRender(const SceneReader& r, const Json& object, RenderSettings& render) {
     const std::string pointer = "/render";
     if (!expectObject(r.json, object, pointer)) return;
-    warnUnknownKeys(r.json, object, pointer, kRenderKeys);
-    readIntegerField(r.json, object, pointer, "max_steps", &render.maxSteps, 1, 4096);
+    std::vector<std::string> renderKeys = kRenderKeys;
+    renderKeys.insert(renderKeys.end(), kRenderLightingKeys.begin(), kRenderLightingKeys.end());
+    warnUnknownKeys(r.json, object, pointer, renderKeys);
+    readRenderLighting(r.json, object, render);
+    readIntegerField(r.json, object, pointer, "max_steps", &render.maxSteps, 1,
+                     limits::kMarchSteps);
     readNumberField(r.json, object, pointer, "max_distance", &render.maxDistance,
                     NumberRange::openClosed(0.0, 1e5));
     readNumberField(r.json, object, pointer, "surface_epsilon", &render.surfaceEpsilon,
@@ -136,6 +151,12 @@ void readRender(const SceneReader& r, const Json& object, RenderSettings& render
 void readMaterials(SceneReader& r, const Json& object, std::vector<Material>& materials) {
     const std::string pointer = "/materials";
     if (!expectObject(r.json, object, pointer)) return;
+    if (object.size() > std::size_t(limits::kMaterials)) {
+        r.json.error(pointer, "the scene has " + std::to_string(object.size()) +
+                                  " materials; at most " + std::to_string(limits::kMaterials) +
+                                  " are supported (the limit)");
+        return;
+    }
     for (const auto& [name, value] : object.items()) {
         const std::string materialPointer = childPointer(pointer, name);
         // Known even when its fields are wrong, so references to it do not add errors.
@@ -144,7 +165,10 @@ void readMaterials(SceneReader& r, const Json& object, std::vector<Material>& ma
         material.name = name;
         if (name.empty()) r.json.error(materialPointer, "a material name must not be empty");
         if (expectObject(r.json, value, materialPointer)) {
-            warnUnknownKeys(r.json, value, materialPointer, kMaterialKeys);
+            std::vector<std::string> known = kMaterialKeys;
+            known.insert(known.end(), materialTextureKeys().begin(), materialTextureKeys().end());
+            warnUnknownKeys(r.json, value, materialPointer, known);
+            readMaterialTextures(r.json, value, materialPointer, r.sceneFolder, material);
             readColorField(r.json, value, materialPointer, "base_color", &material.baseColor);
             readNumberField(r.json, value, materialPointer, "metallic", &material.metallic,
                             NumberRange::closed(0.0, 1.0));
@@ -171,33 +195,8 @@ void readLights(const SceneReader& r, const Json& array, std::vector<Light>& lig
         const Json& object = array[i];
         const std::string lightPointer = childPointer(pointer, i);
         if (!expectObject(r.json, object, lightPointer)) continue;
-        warnUnknownKeys(r.json, object, lightPointer, kLightKeys);
         Light light;
-        if (const Json* type = findMember(object, "type")) {
-            const std::string typePointer = childPointer(lightPointer, "type");
-            if (const auto name = readString(r.json, *type, typePointer)) {
-                if (*name == "directional") {
-                    light.type = LightType::Directional;
-                } else {
-                    r.json.error(typePointer, "unknown light type \"" + *name +
-                                                  "\"; known types: " + quotedList(kLightTypes));
-                }
-            }
-        } else {
-            r.json.error(lightPointer, "missing \"type\"; known types: " + quotedList(kLightTypes));
-        }
-        readStringField(r.json, object, lightPointer, "name", &light.name);
-        if (readVec3Field(r.json, object, lightPointer, "direction", &light.direction)) {
-            if (light.direction == glm::vec3(0.0f)) {
-                r.json.error(childPointer(lightPointer, "direction"),
-                             "expected a non-zero direction, got [0, 0, 0]");
-            } else {
-                light.direction = normalizedForStorage(light.direction);
-            }
-        }
-        readColorField(r.json, object, lightPointer, "color", &light.color);
-        readNumberField(r.json, object, lightPointer, "intensity", &light.intensity,
-                        NumberRange::atLeast(0.0));
+        readLight(r.json, object, lightPointer, light);
         lights.push_back(std::move(light));
     }
 }
@@ -213,6 +212,12 @@ void readMeshes(const SceneReader& r, const Json& array, std::vector<MeshInstanc
     const std::string pointer = "/meshes";
     if (!array.is_array()) {
         r.json.error(pointer, "expected an array of meshes, got " + jsonTypeName(array));
+        return;
+    }
+    if (array.size() > std::size_t(limits::kMeshInstances)) {
+        r.json.error(pointer, "the scene has " + std::to_string(array.size()) +
+                                  " meshes; at most " + std::to_string(limits::kMeshInstances) +
+                                  " are supported (the limit)");
         return;
     }
     for (std::size_t i = 0; i < array.size(); ++i) {
@@ -267,12 +272,350 @@ void readShapeParams(SceneReader& r, const Json& object, const std::string& poin
     }
 }
 
+// Modifier types by JSON name, in SdfModifierType order, with the keys each accepts.
+const std::vector<std::string> kModifierNames = {"repeat", "mirror", "polar", "elongate", "twist",
+                                                 "bend",   "round",  "onion", "displace"};
+const std::vector<std::vector<std::string>> kModifierKeys = {
+    {"type", "period", "count", "neighbours"},
+    {"type", "axes"},
+    {"type", "count", "axis"},
+    {"type", "half_extents"},
+    {"type", "amount", "radius"},
+    {"type", "amount", "radius"},
+    {"type", "radius"},
+    {"type", "thickness"},
+    {"type", "amplitude", "frequency"}};
+constexpr int kMaxModifiers = 16;     // per node
+constexpr int kMaxPolarCopies = 1024; // polar repetition
+constexpr int kMaxRepeatCount = 1 << 20;
+constexpr int kMaxPolygonPoints = 256;
+constexpr float kMaxLength = 1.0e4f; // lengths, as the catalogue's
+
+const std::vector<std::string> kProfileTypes = {"circle", "rectangle", "rounded_rectangle",
+                                                "polygon"};
+const std::vector<std::vector<std::string>> kProfileKeys = {
+    {"type", "radius"}, {"type", "half_size"}, {"type", "half_size", "radius"}, {"type", "points"}};
+
+// A required number field: an error at the object when it is missing.
+bool readRequiredNumber(const SceneReader& r, const Json& object, const std::string& pointer,
+                        std::string_view key, float* out, NumberRange range,
+                        const std::string& what) {
+    if (!findMember(object, key)) {
+        r.json.error(pointer, "missing \"" + std::string(key) + "\" (" + what + ")");
+        return false;
+    }
+    return readNumberField(r.json, object, pointer, key, out, range);
+}
+
+// "x", "y" or "z" to 0, 1, 2.
+std::optional<int> readAxisName(const SceneReader& r, const Json& value,
+                                const std::string& pointer) {
+    const auto name = readString(r.json, value, pointer);
+    if (!name) return std::nullopt;
+    if (*name == "x") return 0;
+    if (*name == "y") return 1;
+    if (*name == "z") return 2;
+    r.json.error(pointer, "expected an axis \"x\", \"y\" or \"z\", got \"" + *name + "\"");
+    return std::nullopt;
+}
+
+void readRepeat(const SceneReader& r, const Json& object, const std::string& pointer,
+                SdfModifier& m) {
+    const Json* period = findMember(object, "period");
+    if (!period) {
+        r.json.error(pointer, "missing \"period\" (the cell size along x, y, z; 0 = not "
+                              "repeated on that axis)");
+        return;
+    }
+    const std::string periodPointer = childPointer(pointer, "period");
+    float v[3];
+    NumberRange periodRange = NumberRange::closed(0.0, kMaxLength);
+    periodRange.noun = "a period";
+    const bool periodOk = readNumbers(r.json, *period, periodPointer, 3, v, periodRange);
+    if (periodOk) {
+        m.vector = glm::vec3(v[0], v[1], v[2]);
+        if (m.vector == glm::vec3(0.0f))
+            r.json.error(periodPointer, "the period is 0 on every axis, so nothing repeats; "
+                                        "give a period > 0 on at least one axis");
+    }
+    if (const Json* count = findMember(object, "count")) {
+        const std::string countPointer = childPointer(pointer, "count");
+        if (!count->is_array() || count->size() != 3) {
+            r.json.error(countPointer,
+                         "expected 3 integers (copies along x, y, z; 0 = "
+                         "unlimited), got " +
+                             jsonTypeName(*count) +
+                             (count->is_array()
+                                  ? " of " + std::to_string(count->size()) + " elements"
+                                  : ""));
+        } else {
+            for (int axis = 0; axis < 3; ++axis) {
+                const std::string elementPointer = childPointer(countPointer, std::size_t(axis));
+                const auto n = readInteger(r.json, (*count)[std::size_t(axis)], elementPointer, 0,
+                                           kMaxRepeatCount);
+                if (!n) continue;
+                m.counts[axis] = *n;
+                if (periodOk && *n > 1 && !(m.vector[axis] > 0.0f))
+                    r.json.error(elementPointer, std::string("count ") + std::to_string(*n) +
+                                                     " along " + "xyz"[axis] +
+                                                     " needs a period > 0 on that axis, got " +
+                                                     formatNumber(m.vector[axis]));
+            }
+        }
+    }
+    if (const Json* neighbours = findMember(object, "neighbours")) {
+        if (neighbours->is_boolean()) {
+            m.neighbours = neighbours->get<bool>();
+        } else {
+            r.json.error(childPointer(pointer, "neighbours"),
+                         "expected true or false, got " + jsonTypeName(*neighbours));
+        }
+    }
+}
+
+void readModifier(const SceneReader& r, const Json& object, const std::string& pointer,
+                  SdfModifier& m) {
+    m.pointer = pointer;
+    const Json* type = findMember(object, "type");
+    if (!type) {
+        r.json.error(pointer, "missing \"type\"; known modifiers: " + quotedList(kModifierNames));
+        return;
+    }
+    const std::string typePointer = childPointer(pointer, "type");
+    const auto name = readString(r.json, *type, typePointer);
+    if (!name) return;
+    const auto it = std::find(kModifierNames.begin(), kModifierNames.end(), *name);
+    if (it == kModifierNames.end()) {
+        r.json.error(typePointer, "unknown modifier \"" + *name + "\"; known modifiers: " +
+                                      quotedList(sortedByDistance(*name, kModifierNames)));
+        return;
+    }
+    const std::size_t index = std::size_t(it - kModifierNames.begin());
+    m.type = SdfModifierType(index);
+    warnUnknownKeys(r.json, object, pointer, kModifierKeys[index]);
+    switch (m.type) {
+    case SdfModifierType::Repeat:
+        readRepeat(r, object, pointer, m);
+        break;
+    case SdfModifierType::Mirror: {
+        const Json* axes = findMember(object, "axes");
+        if (!axes) {
+            r.json.error(pointer, "missing \"axes\" (the axes to mirror, e.g. \"x\" or \"xz\")");
+            break;
+        }
+        const std::string axesPointer = childPointer(pointer, "axes");
+        const auto text = readString(r.json, *axes, axesPointer);
+        if (!text) break;
+        bool ok = !text->empty();
+        for (char c : *text) {
+            const int axis = c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1;
+            if (axis < 0 || m.axes[axis]) ok = false;
+            if (axis >= 0) m.axes[axis] = true;
+        }
+        if (!ok)
+            r.json.error(axesPointer, "expected one to three different axes among \"x\", "
+                                      "\"y\", \"z\" (e.g. \"xz\"), got \"" +
+                                          *text + "\"");
+        break;
+    }
+    case SdfModifierType::Polar: {
+        if (const Json* count = findMember(object, "count")) {
+            if (const auto n =
+                    readInteger(r.json, *count, childPointer(pointer, "count"), 1, kMaxPolarCopies))
+                m.count = *n;
+        } else {
+            r.json.error(pointer, "missing \"count\" (the number of copies around the axis)");
+        }
+        if (const Json* axis = findMember(object, "axis"))
+            if (const auto a = readAxisName(r, *axis, childPointer(pointer, "axis"))) m.axis = *a;
+        break;
+    }
+    case SdfModifierType::Elongate: {
+        const Json* extents = findMember(object, "half_extents");
+        if (!extents) {
+            r.json.error(pointer, "missing \"half_extents\" (half the stretch along x, y, z)");
+            break;
+        }
+        float v[3];
+        if (readNumbers(r.json, *extents, childPointer(pointer, "half_extents"), 3, v,
+                        NumberRange::closed(0.0, kMaxLength)))
+            m.vector = glm::vec3(v[0], v[1], v[2]);
+        break;
+    }
+    case SdfModifierType::Twist:
+    case SdfModifierType::Bend:
+        readRequiredNumber(r, object, pointer, "amount", &m.amount,
+                           NumberRange::closed(-3600.0, 3600.0), "degrees per unit length");
+        m.radius = 1.0f;
+        readNumberField(r.json, object, pointer, "radius", &m.radius,
+                        NumberRange::openClosed(0.0, kMaxLength));
+        break;
+    case SdfModifierType::Round:
+        readRequiredNumber(r, object, pointer, "radius", &m.radius,
+                           NumberRange::closed(0.0, kMaxLength), "the rounding radius");
+        break;
+    case SdfModifierType::Onion:
+        readRequiredNumber(r, object, pointer, "thickness", &m.thickness,
+                           NumberRange::openClosed(0.0, kMaxLength), "the shell thickness");
+        break;
+    case SdfModifierType::Displace:
+        readRequiredNumber(r, object, pointer, "amplitude", &m.amount,
+                           NumberRange::closed(0.0, kMaxLength), "the noise amplitude");
+        readNumberField(r.json, object, pointer, "frequency", &m.frequency,
+                        NumberRange::openClosed(0.0, 1.0e3));
+        break;
+    }
+}
+
+void readModifiers(const SceneReader& r, const Json& object, const std::string& pointer,
+                   SdfNode& node) {
+    const Json* modifiers = findMember(object, "modifiers");
+    if (!modifiers) return;
+    const std::string listPointer = childPointer(pointer, "modifiers");
+    if (!modifiers->is_array()) {
+        r.json.error(listPointer,
+                     "expected an array of modifiers, got " + jsonTypeName(*modifiers));
+        return;
+    }
+    if (modifiers->size() > std::size_t(kMaxModifiers)) {
+        r.json.error(listPointer, "a node has " + std::to_string(modifiers->size()) +
+                                      " modifiers; at most " + std::to_string(kMaxModifiers) +
+                                      " are supported (the limit)");
+        return;
+    }
+    for (std::size_t i = 0; i < modifiers->size(); ++i) {
+        const std::string modifierPointer = childPointer(listPointer, i);
+        if (!expectObject(r.json, (*modifiers)[i], modifierPointer)) continue;
+        SdfModifier m;
+        readModifier(r, (*modifiers)[i], modifierPointer, m);
+        node.modifiers.push_back(m);
+    }
+}
+
+void readPolygonPoints(const SceneReader& r, const Json& object, const std::string& pointer,
+                       SdfProfile& profile) {
+    const Json* points = findMember(object, "points");
+    if (!points) {
+        r.json.error(pointer, "missing \"points\" (the polygon's corners, [[x, y], ...])");
+        return;
+    }
+    const std::string pointsPointer = childPointer(pointer, "points");
+    if (!points->is_array()) {
+        r.json.error(pointsPointer,
+                     "expected an array of [x, y] points, got " + jsonTypeName(*points));
+        return;
+    }
+    if (points->size() < 3 || points->size() > std::size_t(kMaxPolygonPoints)) {
+        r.json.error(pointsPointer, "a polygon needs 3 to " + std::to_string(kMaxPolygonPoints) +
+                                        " points, got " + std::to_string(points->size()));
+        return;
+    }
+    bool ok = true;
+    for (std::size_t i = 0; i < points->size(); ++i) {
+        float v[2];
+        if (readNumbers(r.json, (*points)[i], childPointer(pointsPointer, i), 2, v,
+                        NumberRange::closed(-kMaxLength, kMaxLength))) {
+            profile.points.emplace_back(v[0], v[1]);
+        } else {
+            ok = false;
+        }
+    }
+    if (!ok) return;
+    // Shoelace formula: twice the signed area.
+    double area = 0.0;
+    for (std::size_t i = 0; i < profile.points.size(); ++i) {
+        const glm::vec2 a = profile.points[i];
+        const glm::vec2 b = profile.points[(i + 1) % profile.points.size()];
+        area += double(a.x) * b.y - double(b.x) * a.y;
+    }
+    if (!(std::abs(area) > 1e-12))
+        r.json.error(pointsPointer, "the polygon's points enclose no area (they are collinear "
+                                    "or repeated)");
+}
+
+void readProfile(const SceneReader& r, const Json& object, const std::string& pointer,
+                 SdfProfile& profile) {
+    if (!expectObject(r.json, object, pointer)) return;
+    const Json* type = findMember(object, "type");
+    if (!type) {
+        r.json.error(pointer, "missing \"type\"; profile types: " + quotedList(kProfileTypes));
+        return;
+    }
+    const std::string typePointer = childPointer(pointer, "type");
+    const auto name = readString(r.json, *type, typePointer);
+    if (!name) return;
+    const auto it = std::find(kProfileTypes.begin(), kProfileTypes.end(), *name);
+    if (it == kProfileTypes.end()) {
+        r.json.error(typePointer, "unknown profile type \"" + *name + "\"; profile types: " +
+                                      quotedList(sortedByDistance(*name, kProfileTypes)));
+        return;
+    }
+    const std::size_t index = std::size_t(it - kProfileTypes.begin());
+    profile.type = SdfProfileType(index);
+    warnUnknownKeys(r.json, object, pointer, kProfileKeys[index]);
+    if (profile.type == SdfProfileType::Circle) {
+        readNumberField(r.json, object, pointer, "radius", &profile.radius,
+                        NumberRange::openClosed(0.0, kMaxLength));
+    } else if (profile.type == SdfProfileType::Polygon) {
+        readPolygonPoints(r, object, pointer, profile);
+    } else {
+        bool sizeOk = true;
+        if (const Json* size = findMember(object, "half_size")) {
+            float v[2];
+            sizeOk = readNumbers(r.json, *size, childPointer(pointer, "half_size"), 2, v,
+                                 NumberRange::openClosed(0.0, kMaxLength));
+            if (sizeOk) profile.halfSize = glm::vec2(v[0], v[1]);
+        }
+        if (profile.type == SdfProfileType::RoundedRectangle) {
+            profile.radius = 0.1f;
+            if (readNumberField(r.json, object, pointer, "radius", &profile.radius,
+                                NumberRange::closed(0.0, kMaxLength)) &&
+                sizeOk && profile.radius > std::min(profile.halfSize.x, profile.halfSize.y))
+                r.json.error(childPointer(pointer, "radius"),
+                             "the corner radius " + formatNumber(profile.radius) +
+                                 " is larger than the smaller half size " +
+                                 formatNumber(std::min(profile.halfSize.x, profile.halfSize.y)));
+        }
+    }
+}
+
+// "extrusion" and "revolution": a 2D profile turned into a solid.
+void readProfileShape(const SceneReader& r, const Json& object, const std::string& pointer,
+                      const std::string& name, SdfNode& node) {
+    SdfProfile profile;
+    const bool extrusion = name == "extrusion";
+    profile.solid = extrusion ? SdfProfileSolid::Extrusion : SdfProfileSolid::Revolution;
+    std::vector<std::string> known = kShapeCommonKeys;
+    known.emplace_back("profile");
+    known.emplace_back(extrusion ? "depth" : "offset");
+    warnUnknownKeys(r.json, object, pointer, known);
+    if (const Json* p = findMember(object, "profile")) {
+        readProfile(r, *p, childPointer(pointer, "profile"), profile);
+    } else {
+        r.json.error(pointer, "missing \"profile\" (the 2D shape to " +
+                                  std::string(extrusion ? "extrude" : "revolve") +
+                                  "; types: " + quotedList(kProfileTypes) + ")");
+    }
+    if (extrusion) {
+        readNumberField(r.json, object, pointer, "depth", &profile.depth,
+                        NumberRange::openClosed(0.0, kMaxLength));
+    } else {
+        readNumberField(r.json, object, pointer, "offset", &profile.offset,
+                        NumberRange::closed(0.0, kMaxLength));
+    }
+    node.profile = std::move(profile);
+}
+
 void readShape(SceneReader& r, const Json& object, const std::string& pointer, SdfNode& node) {
     node.isGroup = false;
     const std::string shapePointer = childPointer(pointer, "shape");
     const auto name = readString(r.json, *findMember(object, "shape"), shapePointer);
     if (!name) {
         warnUnknownKeys(r.json, object, pointer, kShapeCommonKeys);
+        return;
+    }
+    if (*name == "extrusion" || *name == "revolution") {
+        readProfileShape(r, object, pointer, *name, node);
         return;
     }
     const PrimitiveSpec* spec = findPrimitive(*name);
@@ -285,6 +628,8 @@ void readShape(SceneReader& r, const Json& object, const std::string& pointer, S
         std::vector<std::string> shapes;
         for (const PrimitiveSpec& candidate : primitiveCatalogue())
             shapes.emplace_back(candidate.name);
+        shapes.emplace_back("extrusion");
+        shapes.emplace_back("revolution");
         r.json.error(shapePointer, "unknown shape \"" + *name + "\"; known shapes: " +
                                        quotedList(sortedByDistance(*name, shapes)));
     }
@@ -327,6 +672,21 @@ void readGroup(SceneReader& r, const Json& object, const std::string& pointer, i
                        std::string("\"smoothness\" is ignored by op \"") + op.name +
                            "\"; use a smooth_ op to blend");
     }
+    if (const Json* blend = findMember(object, "blend")) {
+        const std::string blendPointer = childPointer(pointer, "blend");
+        if (!op.blend) {
+            r.json.warning(blendPointer, std::string("\"blend\" is ignored by op \"") + op.name +
+                                             "\"; only the smooth_ ops blend");
+        } else if (const auto name = readString(r.json, *blend, blendPointer)) {
+            const auto it = std::find(kBlendNames.begin(), kBlendNames.end(), *name);
+            if (it != kBlendNames.end()) {
+                node.blend = SmoothBlend(it - kBlendNames.begin());
+            } else {
+                r.json.error(blendPointer, "unknown blend \"" + *name +
+                                               "\"; valid blends: " + quotedList(kBlendNames));
+            }
+        }
+    }
     if (groupDepth > kMaxSdfGroupDepth) {
         r.json.error(pointer, "SDF groups are nested more than " +
                                   std::to_string(kMaxSdfGroupDepth) + " levels deep (the limit)");
@@ -360,6 +720,15 @@ void readSdfNode(SceneReader& r, const Json& object, const std::string& pointer,
     readStringField(r.json, object, pointer, "name", &node.name);
     readTransform(r.json, object, pointer, node.transform);
     readMaterialRef(r, object, pointer, &node.material);
+    readModifiers(r, object, pointer, node);
+    if (const Json* cut = findMember(object, "cut")) {
+        if (cut->is_boolean()) {
+            node.cut = cut->get<bool>();
+        } else {
+            r.json.error(childPointer(pointer, "cut"),
+                         "expected true or false, got " + jsonTypeName(*cut));
+        }
+    }
     const bool isShape = object.contains("shape");
     const bool isGroup = object.contains("children") || object.contains("op");
     if (isShape && isGroup) {
@@ -400,9 +769,12 @@ bool readVersion(const SceneReader& r, const Json& root, Scene& scene) {
         return false;
     }
     if (negative || number < std::uint64_t(kSceneFormatVersion)) {
-        r.json.error("/version", "there is no format version " + version->dump() +
-                                     "; this rmsc reads version " +
-                                     std::to_string(kSceneFormatVersion));
+        // Version 1 is the first format; nothing older exists to migrate from.
+        r.json.error("/version",
+                     "there is no format version " + version->dump() +
+                         "; this rmsc reads version 1, the first. To migrate, write \"version\": " +
+                         std::to_string(kSceneFormatVersion) +
+                         " and check the file against docs/scene-format.md");
         return false;
     }
     scene.version = int(number);
@@ -427,6 +799,8 @@ std::optional<Scene> readScene(const Json& root, const std::filesystem::path& pa
     if (const Json* v = findMember(root, "render")) readRender(r, *v, scene.render);
     if (const Json* v = findMember(root, "lights")) readLights(r, *v, scene.lights);
     if (const Json* v = findMember(root, "meshes")) readMeshes(r, *v, scene.meshes);
+    if (const Json* v = findMember(root, "environment"))
+        readEnvironment(json, *v, r.sceneFolder, scene.environment);
     if (const Json* v = findMember(root, "sdf")) {
         scene.sdf.emplace();
         readSdfNode(r, *v, "/sdf", 0, *scene.sdf);
@@ -440,6 +814,11 @@ std::optional<Scene> parseScene(std::string_view text, const std::filesystem::pa
                                 Diagnostics& diagnostics) {
     const JsonReader json{path.string(), &diagnostics};
     const int errorsBefore = diagnostics.errorCount();
+    if (text.size() > limits::kSceneFileBytes) {
+        json.error("", "the scene file is " + std::to_string(text.size()) + " bytes; at most " +
+                           std::to_string(limits::kSceneFileBytes) + " are supported (the limit)");
+        return std::nullopt;
+    }
     try {
         const std::optional<Json> root = parseJsonText(text, json);
         if (!root) return std::nullopt;

@@ -1,21 +1,42 @@
 // Writing scenes as format version 1 JSON (sceneToJson): every section, materials referenced by
 // name, shape parameters by their catalogue names, rotations as exact quaternions and numbers in
 // the fewest digits that read back as the same float. Number arrays stay on one line.
+#include "scene/material_texture_json.hpp"
 #include "scene/scene_json.hpp"
 
+#include "scene/lighting_json.hpp"
 #include "scene/transform_json.hpp"
 
+#include <algorithm>
 #include <set>
 
 namespace rmsc {
 namespace {
 
-constexpr const char* kOpNames[] = {"union",        "subtraction",        "intersection",
-                                    "smooth_union", "smooth_subtraction", "smooth_intersection"};
+// In SdfOp order.
+constexpr const char* kOpNames[] = {"union",
+                                    "subtraction",
+                                    "intersection",
+                                    "smooth_union",
+                                    "smooth_subtraction",
+                                    "smooth_intersection",
+                                    "xor",
+                                    "chamfer_union",
+                                    "chamfer_subtraction",
+                                    "chamfer_intersection",
+                                    "round_union",
+                                    "round_subtraction",
+                                    "round_intersection"};
+constexpr const char* kBlendNames[] = {"polynomial", "circular"}; // SmoothBlend order
 
 bool isSmooth(SdfOp op) {
     return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
            op == SdfOp::SmoothIntersection;
+}
+
+// Operations with a radius in "smoothness": the smooth, chamfer and round ones.
+bool hasRadius(SdfOp op) {
+    return isSmooth(op) || (op >= SdfOp::ChamferUnion && op <= SdfOp::RoundIntersection);
 }
 
 // Material keys of the written file, one per Scene::materials entry. Scenes built in code may
@@ -64,7 +85,91 @@ Json renderToJson(const RenderSettings& render) {
     out["background"] = vec3ToJson(render.background);
     out["ambient"] = vec3ToJson(render.ambient);
     out["exposure"] = floatToJson(render.exposure);
+    writeRenderLighting(render, out);
     return out;
+}
+
+Json vec2ToJson(glm::vec2 v) {
+    return Json::array({floatToJson(v.x), floatToJson(v.y)});
+}
+
+// A modifier with the keys docs/scene-format.md ("Modifiers") gives it.
+Json modifierToJson(const SdfModifier& m) {
+    constexpr const char* kNames[] = {"repeat", "mirror", "polar", "elongate", "twist",
+                                      "bend",   "round",  "onion", "displace"}; // type order
+    Json out = Json::object();
+    out["type"] = kNames[std::size_t(m.type)];
+    switch (m.type) {
+    case SdfModifierType::Repeat:
+        out["period"] = vec3ToJson(m.vector);
+        if (m.counts != glm::ivec3(0))
+            out["count"] = Json::array({m.counts.x, m.counts.y, m.counts.z});
+        if (m.neighbours) out["neighbours"] = true;
+        break;
+    case SdfModifierType::Mirror: {
+        std::string axes;
+        for (int axis = 0; axis < 3; ++axis)
+            if (m.axes[axis]) axes += "xyz"[axis];
+        out["axes"] = axes;
+        break;
+    }
+    case SdfModifierType::Polar:
+        out["count"] = m.count;
+        out["axis"] = std::string(1, "xyz"[std::clamp(m.axis, 0, 2)]);
+        break;
+    case SdfModifierType::Elongate:
+        out["half_extents"] = vec3ToJson(m.vector);
+        break;
+    case SdfModifierType::Twist:
+    case SdfModifierType::Bend:
+        out["amount"] = floatToJson(m.amount);
+        out["radius"] = floatToJson(m.radius);
+        break;
+    case SdfModifierType::Round:
+        out["radius"] = floatToJson(m.radius);
+        break;
+    case SdfModifierType::Onion:
+        out["thickness"] = floatToJson(m.thickness);
+        break;
+    case SdfModifierType::Displace:
+        out["amplitude"] = floatToJson(m.amount);
+        out["frequency"] = floatToJson(m.frequency);
+        break;
+    }
+    return out;
+}
+
+// "extrusion" / "revolution" and their profile.
+void writeProfileShape(const SdfProfile& profile, Json& out) {
+    constexpr const char* kTypes[] = {"circle", "rectangle", "rounded_rectangle", "polygon"};
+    const bool extrusion = profile.solid == SdfProfileSolid::Extrusion;
+    out["shape"] = extrusion ? "extrusion" : "revolution";
+    Json p = Json::object();
+    p["type"] = kTypes[std::size_t(profile.type)];
+    switch (profile.type) {
+    case SdfProfileType::Circle:
+        p["radius"] = floatToJson(profile.radius);
+        break;
+    case SdfProfileType::RoundedRectangle:
+        p["radius"] = floatToJson(profile.radius);
+        [[fallthrough]];
+    case SdfProfileType::Rectangle:
+        p["half_size"] = vec2ToJson(profile.halfSize);
+        break;
+    case SdfProfileType::Polygon: {
+        Json points = Json::array();
+        for (const glm::vec2& point : profile.points)
+            points.push_back(vec2ToJson(point));
+        p["points"] = std::move(points);
+        break;
+    }
+    }
+    out["profile"] = std::move(p);
+    if (extrusion) {
+        out["depth"] = floatToJson(profile.depth);
+    } else {
+        out["offset"] = floatToJson(profile.offset);
+    }
 }
 
 Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& materials) {
@@ -72,7 +177,11 @@ Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& material
     if (!node.name.empty()) out["name"] = node.name;
     if (node.isGroup) {
         out["op"] = kOpNames[std::size_t(node.op)];
-        if (isSmooth(node.op)) out["smoothness"] = floatToJson(node.smoothness);
+        if (hasRadius(node.op)) out["smoothness"] = floatToJson(node.smoothness);
+        if (isSmooth(node.op) && node.blend != SmoothBlend::Polynomial)
+            out["blend"] = kBlendNames[std::size_t(node.blend)];
+    } else if (node.profile) {
+        writeProfileShape(*node.profile, out);
     } else {
         const PrimitiveSpec& spec = primitiveSpec(node.primitive);
         out["shape"] = spec.name;
@@ -85,6 +194,13 @@ Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& material
     }
     writeTransform(node.transform, out);
     writeMaterialRef(node.material, materials, out);
+    if (node.cut) out["cut"] = true;
+    if (!node.modifiers.empty()) {
+        Json modifiers = Json::array();
+        for (const SdfModifier& m : node.modifiers)
+            modifiers.push_back(modifierToJson(m));
+        out["modifiers"] = std::move(modifiers);
+    }
     if (node.isGroup) {
         Json children = Json::array();
         for (const SdfNode& child : node.children)
@@ -108,20 +224,17 @@ Json sceneToJsonValue(const Scene& scene) {
                                        {"metallic", floatToJson(m.metallic)},
                                        {"roughness", floatToJson(m.roughness)},
                                        {"emissive", vec3ToJson(m.emissive)}};
+        writeMaterialTextures(m, materials[materialNames[i]]);
     }
     root["materials"] = std::move(materials);
 
     Json lights = Json::array();
     for (const Light& light : scene.lights) {
-        Json out = Json::object();
-        out["type"] = "directional";
-        if (!light.name.empty()) out["name"] = light.name;
-        out["direction"] = vec3ToJson(light.direction);
-        out["color"] = vec3ToJson(light.color);
-        out["intensity"] = floatToJson(light.intensity);
-        lights.push_back(std::move(out));
+        lights.push_back(lightToJson(light));
     }
     root["lights"] = std::move(lights);
+    if (Json environment = environmentToJson(scene.environment); !environment.is_null())
+        root["environment"] = std::move(environment);
 
     Json meshes = Json::array();
     for (const MeshInstance& mesh : scene.meshes) {

@@ -18,18 +18,123 @@ struct PlannedNode {
     const SdfNode* node = nullptr;
     std::uint32_t objectId = 0;
     std::uint32_t material = 0;
+    // The node's local frame to the frame of the current point: world space, or below a node
+    // with its own point frame (hasPointFrame), that node's modified local frame.
     glm::dmat4 world{1.0};
     // Shapes: rows of world^-1 and the distance scale (see resolveShape).
     glm::vec4 worldToLocal[3]{};
     float distanceScale = 1.0f;
-    int stackNeed = 0;         // entries the subtree needs on the stack
-    long instructionCount = 0; // instructions the subtree compiles to
+    // Nodes with point modifiers or displacement evaluate their subtree in their own frame:
+    // PushPoint (rows of world^-1), the point modifiers, the subtree, PopPoint.
+    bool hasPointFrame = false;
+    glm::vec4 pushRows[3]{};
+    // World units of the node's field per unit of its local (modified) frame, Lipschitz
+    // corrections included: converts the lengths of distance modifiers.
+    double nodeScale = 1.0;
+    bool cut = false;
+    std::uint32_t dataOffset = 0; // profile polygons: first point in SdfProgram::data
+    int stackNeed = 0;            // entries the subtree needs on the stack
+    int pointNeed = 0;            // entries the subtree needs on the point stack
+    long instructionCount = 0;    // instructions the subtree compiles to
     std::vector<PlannedNode> children;
 };
 
+// Upper bound of the gradient length of the value noise of the Displace modifier (sdfValueNoise
+// in the shader): each partial derivative is the smoothstep slope (at most 1.5) times a
+// difference of two lattice values in [-1, 1] (at most 2), so |grad| <= 3 sqrt(3).
+constexpr double kNoiseGradientBound = 5.196152422706632;
+
+bool isPointModifier(SdfModifierType type) {
+    return type == SdfModifierType::Repeat || type == SdfModifierType::Mirror ||
+           type == SdfModifierType::Polar || type == SdfModifierType::Elongate ||
+           type == SdfModifierType::Twist || type == SdfModifierType::Bend;
+}
+
+// A node needs its own point frame when a modifier reads or changes the point.
+bool needsPointFrame(const SdfNode& node) {
+    for (const SdfModifier& m : node.modifiers)
+        if (isPointModifier(m.type) || m.type == SdfModifierType::Displace) return true;
+    return false;
+}
+
+// Cells a repetition evaluates per point: 2^(repeated axes) with the neighbour check (the own
+// cell and the nearest neighbour along each repeated axis), else 1.
+int neighbourCells(const SdfModifier& m) {
+    if (m.type != SdfModifierType::Repeat || !m.neighbours) return 1;
+    int cells = 1;
+    for (int axis = 0; axis < 3; ++axis)
+        if (m.vector[axis] > 0.0f) cells *= 2;
+    return cells;
+}
+
+// Lipschitz constant of a point modifier's map (the factor the distance is divided by so
+// sphere tracing stays safe). Twist by k rad/unit about y moves a point of the content (within
+// radius R of the axis) so that |T(p) - T(q)| <= |shear(kR)| |p - q|, the largest singular
+// value of [[1, 0], [kR, 1]]: kR/2 + sqrt(1 + (kR/2)^2). Bend by k about z (the angle follows
+// x) gives |T(p) - T(q)| <= (1 + kR) |p - q| with R the content's radius in the xy plane.
+// Derivation in docs/scene-format.md ("Step corrections"). The others are 1-Lipschitz.
+double pointModifierLipschitz(const SdfModifier& m) {
+    const double k = std::abs(double(m.amount)) * std::numbers::pi / 180.0;
+    const double r = std::max(double(m.radius), 0.0);
+    if (m.type == SdfModifierType::Twist)
+        return k * r / 2.0 + std::sqrt(1.0 + (k * r / 2.0) * (k * r / 2.0));
+    if (m.type == SdfModifierType::Bend) return 1.0 + k * r;
+    return 1.0;
+}
+
+// The cut nodes of a group are subtracted with the subtraction of the group's family.
+SdfOp cutOp(SdfOp op) {
+    switch (op) {
+    case SdfOp::SmoothUnion:
+    case SdfOp::SmoothSubtraction:
+    case SdfOp::SmoothIntersection:
+        return SdfOp::SmoothSubtraction;
+    case SdfOp::ChamferUnion:
+    case SdfOp::ChamferSubtraction:
+    case SdfOp::ChamferIntersection:
+        return SdfOp::ChamferSubtraction;
+    case SdfOp::RoundUnion:
+    case SdfOp::RoundSubtraction:
+    case SdfOp::RoundIntersection:
+        return SdfOp::RoundSubtraction;
+    default:
+        return SdfOp::Subtraction;
+    }
+}
+
+constexpr long kCountCap = 1L << 40; // instruction counts saturate here (no overflow)
+
+// Instructions, value stack and point stack a node's modifier chain needs from modifier `i` on,
+// around a body (the node itself plus its distance modifiers) needing `body`. A repetition with
+// the neighbour check evaluates the rest of the chain once per cell: PushPoint, Repeat, rest,
+// PopPoint, and a union for every cell after the first.
+struct ChainCost {
+    long instructions = 0;
+    int stack = 0;
+    int points = 0;
+};
+ChainCost chainCost(const std::vector<SdfModifier>& modifiers, std::size_t i, ChainCost body) {
+    if (i == modifiers.size()) return body;
+    const ChainCost rest = chainCost(modifiers, i + 1, body);
+    if (!isPointModifier(modifiers[i].type)) return rest;
+    const long cells = neighbourCells(modifiers[i]);
+    if (cells == 1) return {std::min(rest.instructions + 1, kCountCap), rest.stack, rest.points};
+    return {std::min(cells * (rest.instructions + 3) + cells - 1, kCountCap), rest.stack + 1,
+            rest.points + 1};
+}
+
+// Operations that need a radius in `smoothness`: the smooth, chamfer and round ones.
 bool isSmooth(SdfOp op) {
     return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::SmoothIntersection;
+           op == SdfOp::SmoothIntersection || op == SdfOp::ChamferUnion ||
+           op == SdfOp::ChamferSubtraction || op == SdfOp::ChamferIntersection ||
+           op == SdfOp::RoundUnion || op == SdfOp::RoundSubtraction ||
+           op == SdfOp::RoundIntersection;
+}
+
+bool isSubtraction(SdfOp op) {
+    return op == SdfOp::Subtraction || op == SdfOp::SmoothSubtraction ||
+           op == SdfOp::ChamferSubtraction || op == SdfOp::RoundSubtraction;
 }
 
 std::string opName(SdfOp op) {
@@ -46,6 +151,20 @@ std::string opName(SdfOp op) {
         return "smooth subtraction";
     case SdfOp::SmoothIntersection:
         return "smooth intersection";
+    case SdfOp::Xor:
+        return "xor";
+    case SdfOp::ChamferUnion:
+        return "chamfer union";
+    case SdfOp::ChamferSubtraction:
+        return "chamfer subtraction";
+    case SdfOp::ChamferIntersection:
+        return "chamfer intersection";
+    case SdfOp::RoundUnion:
+        return "round union";
+    case SdfOp::RoundSubtraction:
+        return "round subtraction";
+    case SdfOp::RoundIntersection:
+        return "round intersection";
     }
     return "operation";
 }
@@ -80,9 +199,11 @@ class Planner {
             std::vector<std::string>& nodePointers)
         : file_(file), diagnostics_(diagnostics), nodePointers_(nodePointers) {}
 
-    // Resolves `node` and its subtree. `parentWorld` and `parentMaterial` are the parent group's
-    // resolved transform and material. Object ids count every node in pre-order (file order).
-    PlannedNode plan(const SdfNode& node, const glm::dmat4& parentWorld,
+    // Resolves `node` and its subtree. `parentWorld` maps the parent's frame to the current
+    // point's frame, `spaceScale` is the world units per unit of the current point's frame,
+    // `parentMaterial` the parent's resolved material. Object ids count every node in pre-order
+    // (file order).
+    PlannedNode plan(const SdfNode& node, const glm::dmat4& parentWorld, double spaceScale,
                      std::uint32_t parentMaterial) {
         PlannedNode planned;
         planned.node = &node;
@@ -90,31 +211,92 @@ class Planner {
         nodePointers_.push_back(node.pointer);
         planned.material = node.material >= 0 ? std::uint32_t(node.material) : parentMaterial;
         planned.world = parentWorld * glm::dmat4(node.transform.matrix());
+        planned.cut = node.cut;
+        planned.hasPointFrame = needsPointFrame(node);
 
+        // Below a node with its own frame, children see the modified local point.
+        glm::dmat4 childWorld = planned.world;
+        double childScale = spaceScale;
+        if (planned.hasPointFrame) {
+            double scale = 1.0;
+            if (!invertFrame(planned.world, planned.pushRows, scale))
+                diagnostics_.error(file_, node.pointer,
+                                   "the node's transform (with its groups') cannot be "
+                                   "inverted; is a scale 0?");
+            double lipschitz = 1.0;
+            double displacement = 1.0;
+            for (const SdfModifier& m : node.modifiers) {
+                lipschitz *= pointModifierLipschitz(m);
+                if (m.type == SdfModifierType::Displace)
+                    displacement += std::abs(double(m.amount)) * std::abs(double(m.frequency)) *
+                                    kNoiseGradientBound;
+            }
+            planned.nodeScale = spaceScale * scale / (lipschitz * displacement);
+            childWorld = glm::dmat4(1.0);
+            childScale = planned.nodeScale;
+        } else {
+            planned.nodeScale = spaceScale * smallestScaleFactor(planned.world);
+        }
+
+        ChainCost body;
         if (!node.isGroup) {
-            resolveShape(planned);
-            planned.stackNeed = 1;
-            planned.instructionCount = 1;
-            return planned;
-        }
+            resolveShape(planned, childWorld, childScale);
+            if (node.profile && node.profile->type == SdfProfileType::Polygon) {
+                planned.dataOffset = std::uint32_t(data_.size());
+                if (node.profile->points.size() < 3)
+                    diagnostics_.error(file_, node.pointer,
+                                       "a polygon profile needs at least 3 points, got " +
+                                           std::to_string(node.profile->points.size()));
+                for (const glm::vec2& point : node.profile->points)
+                    data_.emplace_back(point, 0.0f, 0.0f);
+            }
+            body = {1, 1, 0};
+        } else {
+            checkGroup(node);
+            std::vector<PlannedNode> kept;
+            std::vector<PlannedNode> cuts;
+            for (const SdfNode& child : node.children) {
+                PlannedNode c = plan(child, childWorld, childScale, planned.material);
+                (c.cut ? cuts : kept).push_back(std::move(c));
+            }
+            if (kept.empty() && !cuts.empty())
+                diagnostics_.error(file_, node.pointer,
+                                   "every child of the group is marked \"cut\"; at least one "
+                                   "must not be (it is what the cut nodes are subtracted from)");
+            // The kept children combine with the group's op, then each cut one is subtracted.
+            order(node.op, kept);
+            planned.children = std::move(kept);
+            for (PlannedNode& c : cuts)
+                planned.children.push_back(std::move(c));
 
-        checkGroup(node);
-        for (const SdfNode& child : node.children)
-            planned.children.push_back(plan(child, planned.world, planned.material));
-        order(node.op, planned.children);
-
-        // A left fold c0 c1 OP c2 OP ...: c0 needs its own stack, every later child one more
-        // for the result held below it.
-        for (std::size_t i = 0; i < planned.children.size(); ++i) {
-            const PlannedNode& child = planned.children[i];
-            planned.stackNeed = std::max(planned.stackNeed, child.stackNeed + (i > 0 ? 1 : 0));
-            planned.instructionCount += child.instructionCount + (i > 0 ? 1 : 0);
+            // A left fold c0 c1 OP c2 OP ...: c0 needs its own stack, every later child one
+            // more for the result held below it.
+            for (std::size_t i = 0; i < planned.children.size(); ++i) {
+                const PlannedNode& child = planned.children[i];
+                body.stack = std::max(body.stack, child.stackNeed + (i > 0 ? 1 : 0));
+                body.points = std::max(body.points, child.pointNeed);
+                body.instructions = std::min(
+                    body.instructions + child.instructionCount + (i > 0 ? 1 : 0), kCountCap);
+            }
         }
+        for (const SdfModifier& m : node.modifiers)
+            if (!isPointModifier(m.type)) ++body.instructions;
+        const ChainCost chain = chainCost(node.modifiers, 0, body);
+        planned.stackNeed = chain.stack;
+        planned.pointNeed = chain.points + (planned.hasPointFrame ? 1 : 0);
+        planned.instructionCount = chain.instructions + (planned.hasPointFrame ? 2 : 0);
+
         if (planned.stackNeed > kSdfMaxStack && firstOverflow_.empty()) {
             bool childOverflows = false;
             for (const PlannedNode& child : planned.children)
                 childOverflows = childOverflows || child.stackNeed > kSdfMaxStack;
             if (!childOverflows) firstOverflow_ = node.pointer;
+        }
+        if (planned.pointNeed > kSdfMaxPointStack && firstPointOverflow_.empty()) {
+            bool childOverflows = false;
+            for (const PlannedNode& child : planned.children)
+                childOverflows = childOverflows || child.pointNeed > kSdfMaxPointStack;
+            if (!childOverflows) firstPointOverflow_ = node.pointer;
         }
         return planned;
     }
@@ -122,22 +304,34 @@ class Planner {
     // The pointer of the first group (in the order groups finish planning) that needs more than
     // kSdfMaxStack while none of its children does: where the limit is crossed. "" if none.
     const std::string& firstOverflow() const { return firstOverflow_; }
+    // The same for the point stack (kSdfMaxPointStack).
+    const std::string& firstPointOverflow() const { return firstPointOverflow_; }
 
   private:
-    // The primitive is evaluated at q = world^-1 p. A local distance d maps to world units
-    // within [d * smallest, d * largest] scale factor; d * smallest is exact for a uniform scale
-    // and a lower bound (safe for sphere tracing, never overshooting) for a non-uniform one.
-    void resolveShape(PlannedNode& planned) {
-        const double scale = smallestScaleFactor(planned.world);
-        const glm::dmat4 worldToLocal = glm::inverse(planned.world);
+    // Rows of m^-1 and the smallest scale factor of m; false if m cannot be inverted.
+    static bool invertFrame(const glm::dmat4& m, glm::vec4 rows[3], double& scale) {
+        scale = smallestScaleFactor(m);
+        const glm::dmat4 inverse = glm::inverse(m);
         bool finite = std::isfinite(scale) && scale > 1e-12;
         for (int row = 0; row < 3; ++row) {
-            const glm::dvec4 r = glm::row(worldToLocal, row);
+            const glm::dvec4 r = glm::row(inverse, row);
             finite = finite && std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.z) &&
                      std::isfinite(r.w);
-            planned.worldToLocal[row] = glm::vec4(r);
+            rows[row] = glm::vec4(r);
         }
-        planned.distanceScale = float(scale);
+        return finite;
+    }
+
+    // The primitive is evaluated at q = world^-1 p (`world`: the shape's frame to the current
+    // point's frame, the identity when the shape has its own point frame). A local distance d
+    // maps to world units within [d * smallest, d * largest] scale factor, times `spaceScale`
+    // (world units per unit of the current point's frame, Lipschitz corrections included);
+    // d * smallest is exact for a uniform scale and a lower bound (safe for sphere tracing,
+    // never overshooting) for a non-uniform one.
+    void resolveShape(PlannedNode& planned, const glm::dmat4& world, double spaceScale) {
+        double scale = 1.0;
+        const bool finite = invertFrame(world, planned.worldToLocal, scale);
+        planned.distanceScale = float(scale * spaceScale);
         if (!finite)
             diagnostics_.error(file_, planned.node->pointer,
                                "the shape's transform (with its groups') cannot be inverted; "
@@ -148,27 +342,27 @@ class Planner {
         if (node.children.empty())
             diagnostics_.error(file_, node.pointer,
                                "the " + opName(node.op) + " group has no children");
-        if ((node.op == SdfOp::Subtraction || node.op == SdfOp::SmoothSubtraction) &&
-            node.children.size() == 1)
+        if (isSubtraction(node.op) && node.children.size() == 1)
             diagnostics_.error(file_, node.pointer,
                                "a " + opName(node.op) +
                                    " needs at least two children (the shape and what to "
                                    "subtract from it), got one");
         if (isSmooth(node.op) && !(std::isfinite(node.smoothness) && node.smoothness > 0.0f))
             diagnostics_.error(file_, node.pointer,
-                               "the smoothness of a " + opName(node.op) +
+                               "the smoothness (radius) of a " + opName(node.op) +
                                    " must be a finite number > 0, got " +
                                    std::to_string(node.smoothness));
     }
 
     // Emission order of a group's children. Union and intersection are commutative and
     // associative, so the deepest child goes first (Sethi-Ullman): the fold then needs
-    // max(deepest, 1 + second deepest). Subtraction keeps its first child; the order of the
-    // subtracted ones would not change the stack the fold needs, so they keep file order. Smooth
-    // operations are not associative (smin(smin(a, b), c) != smin(a, smin(b, c))) and keep file
-    // order.
+    // max(deepest, 1 + second deepest). So is xor: for exact children it gives
+    // sign(a) sign(b) min(|a|, |b|), which folds to sign(a b c) min(|a|, |b|, |c|) in any order.
+    // Subtraction keeps its first child; the order of the subtracted ones would not change the
+    // stack the fold needs, so they keep file order. Smooth, chamfer and round operations are not
+    // associative (smin(smin(a, b), c) != smin(a, smin(b, c))) and keep file order.
     static void order(SdfOp op, std::vector<PlannedNode>& children) {
-        if (op != SdfOp::Union && op != SdfOp::Intersection) return;
+        if (op != SdfOp::Union && op != SdfOp::Intersection && op != SdfOp::Xor) return;
         std::stable_sort(
             children.begin(), children.end(),
             [](const PlannedNode& x, const PlannedNode& y) { return x.stackNeed > y.stackNeed; });
@@ -178,10 +372,34 @@ class Planner {
     Diagnostics& diagnostics_;
     std::vector<std::string>& nodePointers_;
     std::string firstOverflow_;
+    std::string firstPointOverflow_;
+
+  public:
+    std::vector<glm::vec4> data_; // SdfProgram::data, filled while planning
 };
+
+GpuSdfInstruction profileInstruction(const PlannedNode& planned) {
+    const SdfProfile& profile = *planned.node->profile;
+    GpuSdfInstruction instruction;
+    instruction.opcode = std::uint32_t(SdfOpcode::Profile);
+    instruction.kind = std::uint32_t(profile.type);
+    instruction.material = planned.material;
+    instruction.objectId = planned.objectId;
+    instruction.params[0] = glm::vec4(profile.radius, profile.halfSize, 0.0f);
+    const bool extrusion = profile.solid == SdfProfileSolid::Extrusion;
+    instruction.params[1] =
+        glm::vec4(extrusion ? 0.0f : 1.0f, extrusion ? 0.5f * profile.depth : profile.offset, 0, 0);
+    instruction.params[2] =
+        glm::vec4(float(planned.dataOffset), float(profile.points.size()), 0.0f, 0.0f);
+    for (int row = 0; row < 3; ++row)
+        instruction.worldToLocal[row] = planned.worldToLocal[row];
+    instruction.misc = glm::vec4(planned.distanceScale, 0.0f, 0.0f, 0.0f);
+    return instruction;
+}
 
 GpuSdfInstruction shapeInstruction(const PlannedNode& planned) {
     const SdfNode& node = *planned.node;
+    if (node.profile) return profileInstruction(planned);
     GpuSdfInstruction instruction;
     instruction.opcode = std::uint32_t(SdfOpcode::Shape);
     instruction.kind = std::uint32_t(node.primitive);
@@ -195,12 +413,107 @@ GpuSdfInstruction shapeInstruction(const PlannedNode& planned) {
         glm::vec4(node.params[8], node.params[9], node.params[10], node.params[11]);
     for (int row = 0; row < 3; ++row)
         instruction.worldToLocal[row] = planned.worldToLocal[row];
-    instruction.misc =
-        glm::vec4(planned.distanceScale * primitiveSpec(node.primitive).stepScale, 0.0f, 0.0f, 0.0f);
+    instruction.misc = glm::vec4(planned.distanceScale * primitiveSpec(node.primitive).stepScale,
+                                 0.0f, 0.0f, 0.0f);
     return instruction;
 }
 
-void emit(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out) {
+GpuSdfInstruction pointInstruction(SdfOpcode opcode, const PlannedNode& planned) {
+    GpuSdfInstruction instruction;
+    instruction.opcode = std::uint32_t(opcode);
+    instruction.material = planned.material;
+    instruction.objectId = planned.objectId;
+    return instruction;
+}
+
+// A PushPoint into the node's frame (rows), or one that only saves the point (identity).
+GpuSdfInstruction pushPoint(const PlannedNode& planned, const glm::vec4* rows) {
+    GpuSdfInstruction instruction = pointInstruction(SdfOpcode::PushPoint, planned);
+    for (int row = 0; row < 3; ++row)
+        instruction.worldToLocal[row] = rows ? rows[row] : glm::vec4(glm::vec3(0.0f), 0.0f);
+    if (!rows)
+        for (int row = 0; row < 3; ++row)
+            instruction.worldToLocal[row][row] = 1.0f;
+    return instruction;
+}
+
+// A point modifier; `cell` selects the neighbour cell of a checked repetition (bit per
+// repeated axis, in x, y, z order), -1 for none.
+GpuSdfInstruction pointModifierInstruction(const SdfModifier& m, const PlannedNode& planned,
+                                           int cell) {
+    GpuSdfInstruction instruction = pointInstruction(SdfOpcode::PointModifier, planned);
+    const float radiansPerDegree = std::numbers::pi_v<float> / 180.0f;
+    switch (m.type) {
+    case SdfModifierType::Repeat: {
+        instruction.kind = std::uint32_t(SdfPointModifierKind::Repeat);
+        instruction.params[0] = glm::vec4(glm::max(m.vector, 0.0f), 0.0f);
+        instruction.params[1] = glm::vec4(glm::vec3(glm::max(m.counts, 0)), 0.0f);
+        if (cell >= 0) {
+            int bit = 0;
+            for (int axis = 0; axis < 3; ++axis)
+                if (m.vector[axis] > 0.0f) instruction.params[2][axis] = float((cell >> bit++) & 1);
+            instruction.params[2].w = 1.0f;
+        }
+        break;
+    }
+    case SdfModifierType::Mirror:
+        instruction.kind = std::uint32_t(SdfPointModifierKind::Mirror);
+        instruction.params[0] = glm::vec4(glm::vec3(m.axes), 0.0f);
+        break;
+    case SdfModifierType::Polar:
+        instruction.kind = std::uint32_t(SdfPointModifierKind::Polar);
+        instruction.params[0] = glm::vec4(float(std::max(m.count, 1)), float(m.axis), 0, 0);
+        break;
+    case SdfModifierType::Elongate:
+        instruction.kind = std::uint32_t(SdfPointModifierKind::Elongate);
+        instruction.params[0] = glm::vec4(glm::max(m.vector, 0.0f), 0.0f);
+        break;
+    case SdfModifierType::Twist:
+        instruction.kind = std::uint32_t(SdfPointModifierKind::Twist);
+        instruction.params[0].x = m.amount * radiansPerDegree;
+        break;
+    default: // Bend
+        instruction.kind = std::uint32_t(SdfPointModifierKind::Bend);
+        instruction.params[0].x = m.amount * radiansPerDegree;
+        break;
+    }
+    return instruction;
+}
+
+GpuSdfInstruction distanceModifierInstruction(const SdfModifier& m, const PlannedNode& planned) {
+    GpuSdfInstruction instruction = pointInstruction(SdfOpcode::DistanceModifier, planned);
+    const float scale = float(planned.nodeScale);
+    if (m.type == SdfModifierType::Round) {
+        instruction.kind = std::uint32_t(SdfDistanceModifierKind::Round);
+        instruction.params[0].x = m.radius * scale;
+    } else if (m.type == SdfModifierType::Onion) {
+        instruction.kind = std::uint32_t(SdfDistanceModifierKind::Onion);
+        instruction.params[0].x = m.thickness * scale;
+    } else {
+        instruction.kind = std::uint32_t(SdfDistanceModifierKind::Displace);
+        instruction.params[0].x = m.amount * scale;
+        instruction.params[0].y = m.frequency;
+    }
+    return instruction;
+}
+
+GpuSdfInstruction combineInstruction(const PlannedNode& planned, SdfOp op) {
+    const SdfNode& node = *planned.node;
+    GpuSdfInstruction combine;
+    combine.opcode = std::uint32_t(SdfOpcode::Combine);
+    combine.kind = std::uint32_t(op);
+    combine.material = planned.material;
+    combine.objectId = planned.objectId; // informational; the shapes' ids are shown
+    combine.params[0].x = node.smoothness;
+    combine.params[0].y = float(node.blend); // SmoothBlend: 0 polynomial, 1 circular
+    return combine;
+}
+
+void emit(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out);
+
+// The node itself: its shape, or its children folded with the group's op, the cut children
+// subtracted last.
+void emitBody(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out) {
     const SdfNode& node = *planned.node;
     if (!node.isGroup) {
         out.push_back(shapeInstruction(planned));
@@ -209,14 +522,47 @@ void emit(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out) {
     for (std::size_t i = 0; i < planned.children.size(); ++i) {
         emit(planned.children[i], out);
         if (i == 0) continue;
-        GpuSdfInstruction combine;
-        combine.opcode = std::uint32_t(SdfOpcode::Combine);
-        combine.kind = std::uint32_t(node.op);
-        combine.material = planned.material;
-        combine.objectId = planned.objectId; // informational; the shapes' ids are shown
-        combine.params[0].x = node.smoothness;
-        out.push_back(combine);
+        out.push_back(
+            combineInstruction(planned, planned.children[i].cut ? cutOp(node.op) : node.op));
     }
+}
+
+// The node's modifier chain from modifier i on (see chainCost): point modifiers in list order,
+// then the body and the distance modifiers in list order.
+void emitChain(const PlannedNode& planned, std::size_t i, std::vector<GpuSdfInstruction>& out) {
+    const std::vector<SdfModifier>& modifiers = planned.node->modifiers;
+    if (i == modifiers.size()) {
+        emitBody(planned, out);
+        for (const SdfModifier& m : modifiers)
+            if (!isPointModifier(m.type)) out.push_back(distanceModifierInstruction(m, planned));
+        return;
+    }
+    const SdfModifier& m = modifiers[i];
+    if (!isPointModifier(m.type)) {
+        emitChain(planned, i + 1, out);
+        return;
+    }
+    const int cells = neighbourCells(m);
+    if (cells == 1) {
+        out.push_back(pointModifierInstruction(m, planned, -1));
+        emitChain(planned, i + 1, out);
+        return;
+    }
+    // Neighbour check: the rest of the chain once per cell, united (Quilez, "Domain
+    // repetition", https://iquilezles.org/articles/sdfrepetition/).
+    for (int cell = 0; cell < cells; ++cell) {
+        out.push_back(pushPoint(planned, nullptr));
+        out.push_back(pointModifierInstruction(m, planned, cell));
+        emitChain(planned, i + 1, out);
+        out.push_back(pointInstruction(SdfOpcode::PopPoint, planned));
+        if (cell > 0) out.push_back(combineInstruction(planned, SdfOp::Union));
+    }
+}
+
+void emit(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out) {
+    if (planned.hasPointFrame) out.push_back(pushPoint(planned, planned.pushRows));
+    emitChain(planned, 0, out);
+    if (planned.hasPointFrame) out.push_back(pointInstruction(SdfOpcode::PopPoint, planned));
 }
 
 } // namespace
@@ -226,7 +572,28 @@ std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultM
     const int errorsBefore = diagnostics.errorCount();
     SdfProgram program;
     Planner planner(file, diagnostics, program.nodePointers);
-    const PlannedNode planned = planner.plan(root, glm::dmat4(1.0), defaultMaterial);
+    const PlannedNode planned = planner.plan(root, glm::dmat4(1.0), 1.0, defaultMaterial);
+
+    if (root.cut)
+        diagnostics.error(file, root.pointer,
+                          "the root node cannot be \"cut\": it has no siblings to be cut from");
+    if (planned.pointNeed > kSdfMaxPointStack) {
+        diagnostics.error(
+            file, root.pointer,
+            "the SDF tree needs a point stack of " + std::to_string(planned.pointNeed) +
+                " entries, the shader supports " + std::to_string(kSdfMaxPointStack) + " (" +
+                std::to_string(planned.pointNeed - kSdfMaxPointStack) +
+                " over); it first goes over at " + planner.firstPointOverflow() +
+                " (every node with point modifiers or displacement, and every repetition with "
+                "the neighbour check, nests one entry)");
+    }
+    if (planner.data_.size() > std::size_t(kSdfMaxData)) {
+        diagnostics.error(file, root.pointer,
+                          "the SDF tree's polygon profiles have " +
+                              std::to_string(planner.data_.size()) + " points in all, the " +
+                              "data buffer holds " + std::to_string(kSdfMaxData) + " (" +
+                              std::to_string(planner.data_.size() - kSdfMaxData) + " over)");
+    }
 
     if (planned.stackNeed > kSdfMaxStack) {
         diagnostics.error(file, root.pointer,
@@ -249,6 +616,8 @@ std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultM
     program.instructions.reserve(std::size_t(planned.instructionCount));
     emit(planned, program.instructions);
     program.stackDepth = planned.stackNeed;
+    program.pointStackDepth = planned.pointNeed;
+    program.data = std::move(planner.data_);
     return program;
 }
 

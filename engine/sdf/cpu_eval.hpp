@@ -20,6 +20,8 @@ struct SdfSurface {
     float metallic = 0.0f;
     float roughness = 0.5f;
     glm::vec3 emissive{0.0f};
+    std::uint32_t material = 0xffffffffu; // of the dominant shape (textures are not blended)
+    glm::vec3 localPoint{0.0f}; // the point in the dominant shape's local frame (triplanar)
 };
 
 float sdfDistance(const SdfProgram& program, glm::vec3 p);

@@ -3,9 +3,12 @@
 // shaders/common/sdf_primitives.glsl must stay identical.
 #include "sdf/primitives.hpp"
 
+#include "sdf/primitive_formulas.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace rmsc {
@@ -16,9 +19,13 @@ using glm::vec3;
 
 constexpr float kBig = 1.0e4f; // upper bound of lengths in the scene format
 
-vec3 v3(const float* p) { return vec3(p[0], p[1], p[2]); }
+vec3 v3(const float* p) {
+    return vec3(p[0], p[1], p[2]);
+}
 
-float sdSphere(vec3 p, const float* a) { return glm::length(p) - a[0]; }
+float sdSphere(vec3 p, const float* a) {
+    return glm::length(p) - a[0];
+}
 
 float sdBox(vec3 p, const float* a) {
     const vec3 q = glm::abs(p) - v3(a);
@@ -79,7 +86,154 @@ constexpr ParamSpec kCapsule[] = {
 constexpr ParamSpec kEllipsoid[] = {
     {"radii", 3, {0.6f, 0.4f, 0.3f}, 1e-4f, kBig, "semi-axes along x, y, z"}};
 
+// Parameters of the rows whose formulas live in primitive_formulas.cpp / fractal_formulas.cpp.
+constexpr ParamSpec kBoxFrame[] = {
+    {"half_extents", 3, {0.5f, 0.5f, 0.5f}, 0.0f, kBig, "half the outer size along x, y, z"},
+    {"thickness", 1, {0.05f}, 0.0f, kBig, "half the thickness of the frame's bars"}};
+constexpr ParamSpec kCappedTorus[] = {
+    {"angle",
+     1,
+     {130.0f},
+     0.0f,
+     180.0f,
+     "degrees: the arc spans this angle either side of +y (180 = a full ring)"},
+    {"major_radius", 1, {0.4f}, 0.0f, kBig, "radius of the ring (in the xy plane)"},
+    {"minor_radius", 1, {0.1f}, 0.0f, kBig, "radius of the tube"}};
+constexpr ParamSpec kLink[] = {
+    {"half_length", 1, {0.25f}, 0.0f, kBig, "half the length of the straight sides (along y)"},
+    {"major_radius", 1, {0.3f}, 0.0f, kBig, "radius of the rounded ends (in the xy plane)"},
+    {"minor_radius", 1, {0.08f}, 0.0f, kBig, "radius of the tube"}};
+constexpr ParamSpec kInfiniteCylinder[] = {{"radius", 1, {0.5f}, 0.0f, kBig, "radius"}};
+constexpr ParamSpec kCone[] = {
+    {"angle", 1, {25.0f}, 0.01f, 89.0f, "degrees between the axis and the side"},
+    {"height", 1, {1.0f}, 1e-4f, kBig, "apex at y = height / 2, base at y = -height / 2"}};
+constexpr ParamSpec kInfiniteCone[] = {
+    {"angle", 1, {25.0f}, 0.01f, 89.0f, "degrees between the axis and the side"}};
+constexpr ParamSpec kHexPrism[] = {
+    {"radius", 1, {0.4f}, 0.0f, kBig, "distance from the axis to each side of the hexagon"},
+    {"half_length", 1, {0.4f}, 0.0f, kBig, "half the length along z"}};
+constexpr ParamSpec kTriPrism[] = {
+    {"radius", 1, {0.3f}, 0.0f, kBig, "distance from the axis to each side of the triangle"},
+    {"half_length", 1, {0.4f}, 0.0f, kBig, "half the length along z"}};
+constexpr ParamSpec kCapsuleBetween[] = {
+    {"a", 3, {-0.3f, -0.3f, 0.0f}, -kBig, kBig, "one end of the axis segment"},
+    {"b", 3, {0.3f, 0.3f, 0.0f}, -kBig, kBig, "the other end"},
+    {"radius", 1, {0.2f}, 0.0f, kBig, "radius"}};
+constexpr ParamSpec kCappedCylinderBetween[] = {
+    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "centre of one cap"},
+    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "centre of the other cap"},
+    {"radius", 1, {0.4f}, 0.0f, kBig, "radius"}};
+constexpr ParamSpec kRoundedCylinder[] = {
+    {"radius", 1, {0.4f}, 0.0f, kBig, "outer radius"},
+    {"edge_radius",
+     1,
+     {0.1f},
+     0.0f,
+     kBig,
+     "rounding of the rims (at most the radius and the half height)"},
+    {"half_height", 1, {0.5f}, 0.0f, kBig, "half the outer height along y"}};
+constexpr ParamSpec kCappedCone[] = {
+    {"half_height", 1, {0.5f}, 1e-4f, kBig, "half the height along y"},
+    {"radius_bottom", 1, {0.5f}, 0.0f, kBig, "radius of the cap at y = -half_height"},
+    {"radius_top", 1, {0.2f}, 0.0f, kBig, "radius of the cap at y = +half_height"}};
+constexpr ParamSpec kCappedConeBetween[] = {
+    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "centre of one cap"},
+    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "centre of the other cap"},
+    {"radius_a", 1, {0.5f}, 0.0f, kBig, "radius of the cap at a"},
+    {"radius_b", 1, {0.2f}, 0.0f, kBig, "radius of the cap at b"}};
+constexpr ParamSpec kSolidAngle[] = {
+    {"angle", 1, {40.0f}, 0.0f, 180.0f, "degrees between the axis (+y) and the side"},
+    {"radius", 1, {0.8f}, 0.0f, kBig, "radius of the sphere it is cut from (apex at the origin)"}};
+constexpr ParamSpec kCutSphere[] = {
+    {"radius", 1, {0.5f}, 0.0f, kBig, "radius"},
+    {"cut_height",
+     1,
+     {-0.2f},
+     -kBig,
+     kBig,
+     "the part above the plane y = cut_height is kept (clamped to [-radius, radius])"}};
+constexpr ParamSpec kCutHollowSphere[] = {
+    {"radius", 1, {0.5f}, 0.0f, kBig, "radius of the shell's mid-surface"},
+    {"cut_height",
+     1,
+     {0.2f},
+     -kBig,
+     kBig,
+     "the part below the plane y = cut_height is kept (clamped to [-radius, radius])"},
+    {"thickness", 1, {0.04f}, 0.0f, kBig, "half the thickness of the shell"}};
+constexpr ParamSpec kDeathStar[] = {
+    {"radius", 1, {0.5f}, 0.0f, kBig, "radius of the sphere"},
+    {"cut_radius", 1, {0.35f}, 0.0f, kBig, "radius of the sphere carved out of it"},
+    {"cut_distance",
+     1,
+     {0.5f},
+     1e-3f,
+     kBig,
+     "the carved sphere's centre lies at (cut_distance, 0, 0)"}};
+constexpr ParamSpec kRoundCone[] = {
+    {"radius_bottom", 1, {0.3f}, 0.0f, kBig, "radius of the sphere at y = -height / 2"},
+    {"radius_top", 1, {0.15f}, 0.0f, kBig, "radius of the sphere at y = +height / 2"},
+    {"height",
+     1,
+     {0.6f},
+     1e-4f,
+     kBig,
+     "distance between the spheres' centres (at least the difference of the radii)"}};
+constexpr ParamSpec kRoundConeBetween[] = {
+    {"a", 3, {0.0f, -0.3f, 0.0f}, -kBig, kBig, "centre of one sphere"},
+    {"b", 3, {0.0f, 0.3f, 0.0f}, -kBig, kBig, "centre of the other sphere"},
+    {"radius_a", 1, {0.3f}, 0.0f, kBig, "radius of the sphere at a"},
+    {"radius_b", 1, {0.15f}, 0.0f, kBig, "radius of the sphere at b"}};
+constexpr ParamSpec kRevolvedVesica[] = {
+    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "one tip"},
+    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "the other tip"},
+    {"width", 1, {0.25f}, 1e-4f, kBig, "largest radius, at the middle (at most |b - a| / 2)"}};
+constexpr ParamSpec kRhombus[] = {
+    {"half_diagonal_x", 1, {0.5f}, 1e-4f, kBig, "half the diagonal along x"},
+    {"half_diagonal_z", 1, {0.3f}, 1e-4f, kBig, "half the diagonal along z"},
+    {"half_height", 1, {0.05f}, 0.0f, kBig, "half the thickness along y"},
+    {"radius", 1, {0.05f}, 0.0f, kBig, "rounding of the sides (added outside)"}};
+constexpr ParamSpec kOctahedron[] = {
+    {"radius", 1, {0.6f}, 0.0f, kBig, "distance from the centre to each vertex"}};
+constexpr ParamSpec kPyramid[] = {
+    {"base", 1, {1.0f}, 1e-4f, kBig, "side of the square base"},
+    {"height", 1, {1.0f}, 0.0f, kBig, "base at y = -height / 2, apex at y = +height / 2"}};
+constexpr ParamSpec kTriangle[] = {
+    {"a", 3, {-0.5f, -0.4f, 0.0f}, -kBig, kBig, "first corner"},
+    {"b", 3, {0.5f, -0.4f, 0.0f}, -kBig, kBig, "second corner"},
+    {"c", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "third corner"},
+    {"thickness", 1, {0.02f}, 0.0f, kBig, "half the thickness (0 = a sheet)"}};
+constexpr ParamSpec kQuad[] = {
+    {"a", 3, {-0.5f, -0.5f, 0.0f}, -kBig, kBig, "first corner"},
+    {"b", 3, {0.5f, -0.5f, 0.0f}, -kBig, kBig, "second corner"},
+    {"c", 3, {0.5f, 0.5f, 0.0f}, -kBig, kBig, "third corner"},
+    {"d", 3, {-0.5f, 0.5f, 0.0f}, -kBig, kBig, "fourth corner (the four in one plane)"}};
+constexpr ParamSpec kMandelbulb[] = {
+    {"power", 1, {8.0f}, 2.0f, 16.0f, "exponent n of z -> z^n + c"},
+    {"iterations", 1, {8.0f}, 1.0f, 16.0f, "iterations (floored)"},
+    {"bailout", 1, {2.0f}, 1.5f, 16.0f, "escape radius"}};
+constexpr ParamSpec kMengerSponge[] = {
+    {"iterations", 1, {4.0f}, 0.0f, 8.0f, "levels of holes (floored)"},
+    {"half_size", 1, {0.5f}, 1e-4f, kBig, "half the edge of the cube"}};
+constexpr ParamSpec kSierpinskiTetrahedron[] = {
+    {"iterations", 1, {6.0f}, 0.0f, 16.0f, "levels of subdivision (floored)"},
+    {"size", 1, {0.5f}, 1e-4f, kBig, "the corners lie at (+-size, +-size, +-size)"}};
+constexpr ParamSpec kQuaternionJulia[] = {
+    {"c_r", 1, {-0.45f}, -2.0f, 2.0f, "real part of the constant c"},
+    {"c_i", 1, {-0.45f}, -2.0f, 2.0f, "i part of c"},
+    {"c_j", 1, {0.18f}, -2.0f, 2.0f, "j part of c"},
+    {"c_k", 1, {0.31f}, -2.0f, 2.0f, "k part of c"},
+    {"iterations", 1, {10.0f}, 1.0f, 32.0f, "iterations (floored)"}};
+
 constexpr const char* kIq = "Quilez, Distance functions";
+constexpr const char* kIqMandelbulb =
+    "Quilez, Mandelbulb (https://iquilezles.org/articles/mandelbulb/)";
+constexpr const char* kIqMenger =
+    "Quilez, Menger fractal (https://iquilezles.org/articles/menger/)";
+constexpr const char* kChristensen =
+    "Christensen, Distance Estimated 3D Fractals (III): Folding Space";
+constexpr const char* kHart =
+    "Hart, Sandin, Kauffman, Ray tracing deterministic 3-D fractals (1989)";
 
 const PrimitiveSpec kCatalogue[] = {
     {PrimitiveId::Sphere, "sphere", "sdSphere", true, kSphere, sdSphere, "a sphere at the origin",
@@ -96,12 +250,80 @@ const PrimitiveSpec kCatalogue[] = {
      "a segment along y swept by a sphere", kIq},
     {PrimitiveId::Ellipsoid, "ellipsoid", "sdEllipsoid", false, kEllipsoid, sdEllipsoid,
      "an ellipsoid (a bound, improved by the gradient-length correction)", kIq},
+    {PrimitiveId::BoxFrame, "box_frame", "sdBoxFrame", true, kBoxFrame, formulas::boxFrame,
+     "the edges of a box as square bars", kIq},
+    {PrimitiveId::CappedTorus, "capped_torus", "sdCappedTorus", true, kCappedTorus,
+     formulas::cappedTorus, "an arc of a torus in the xy plane, symmetric about +y", kIq},
+    {PrimitiveId::Link, "link", "sdLink", true, kLink, formulas::link,
+     "a chain link: a torus stretched along y", kIq},
+    {PrimitiveId::InfiniteCylinder, "infinite_cylinder", "sdInfiniteCylinder", true,
+     kInfiniteCylinder, formulas::infiniteCylinder, "an endless cylinder along y", kIq},
+    {PrimitiveId::Cone, "cone", "sdCone", true, kCone, formulas::cone,
+     "a cone along y, apex up, with a flat base", kIq},
+    {PrimitiveId::InfiniteCone, "infinite_cone", "sdInfiniteCone", true, kInfiniteCone,
+     formulas::infiniteCone, "an endless cone, apex at the origin, opening towards -y", kIq},
+    {PrimitiveId::HexPrism, "hex_prism", "sdHexPrism", true, kHexPrism, formulas::hexPrism,
+     "a hexagonal prism along z", kIq},
+    {PrimitiveId::TriPrism, "tri_prism", "sdTriPrism", false, kTriPrism, formulas::triPrism,
+     "a triangular prism along z, a corner towards +y (a bound: the largest face distance)", kIq},
+    {PrimitiveId::CapsuleBetween, "capsule_between", "sdCapsuleBetween", true, kCapsuleBetween,
+     formulas::capsuleBetween, "the segment from a to b swept by a sphere", kIq},
+    {PrimitiveId::CappedCylinderBetween, "capped_cylinder_between", "sdCappedCylinderBetween", true,
+     kCappedCylinderBetween, formulas::cappedCylinderBetween,
+     "a cylinder from a to b with flat caps", kIq},
+    {PrimitiveId::RoundedCylinder, "rounded_cylinder", "sdRoundedCylinder", true, kRoundedCylinder,
+     formulas::roundedCylinder, "a cylinder along y with rounded rims (outer size given)", kIq},
+    {PrimitiveId::CappedCone, "capped_cone", "sdCappedCone", true, kCappedCone,
+     formulas::cappedCone, "a cone along y cut by two flat caps", kIq},
+    {PrimitiveId::CappedConeBetween, "capped_cone_between", "sdCappedConeBetween", true,
+     kCappedConeBetween, formulas::cappedConeBetween, "a capped cone from a to b", kIq},
+    {PrimitiveId::SolidAngle, "solid_angle", "sdSolidAngle", true, kSolidAngle,
+     formulas::solidAngle, "a cone of a sphere (an ice-cream scoop), apex at the origin, along +y",
+     kIq},
+    {PrimitiveId::CutSphere, "cut_sphere", "sdCutSphere", true, kCutSphere, formulas::cutSphere,
+     "a sphere with its bottom cut off flat", kIq},
+    {PrimitiveId::CutHollowSphere, "cut_hollow_sphere", "sdCutHollowSphere", true, kCutHollowSphere,
+     formulas::cutHollowSphere, "a spherical shell cut open at the top (a bowl)", kIq},
+    {PrimitiveId::DeathStar, "death_star", "sdDeathStar", true, kDeathStar, formulas::deathStar,
+     "a sphere with a spherical dent towards +x", kIq},
+    {PrimitiveId::RoundCone, "round_cone", "sdRoundCone", true, kRoundCone, formulas::roundCone,
+     "two spheres on the y axis and the cone tangent to both", kIq},
+    {PrimitiveId::RoundConeBetween, "round_cone_between", "sdRoundConeBetween", true,
+     kRoundConeBetween, formulas::roundConeBetween,
+     "spheres at a and b and the cone tangent to both", kIq},
+    {PrimitiveId::RevolvedVesica, "revolved_vesica", "sdRevolvedVesica", true, kRevolvedVesica,
+     formulas::revolvedVesica, "a lens-shaped spindle from a to b (a vesica revolved)", kIq},
+    {PrimitiveId::Rhombus, "rhombus", "sdRhombus", true, kRhombus, formulas::rhombus,
+     "a flat rhombus in the xz plane with rounded sides", kIq},
+    {PrimitiveId::Octahedron, "octahedron", "sdOctahedron", true, kOctahedron, formulas::octahedron,
+     "a regular octahedron, vertices on the axes", kIq},
+    {PrimitiveId::Pyramid, "pyramid", "sdPyramid", true, kPyramid, formulas::pyramid,
+     "a square pyramid along y (Quilez's faces plus the base)", kIq},
+    {PrimitiveId::Triangle, "triangle", "sdTriangle", true, kTriangle, formulas::triangle,
+     "a triangle a, b, c thickened by `thickness`", kIq},
+    {PrimitiveId::Quad, "quad", "sdQuad", true, kQuad, formulas::quad,
+     "a planar quadrilateral a, b, c, d of no thickness (unsigned distance)", kIq},
+    {PrimitiveId::Mandelbulb, "mandelbulb", "sdMandelbulb", false, kMandelbulb,
+     formulas::mandelbulb,
+     "the Mandelbulb (triplex power, y up) in a bounding sphere of radius 2^(1/(power-1))",
+     kIqMandelbulb, 0.8f},
+    {PrimitiveId::MengerSponge, "menger_sponge", "sdMengerSponge", false, kMengerSponge,
+     formulas::mengerSponge, "the Menger sponge: a cube with crosses of holes at every level",
+     kIqMenger},
+    {PrimitiveId::SierpinskiTetrahedron, "sierpinski_tetrahedron", "sdSierpinskiTetrahedron", false,
+     kSierpinskiTetrahedron, formulas::sierpinskiTetrahedron,
+     "the Sierpinski tetrahedron by folding space", kChristensen, 0.8f},
+    {PrimitiveId::QuaternionJulia, "quaternion_julia", "sdQuaternionJulia", false, kQuaternionJulia,
+     formulas::quaternionJulia,
+     "a quaternion Julia set z -> z^2 + c, the slice with fourth component 0", kHart, 0.8f},
 };
 static_assert(std::size(kCatalogue) == std::size_t(PrimitiveId::Count));
 
 } // namespace
 
-std::span<const PrimitiveSpec> primitiveCatalogue() { return kCatalogue; }
+std::span<const PrimitiveSpec> primitiveCatalogue() {
+    return kCatalogue;
+}
 
 const PrimitiveSpec& primitiveSpec(PrimitiveId id) {
     assert(std::size_t(id) < std::size(kCatalogue));
@@ -116,7 +338,8 @@ const PrimitiveSpec* findPrimitive(std::string_view name) {
 
 int paramOffset(const PrimitiveSpec& spec, int paramIndex) {
     int offset = 0;
-    for (int i = 0; i < paramIndex; ++i) offset += spec.params[i].components;
+    for (int i = 0; i < paramIndex; ++i)
+        offset += spec.params[i].components;
     return offset;
 }
 
@@ -130,7 +353,22 @@ PrimitiveParams defaultParams(const PrimitiveSpec& spec) {
     return params;
 }
 
-std::string generateGlslDispatch() {
+std::string primitiveGlslCall(const PrimitiveSpec& spec, std::string_view point,
+                              const std::function<std::string(int)>& floatAt) {
+    std::string call = std::string(spec.glslFunction) + "(" + std::string(point);
+    for (std::size_t i = 0; i < spec.params.size(); ++i) {
+        const int offset = paramOffset(spec, int(i));
+        if (spec.params[i].components == 1) {
+            call += ", " + floatAt(offset);
+        } else {
+            call += ", vec3(" + floatAt(offset) + ", " + floatAt(offset + 1) + ", " +
+                    floatAt(offset + 2) + ")";
+        }
+    }
+    return call + ")";
+}
+
+std::string generateGlslDispatch(const std::function<bool(PrimitiveId)>& include) {
     // Float k of the packed parameters lives in a[k], b[k - 4] or c[k - 8].
     auto component = [](int k) {
         return std::string(1, char('a' + k / 4)) + "[" + std::to_string(k % 4) + "]";
@@ -139,17 +377,9 @@ std::string generateGlslDispatch() {
     out << "// Generated from the primitive catalogue (engine/sdf/primitives.cpp).\n"
         << "float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b, vec4 c) {\n    switch (id) {\n";
     for (const PrimitiveSpec& spec : kCatalogue) {
-        out << "    case " << std::uint32_t(spec.id) << "u: return " << spec.glslFunction << "(p";
-        for (std::size_t i = 0; i < spec.params.size(); ++i) {
-            const int offset = paramOffset(spec, int(i));
-            if (spec.params[i].components == 1) {
-                out << ", " << component(offset);
-            } else {
-                out << ", vec3(" << component(offset) << ", " << component(offset + 1) << ", "
-                    << component(offset + 2) << ")";
-            }
-        }
-        out << ");\n";
+        if (include && !include(spec.id)) continue;
+        out << "    case " << std::uint32_t(spec.id) << "u: return "
+            << primitiveGlslCall(spec, "p", component) << ";\n";
     }
     out << "    }\n    return 1e10;\n}\n";
     return out.str();

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -22,6 +23,35 @@ enum class PrimitiveId : std::uint32_t {
     Plane,
     Capsule,
     Ellipsoid,
+    BoxFrame,
+    CappedTorus,
+    Link,
+    InfiniteCylinder,
+    Cone,
+    InfiniteCone,
+    HexPrism,
+    TriPrism,
+    CapsuleBetween,
+    CappedCylinderBetween,
+    RoundedCylinder,
+    CappedCone,
+    CappedConeBetween,
+    SolidAngle,
+    CutSphere,
+    CutHollowSphere,
+    DeathStar,
+    RoundCone,
+    RoundConeBetween,
+    RevolvedVesica,
+    Rhombus,
+    Octahedron,
+    Pyramid,
+    Triangle,
+    Quad,
+    Mandelbulb,
+    MengerSponge,
+    SierpinskiTetrahedron,
+    QuaternionJulia,
     Count
 };
 
@@ -62,9 +92,14 @@ int paramOffset(const PrimitiveSpec& spec, int paramIndex);
 // Parameters filled with the catalogue defaults.
 PrimitiveParams defaultParams(const PrimitiveSpec& spec);
 
+// The GLSL call of spec's function at `point`, float k of the packed parameters given by
+// floatAt(k) (a literal or a buffer read).
+std::string primitiveGlslCall(const PrimitiveSpec& spec, std::string_view point,
+                              const std::function<std::string(int)>& floatAt);
+
 // GLSL source of `float sdfPrimitive(uint id, vec3 p, vec4 a, vec4 b, vec4 c)`, a switch that
 // calls each row's GLSL function with its parameters unpacked from the three vec4s (a = floats
-// 0..3, b = floats 4..7, c = floats 8..11). Prepended to the shaders as the virtual file "generated/primitives.glsl".
-std::string generateGlslDispatch();
+// 0..3, b = floats 4..7, c = floats 8..11): every row, or those `include` accepts.
+std::string generateGlslDispatch(const std::function<bool(PrimitiveId)>& include = {});
 
 } // namespace rmsc

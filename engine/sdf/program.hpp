@@ -16,24 +16,55 @@ namespace rmsc {
 constexpr int kSdfMaxStack = 24;
 // Most instructions one scene may compile to.
 constexpr int kSdfMaxInstructions = 1 << 16;
+// Point stack of the GLSL interpreter (SDF_MAX_POINT_STACK): how deep PushPoint may nest.
+constexpr int kSdfMaxPointStack = 16;
+// Most vec4 entries of the SDF data buffer (polygon points, one per entry).
+constexpr int kSdfMaxData = 1 << 16;
 
+// The interpreter keeps a current point p (world space at the start) and a stack of saved
+// points. Shapes read p through their worldToLocal; nodes with point modifiers save p, move it
+// into their local frame and modify it, and restore it after their subtree.
 enum class SdfOpcode : std::uint32_t {
-    Shape = 0,   // push the distance of primitive `kind` at worldToLocal * p
-    Combine = 1, // pop b, pop a, push op `kind` (an SdfOp) of a and b
+    Shape = 0,            // push the distance of primitive `kind` at worldToLocal * p
+    Combine = 1,          // pop b, pop a, push op `kind` (an SdfOp) of a and b
+    PushPoint = 2,        // save p on the point stack, then p = worldToLocal * p
+    PointModifier = 3,    // p = modifier `kind` (SdfPointModifierKind) of p
+    PopPoint = 4,         // p = the saved point on top of the point stack (popped)
+    DistanceModifier = 5, // top of the value stack changed by `kind` (SdfDistanceModifierKind)
+    Profile = 6,          // push the distance of a 2D profile solid (`kind`: SdfProfileType)
 };
+
+// PointModifier parameters:
+//   Repeat:   params[0].xyz period (0: axis not repeated), params[1].xyz copies (0: infinite),
+//             params[2].xyz neighbour cell selector (0 own cell, 1 nearest neighbour),
+//             params[2].w 1 when the selector is used
+//   Mirror:   params[0].xyz 1 where the axis is folded
+//   Polar:    params[0].x copies, params[0].y axis (0 x, 1 y, 2 z)
+//   Elongate: params[0].xyz half extents
+//   Twist:    params[0].x radians per unit along y
+//   Bend:     params[0].x radians per unit along x
+enum class SdfPointModifierKind : std::uint32_t { Repeat, Mirror, Polar, Elongate, Twist, Bend };
+// DistanceModifier parameters (lengths already in the units of the value on the stack):
+//   Round: params[0].x radius; Onion: params[0].x thickness;
+//   Displace: params[0].x amplitude, params[0].y frequency (in the point's units)
+enum class SdfDistanceModifierKind : std::uint32_t { Round, Onion, Displace };
+// Profile parameters: params[0] = (radius, half width, half height, -), params[1] = (solid:
+// 0 extrusion / 1 revolution, half depth or offset, -, -), params[2] = (first point in the data
+// buffer, point count, -, -); worldToLocal and misc as for Shape.
 
 // One instruction. std430: 128 bytes, 16-byte aligned; mirrored by struct SdfInstruction in GLSL.
 struct GpuSdfInstruction {
-    std::uint32_t opcode = 0;   // SdfOpcode
-    std::uint32_t kind = 0;     // PrimitiveId for Shape, SdfOp for Combine
-    std::uint32_t material = 0; // Shape: index into the material buffer
-    std::uint32_t objectId = 0; // Shape: object id (kSdfIdBase + node pre-order index)
-    glm::vec4 params[3]{};      // Shape: PrimitiveParams; Combine: params[0].x = smoothness k
-    glm::vec4 worldToLocal[3]{};// Shape: rows of the affine world-to-local matrix (scale removed
-                                // only as far as `distanceScale` accounts for it)
-    glm::vec4 misc{};           // Shape: x = distance scale (smallest scale factor of the
-                                // node's world transform, exact for uniform scale, a bound
-                                // otherwise, times the primitive's step scale)
+    std::uint32_t opcode = 0;    // SdfOpcode
+    std::uint32_t kind = 0;      // PrimitiveId for Shape, SdfOp for Combine
+    std::uint32_t material = 0;  // Shape: index into the material buffer
+    std::uint32_t objectId = 0;  // Shape: object id (kSdfIdBase + node pre-order index)
+    glm::vec4 params[3]{};       // Shape: PrimitiveParams; Combine: params[0].x = smoothness k,
+                                 // params[0].y = SmoothBlend
+    glm::vec4 worldToLocal[3]{}; // Shape: rows of the affine world-to-local matrix (scale removed
+                                 // only as far as `distanceScale` accounts for it)
+    glm::vec4 misc{};            // Shape: x = distance scale (smallest scale factor of the
+                                 // node's world transform, exact for uniform scale, a bound
+                                 // otherwise, times the primitive's step scale)
 };
 static_assert(sizeof(GpuSdfInstruction) == 128);
 static_assert(offsetof(GpuSdfInstruction, params) == 16);
@@ -44,13 +75,16 @@ static_assert(offsetof(GpuSdfInstruction, misc) == 112);
 struct GpuSdfHeader {
     std::uint32_t instructionCount = 0;
     std::uint32_t stackDepth = 0;
-    std::uint32_t pad[2]{};
+    std::uint32_t pointStackDepth = 0;
+    std::uint32_t dataCount = 0; // vec4 entries of the data buffer (binding 3)
 };
 static_assert(sizeof(GpuSdfHeader) == 16);
 
 struct SdfProgram {
     std::vector<GpuSdfInstruction> instructions; // postfix order
     int stackDepth = 0;                          // largest stack the program needs
+    int pointStackDepth = 0;                     // largest point stack the program needs
+    std::vector<glm::vec4> data;                 // the data buffer: polygon points (xy)
     // For each SDF node in pre-order (index = objectId - kSdfIdBase): its JSON pointer.
     std::vector<std::string> nodePointers;
 };

@@ -9,6 +9,15 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec4 ambient;        // rgb = ambient light
     vec4 march;          // x = max steps, y = max distance, z = surface epsilon
     vec4 viewport;       // x = width, y = height
+    vec4 sky;            // x = sky type (0 none, 1 constant, 2 gradient, 3 image), y = intensity,
+                         // z = image sky's highest mip level, w = image rotation (radians)
+    vec4 skyZenith;      // rgb = constant sky colour, or the gradient's zenith
+    vec4 skyHorizon;     // rgb = gradient horizon
+    vec4 skyGround;      // rgb = gradient ground
+    vec4 fog;            // rgb = fog colour, a = density per world unit (0 = none)
+    vec4 shadow;         // x = SDF shadow steps (0 = off), y = min distance, z = max distance
+    vec4 shadowMap;      // x = map size (texels), y = PCF radius, z = normal offset (texels)
+    vec4 ao;             // x = AO samples (0 = off), y = farthest sample, z = strength, w = FXAA
 } frame;
 
 // Window-space depth [0, 1] of a world position, as the rasterizer would write it.

@@ -1,9 +1,13 @@
 // Shading shared by every pass: the glTF 2.0 metallic-roughness BRDF (glTF 2.0 specification,
 // Appendix B "BRDF Implementation"): Lambertian diffuse plus a GGX / Trowbridge-Reitz
 // microfacet specular with the height-correlated Smith visibility term and Schlick's Fresnel,
-// summed over the scene's lights, plus a constant ambient term.
+// summed over the scene's lights (directional, point and spot as in glTF KHR_lights_punctual),
+// with shadows and ambient occlusion (common/shadows.glsl), sky ambient and fog
+// (common/sky.glsl).
 #include "common/frame.glsl"
 #include "common/scene_buffers.glsl"
+#include "common/shadows.glsl"
+#include "common/sky.glsl"
 
 const float PI = 3.14159265358979;
 
@@ -14,6 +18,7 @@ struct SurfacePoint {
     float metallic;
     float roughness; // perceptual roughness; alpha = roughness^2
     vec3 emissive;
+    float occlusion; // material ambient occlusion (glTF occlusion texture), 1 = none
 };
 
 // Trowbridge-Reitz / GGX normal distribution.
@@ -53,19 +58,65 @@ vec3 brdfDirect(SurfacePoint s, vec3 toEye, vec3 toLight, vec3 irradiance) {
     return (diffuse + specular) * irradiance * nDotL;
 }
 
-// Lit colour of a surface point seen from the camera (linear HDR).
+// KHR_lights_punctual "Range Property": inverse-square falloff with a smooth window that
+// reaches 0 at the range: clamp(1 - (d / range)^4, 0, 1)^2 / d^2 (unlimited when range = 0).
+float rangeAttenuation(float d, float range) {
+    float inverseSquare = 1.0 / max(d * d, 1e-4);
+    if (range <= 0.0) return inverseSquare;
+    float window = clamp(1.0 - pow(d / range, 4.0), 0.0, 1.0);
+    return window * window * inverseSquare;
+}
+
+// KHR_lights_punctual "Inner and Outer Cone Angles": saturate(cd * scale + offset)^2 with cd
+// the cosine of the angle between the spot's axis and the direction to the point.
+float spotAttenuation(GpuLight light, vec3 toLight) {
+    float cd = dot(light.directionType.xyz, -toLight);
+    float a = clamp(cd * light.spotShadow.x + light.spotShadow.y, 0.0, 1.0);
+    return a * a;
+}
+
+// Light arriving at s from light i, with its shadows.
+vec3 lightContribution(SurfacePoint s, vec3 toEye, GpuLight light) {
+    int type = int(light.directionType.w);
+    vec3 toLight = -light.directionType.xyz;
+    float lightDistance = 1e10;
+    float attenuation = 1.0;
+    if (type != LIGHT_DIRECTIONAL) {
+        vec3 offset = light.positionRange.xyz - s.position;
+        lightDistance = length(offset);
+        toLight = offset / max(lightDistance, 1e-6);
+        attenuation = rangeAttenuation(lightDistance, light.positionRange.w);
+        if (type == LIGHT_SPOT) attenuation *= spotAttenuation(light, toLight);
+    }
+    if (attenuation <= 0.0 || dot(s.normal, toLight) <= 0.0) return vec3(0.0);
+    vec3 irradiance = light.colorIntensity.rgb * light.colorIntensity.a * attenuation;
+    float visibility = lightVisibility(light, s.position, s.normal, toLight, lightDistance);
+    if (visibility <= 0.0) return vec3(0.0);
+    return brdfDirect(s, toEye, toLight, irradiance * visibility);
+}
+
+// Lit colour of a surface point seen from the camera (linear HDR), fogged.
 vec3 shadeSurface(SurfacePoint s) {
     vec3 toEye = normalize(frame.cameraPosition.xyz - s.position);
     vec3 color = s.emissive;
-    // Ambient: diffuse and a rough Fresnel-weighted specular share of a constant environment.
+    float occlusion = s.occlusion * sdfAmbientOcclusion(s.position, s.normal);
     vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
-    color += frame.ambient.rgb * ((1.0 - s.metallic) * s.baseColor + f0);
-    uint count = lightHeader.x;
-    for (uint i = 0u; i < count; ++i) {
-        GpuLight light = lights[i];
-        vec3 toLight = -light.directionType.xyz;
-        vec3 irradiance = light.colorIntensity.rgb * light.colorIntensity.a;
-        color += brdfDirect(s, toEye, toLight, irradiance);
+    if (hasSky()) {
+        // Diffuse: the sky averaged around the normal; specular: the sky along the reflection,
+        // blurred by the roughness, weighted by Schlick's Fresnel with the roughness-aware
+        // maximum of Fdez-Aguera ("A Multiple-Scattering Microfacet Model for Real-Time Image
+        // Based Lighting", 2019).
+        float nDotV = max(dot(s.normal, toEye), 0.0);
+        vec3 fresnel = f0 + (max(vec3(1.0 - s.roughness), f0) - f0) * pow(1.0 - nDotV, 5.0);
+        vec3 reflected = reflect(-toEye, s.normal);
+        color += occlusion * ((1.0 - fresnel) * (1.0 - s.metallic) * s.baseColor *
+                                  skyDiffuse(s.normal) +
+                              fresnel * skySpecular(reflected, s.roughness));
+    } else {
+        // Ambient: diffuse and a rough Fresnel-weighted specular share of a constant environment.
+        color += occlusion * frame.ambient.rgb * ((1.0 - s.metallic) * s.baseColor + f0);
     }
-    return color;
+    uint count = lightHeader.x;
+    for (uint i = 0u; i < count; ++i) color += lightContribution(s, toEye, lights[i]);
+    return applyFog(color, distance(frame.cameraPosition.xyz, s.position));
 }

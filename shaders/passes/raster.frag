@@ -6,32 +6,72 @@
 in vec3 vWorldPosition;
 in vec3 vWorldNormal;
 in vec2 vUv;
+in vec2 vUv1;
+in vec4 vWorldTangent;
 
 uniform vec4 uBaseColorFactor;
-uniform vec4 uMetallicRoughness; // x = metallic, y = roughness
-uniform vec3 uEmissive;
-uniform bool uHasBaseColorTexture;
+uniform vec4 uMetallicRoughness; // x = metallic, y = roughness, z = normal scale,
+                                 // w = occlusion strength
+uniform vec3 uEmissive;          // emissive factor times KHR_materials_emissive_strength
+// The glTF material textures, one unit each (RasterPass binds them): the TEXCOORD set each
+// reads, -1 when the material has none. 0 base colour, 1 metallic-roughness, 2 normal,
+// 3 emissive, 4 occlusion.
+uniform int uTexCoord[5];
 uniform uint uObjectId;
-layout(binding = 0) uniform sampler2D uBaseColorTexture; // sRGB texture, decoded by GL
+layout(binding = 0) uniform sampler2D uBaseColorTexture;         // sRGB, decoded by GL
+layout(binding = 1) uniform sampler2D uMetallicRoughnessTexture; // linear: B metal, G rough
+layout(binding = 2) uniform sampler2D uNormalTexture;            // linear, tangent space
+layout(binding = 3) uniform sampler2D uEmissiveTexture;          // sRGB, decoded by GL
+layout(binding = 4) uniform sampler2D uOcclusionTexture;         // linear: R occlusion
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outNormal;
 layout(location = 2) out float outViewDepth;
 layout(location = 3) out uint outObjectId;
 
+vec2 materialUv(int slot) {
+    return uTexCoord[slot] == 1 ? vUv1 : vUv;
+}
+
 void main() {
+    // glTF 2.0 section 3.9 (Materials): every texture multiplies its factor.
     vec4 baseColor = uBaseColorFactor;
-    if (uHasBaseColorTexture) baseColor *= texture(uBaseColorTexture, vUv);
+    if (uTexCoord[0] >= 0) baseColor *= texture(uBaseColorTexture, materialUv(0));
+    float metallic = uMetallicRoughness.x;
+    float roughness = uMetallicRoughness.y;
+    if (uTexCoord[1] >= 0) {
+        vec4 mr = texture(uMetallicRoughnessTexture, materialUv(1));
+        metallic *= mr.b;
+        roughness *= mr.g;
+    }
+    vec3 emissive = uEmissive;
+    if (uTexCoord[3] >= 0) emissive *= texture(uEmissiveTexture, materialUv(3)).rgb;
+    float occlusion = 1.0;
+    if (uTexCoord[4] >= 0) // occludedColor = lerp(color, color * occlusion, strength)
+        occlusion = 1.0 + uMetallicRoughness.w * (texture(uOcclusionTexture, materialUv(4)).r - 1.0);
     vec3 normal = normalize(vWorldNormal);
+    if (uTexCoord[2] >= 0) {
+        // scaledNormal = normalize((sampled * 2 - 1) * vec3(scale, scale, 1)) in the frame
+        // (tangent, bitangent = cross(normal, tangent) * w, normal) of the front face.
+        vec3 t = vWorldTangent.xyz - normal * dot(normal, vWorldTangent.xyz);
+        if (dot(t, t) > 1e-12) {
+            t = normalize(t);
+            vec3 b = cross(normal, t) * (vWorldTangent.w < 0.0 ? -1.0 : 1.0);
+            vec3 m = texture(uNormalTexture, materialUv(2)).xyz * 2.0 - 1.0;
+            m.xy *= uMetallicRoughness.z;
+            normal = normalize(m.x * t + m.y * b + m.z * normal);
+        }
+    }
     if (!gl_FrontFacing) normal = -normal; // double-sided lighting of back faces
 
     SurfacePoint s;
     s.position = vWorldPosition;
     s.normal = normal;
     s.baseColor = baseColor.rgb;
-    s.metallic = uMetallicRoughness.x;
-    s.roughness = uMetallicRoughness.y;
-    s.emissive = uEmissive;
+    s.metallic = metallic;
+    s.roughness = roughness;
+    s.emissive = emissive;
+    s.occlusion = occlusion;
 
     outColor = vec4(shadeSurface(s), 1.0);
     outNormal = vec4(normal, 0.0);

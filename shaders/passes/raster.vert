@@ -5,6 +5,8 @@
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec2 inUv1;
+layout(location = 4) in vec4 inTangent; // xyz tangent, w bitangent sign
 
 uniform mat4 uModel;
 uniform mat3 uNormalMatrix;
@@ -12,11 +14,17 @@ uniform mat3 uNormalMatrix;
 out vec3 vWorldPosition;
 out vec3 vWorldNormal;
 out vec2 vUv;
+out vec2 vUv1;
+out vec4 vWorldTangent;
 
 void main() {
     vec4 world = uModel * vec4(inPosition, 1.0);
     vWorldPosition = world.xyz;
     vWorldNormal = uNormalMatrix * inNormal;
     vUv = inUv;
+    vUv1 = inUv1;
+    // Tangents transform like positions; a mirroring model matrix flips the handedness.
+    float handedness = determinant(mat3(uModel)) < 0.0 ? -1.0 : 1.0;
+    vWorldTangent = vec4(mat3(uModel) * inTangent.xyz, inTangent.w * handedness);
     gl_Position = frame.viewProjection * world;
 }

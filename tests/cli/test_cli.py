@@ -131,6 +131,17 @@ with tempfile.TemporaryDirectory() as tmp:
     write(tmp, "broken.gltf", '{"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 7}}]}]}')
     broken = write(tmp, "broken_mesh.json", scene(meshes=[{"file": "broken.gltf"}]))
     expect("broken glTF", ["validate", broken], 1, stderr_has=["/meshes/0", "broken.gltf"])
+
+    # Material textures: a missing file and a file that is not an image, for validate and render.
+    write(tmp, "not_an_image.png", "plain text, not a PNG")
+    for label, file, words in [("missing texture", "no_such_texture.png", "cannot read texture"),
+                               ("texture not an image", "not_an_image.png", "not a usable image")]:
+        bad = write(tmp, label.replace(" ", "_") + ".json", scene(
+            materials={"m": {"base_color_texture": {"file": file, "scale": 2}}},
+            sdf={"shape": "sphere", "material": "m"}))
+        for command in (["validate", bad], ["render", bad, "-o", os.path.join(tmp, "t.png")]):
+            expect(f"{label} ({command[0]})", command, 1,
+                   stderr_has=[bad, "/materials/m/base_color_texture/file", file, words])
     with open(os.path.join(SAMPLES, "assets", "cube.glb"), "rb") as f:
         glb = f.read()
     truncated = write(tmp, "truncated.glb", glb[: len(glb) // 2])
@@ -143,6 +154,35 @@ with tempfile.TemporaryDirectory() as tmp:
     unwritable = os.path.join(tmp, "no-such-folder", "out.png")
     expect("unwritable output", ["render", "-o", unwritable, "--size", "8x8"], 3,
            stderr_has=["cannot write"])
+
+# The scene JSON Schema: `rmsc schema` prints docs/scene.schema.json exactly, every sample scene
+# is valid under it, and scenes the reader refuses are invalid under it too.
+r = run(["schema"])
+check("schema command", r.returncode == 0, r.stderr.strip()[:600])
+with open(os.path.join(ROOT, "docs", "scene.schema.json"), encoding="utf-8") as f:
+    shipped_schema = f.read()
+check("schema is up to date", r.stdout == shipped_schema,
+      "docs/scene.schema.json differs from `rmsc schema`; refresh it")
+try:
+    import jsonschema
+except ImportError:
+    print("SKIP schema validation of the samples: python3-jsonschema is not installed")
+else:
+    validator = jsonschema.Draft202012Validator(json.loads(shipped_schema))
+    scenes_dir = os.path.join(SAMPLES, "scenes")
+    for name in sorted(os.listdir(scenes_dir)):
+        with open(os.path.join(scenes_dir, name), encoding="utf-8") as f:
+            errors = [e.message for e in validator.iter_errors(json.load(f))]
+        check(f"schema accepts samples/scenes/{name}", not errors, "; ".join(errors)[:600])
+    for name, bad in [("version 2", {"version": 2}),
+                      ("no version", {"camera": {}}),
+                      ("negative radius", {"version": 1, "sdf": {"shape": "sphere", "radius": -1}}),
+                      ("unknown shape", {"version": 1, "sdf": {"shape": "spere"}}),
+                      ("misspelt key", {"version": 1, "camera": {"fovv": 45}}),
+                      ("mesh without file", {"version": 1, "meshes": [{}]}),
+                      ("bad colour", {"version": 1, "render": {"background": "#12345"}}),
+                      ("too many steps", {"version": 1, "render": {"max_steps": 5000}})]:
+        check(f"schema refuses {name}", not validator.is_valid(bad), json.dumps(bad))
 
 print(f"{passed} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)

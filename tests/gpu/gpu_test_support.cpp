@@ -35,7 +35,9 @@ SharedGl& sharedGl() {
 
 } // namespace
 
-Renderer& sharedRenderer() { return *sharedGl().renderer; }
+Renderer& sharedRenderer() {
+    return *sharedGl().renderer;
+}
 
 void expectNoGlErrors() {
     const std::string errors = takeGlDebugErrors();
@@ -43,9 +45,9 @@ void expectNoGlErrors() {
 }
 
 FrameTargets renderPrepared(const PreparedScene& prepared, int width, int height,
-                            const Camera* camera) {
+                            const Camera* camera, SdfStrategy strategy) {
     Renderer& renderer = sharedRenderer();
-    const GpuScene gpu = uploadScene(prepared);
+    const GpuScene gpu = uploadScene(prepared, strategy);
     FrameTargets targets = createFrameTargets(width, height);
     renderer.render(gpu, camera ? *camera : prepared.scene.camera, prepared.scene.render, targets);
     expectNoGlErrors();
@@ -87,6 +89,15 @@ std::filesystem::path testOutputDirectory() {
                << "no reference image " << reference << " (actual written to " << actualPath
                << "; run with RMSC_UPDATE_REFERENCES=1 to accept it)";
     }
+    return imagesMatch(actual, *expected, name, tolerance);
+}
+
+::testing::AssertionResult imagesMatch(const Pixels<std::uint8_t>& actual,
+                                       const Pixels<std::uint8_t>& expectedImage,
+                                       const std::string& name, ImageTolerance tolerance) {
+    const Pixels<std::uint8_t>* expected = &expectedImage;
+    std::string error;
+    const std::filesystem::path actualPath = testOutputDirectory() / (name + ".actual.png");
     if (expected->width != actual.width || expected->height != actual.height)
         return ::testing::AssertionFailure()
                << "size " << actual.width << "x" << actual.height << " differs from reference "
@@ -100,7 +111,8 @@ std::filesystem::path testOutputDirectory() {
         for (int x = 0; x < actual.width; ++x) {
             int delta = 0;
             for (int c = 0; c < 3; ++c)
-                delta = std::max(delta, std::abs(int(actual.at(x, y)[c]) - int(expected->at(x, y)[c])));
+                delta =
+                    std::max(delta, std::abs(int(actual.at(x, y)[c]) - int(expected->at(x, y)[c])));
             worst = std::max(worst, delta);
             std::uint8_t* d = diff.at(x, y);
             if (delta > tolerance.channelDelta) {
@@ -118,9 +130,9 @@ std::filesystem::path testOutputDirectory() {
     writePng8(actualPath, actual, error);
     writePng8(diffPath, diff, error);
     return ::testing::AssertionFailure()
-           << name << ": " << differing << " pixels (" << share * 100
-           << "%) differ by more than " << tolerance.channelDelta << " (worst " << worst
-           << "); allowed " << tolerance.maxDifferingShare * 100 << "%. Actual: " << actualPath
+           << name << ": " << differing << " pixels (" << share * 100 << "%) differ by more than "
+           << tolerance.channelDelta << " (worst " << worst << "); allowed "
+           << tolerance.maxDifferingShare * 100 << "%. Actual: " << actualPath
            << ", diff: " << diffPath;
 }
 

@@ -26,7 +26,8 @@ void expectNoGlErrors();
 
 // Renders `prepared` at width x height with its own camera, unless `camera` is given.
 FrameTargets renderPrepared(const PreparedScene& prepared, int width, int height,
-                            const Camera* camera = nullptr);
+                            const Camera* camera = nullptr,
+                            SdfStrategy strategy = SdfStrategy::Baked);
 
 // Opens a scene file from the repository (path relative to the repository root).
 PreparedScene openRepositoryScene(const std::string& relativePath);
@@ -35,7 +36,7 @@ PreparedScene openRepositoryScene(const std::string& relativePath);
 std::filesystem::path testOutputDirectory();
 
 struct ImageTolerance {
-    int channelDelta = 8;            // a pixel differs if any channel differs by more than this
+    int channelDelta = 8;             // a pixel differs if any channel differs by more than this
     double maxDifferingShare = 0.005; // the images match if at most this share of pixels differ
 };
 
@@ -45,5 +46,11 @@ struct ImageTolerance {
 ::testing::AssertionResult imageMatchesReference(const Pixels<std::uint8_t>& actual,
                                                  const std::string& name,
                                                  ImageTolerance tolerance = {});
+
+// Compares two images of one size under `tolerance`; on a mismatch writes
+// <output>/<name>.actual.png (of `actual`) and <name>.diff.png and names them.
+::testing::AssertionResult imagesMatch(const Pixels<std::uint8_t>& actual,
+                                       const Pixels<std::uint8_t>& expected,
+                                       const std::string& name, ImageTolerance tolerance = {});
 
 } // namespace rmsc::test

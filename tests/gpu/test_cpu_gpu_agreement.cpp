@@ -31,8 +31,8 @@ Agreement compare(const PreparedScene& prepared, int width, int height, int step
     for (int row = step / 2; row < height; row += step) {
         for (int x = step / 2; x < width; x += step) {
             ++a.sampled;
-            const glm::vec3 d = pixelRayDirection(frame, float(x), float(height - 1 - row), width,
-                                                  height);
+            const glm::vec3 d =
+                pixelRayDirection(frame, float(x), float(height - 1 - row), width, height);
             const float forwardness = 1.0f / glm::length(d);
             const glm::vec3 rd = d * forwardness;
             const std::uint32_t gpuId = *ids.at(x, row);
@@ -83,6 +83,21 @@ void expectAgreement(const std::string& scenePath, double minSdfShare) {
 
 } // namespace
 
-TEST(CpuGpuAgreement, EveryPrimitive) { expectAgreement("samples/scenes/shapes.json", 0.5); }
-TEST(CpuGpuAgreement, EveryOperationWithMeshes) { expectAgreement("samples/scenes/csg.json", 0.12); }
-TEST(CpuGpuAgreement, DemoScene) { expectAgreement("samples/scenes/demo.json", 0.04); }
+TEST(CpuGpuAgreement, EveryPrimitive) {
+    expectAgreement("samples/scenes/shapes.json", 0.5);
+}
+TEST(CpuGpuAgreement, EveryOperationWithMeshes) {
+    expectAgreement("samples/scenes/csg.json", 0.12);
+}
+TEST(CpuGpuAgreement, ModifiersAndProfiles) {
+    expectAgreement("samples/scenes/modifiers.json", 0.15);
+}
+TEST(CpuGpuAgreement, FullPrimitiveSet) {
+    expectAgreement("samples/scenes/primitives.json", 0.75);
+}
+TEST(CpuGpuAgreement, BlendChamferRoundXor) {
+    expectAgreement("samples/scenes/smooth_blend.json", 0.9);
+}
+TEST(CpuGpuAgreement, DemoScene) {
+    expectAgreement("samples/scenes/demo.json", 0.04);
+}

@@ -24,7 +24,11 @@ void main() {
     SdfInstruction i = sdfInstructions[int(gl_FragCoord.x)];
     color = i.params[0] + i.params[1] + i.worldToLocal[2] + i.misc + vec4(i.opcode + i.kind +
             i.material + i.objectId + sdfHeader.x) + materials[1].emissiveRoughness +
-            lights[1].colorIntensity + frame.viewport + frame.march;
+            vec4(float(materials[1].baseColorTexture.slot) + materials[1].baseColorTexture.scale +
+                 materials[1].normalTexture.strength + materials[1].roughnessTexture.sharpness) +
+            lights[1].colorIntensity + lights[1].positionRange + lights[1].spotShadow +
+            shadowViews[1].lightViewProjection[2] + shadowViews[1].params + frame.viewport +
+            frame.march + frame.sky + frame.fog + frame.ao + frame.shadowMap;
 })";
     std::string error;
     std::optional<gl::Program> program =
@@ -50,8 +54,7 @@ GLint offsetOf(const gl::Program& p, const char* name) {
 
 TEST(GpuLayout, SdfInstructionMatchesTheShader) {
     const gl::Program p = buildLayoutProbe();
-    EXPECT_EQ(offsetOf(p, "sdfInstructions[0].opcode"),
-              GLint(sizeof(GpuSdfHeader)));
+    EXPECT_EQ(offsetOf(p, "sdfInstructions[0].opcode"), GLint(sizeof(GpuSdfHeader)));
     EXPECT_EQ(resourceProperty(p, GL_BUFFER_VARIABLE, "sdfInstructions[0].opcode",
                                GL_TOP_LEVEL_ARRAY_STRIDE),
               GLint(sizeof(GpuSdfInstruction)));
@@ -76,12 +79,35 @@ TEST(GpuLayout, MaterialsAndLightsMatchTheShader) {
               GLint(sizeof(GpuMaterial)));
     EXPECT_EQ(offsetOf(p, "materials[0].emissiveRoughness"),
               GLint(offsetof(GpuMaterial, emissiveRoughness)));
+    EXPECT_EQ(offsetOf(p, "materials[0].baseColorTexture.slot"),
+              GLint(offsetof(GpuMaterial, baseColorTexture) + offsetof(GpuMaterialTexture, slot)));
+    EXPECT_EQ(offsetOf(p, "materials[0].baseColorTexture.scale"),
+              GLint(offsetof(GpuMaterial, baseColorTexture) + offsetof(GpuMaterialTexture, scale)));
+    EXPECT_EQ(offsetOf(p, "materials[0].normalTexture.strength"),
+              GLint(offsetof(GpuMaterial, normalTexture) + offsetof(GpuMaterialTexture, strength)));
+    EXPECT_EQ(
+        offsetOf(p, "materials[0].roughnessTexture.sharpness"),
+        GLint(offsetof(GpuMaterial, roughnessTexture) + offsetof(GpuMaterialTexture, sharpness)));
     EXPECT_EQ(offsetOf(p, "lights[0].directionType"), GLint(sizeof(GpuLightHeader)));
     EXPECT_EQ(resourceProperty(p, GL_BUFFER_VARIABLE, "lights[0].directionType",
                                GL_TOP_LEVEL_ARRAY_STRIDE),
               GLint(sizeof(GpuLight)));
     EXPECT_EQ(offsetOf(p, "lights[0].colorIntensity"),
               GLint(sizeof(GpuLightHeader) + offsetof(GpuLight, colorIntensity)));
+    EXPECT_EQ(offsetOf(p, "lights[0].positionRange"),
+              GLint(sizeof(GpuLightHeader) + offsetof(GpuLight, positionRange)));
+    EXPECT_EQ(offsetOf(p, "lights[0].spotShadow"),
+              GLint(sizeof(GpuLightHeader) + offsetof(GpuLight, spotShadow)));
+}
+
+TEST(GpuLayout, ShadowViewsMatchTheShader) {
+    const gl::Program p = buildLayoutProbe();
+    EXPECT_EQ(resourceProperty(p, GL_BUFFER_VARIABLE, "shadowViews[0].lightViewProjection",
+                               GL_TOP_LEVEL_ARRAY_STRIDE),
+              GLint(sizeof(GpuShadowView)));
+    EXPECT_EQ(offsetOf(p, "shadowViews[0].lightViewProjection"),
+              GLint(offsetof(GpuShadowView, lightViewProjection)));
+    EXPECT_EQ(offsetOf(p, "shadowViews[0].params"), GLint(offsetof(GpuShadowView, params)));
 }
 
 TEST(GpuLayout, FrameBlockMatchesTheShader) {
@@ -92,6 +118,14 @@ TEST(GpuLayout, FrameBlockMatchesTheShader) {
               GLint(offsetof(GpuFrame, march)));
     EXPECT_EQ(resourceProperty(p, GL_UNIFORM, "FrameBlock.frustumCorners", GL_OFFSET),
               GLint(offsetof(GpuFrame, frustumCorners)));
+    EXPECT_EQ(resourceProperty(p, GL_UNIFORM, "FrameBlock.sky", GL_OFFSET),
+              GLint(offsetof(GpuFrame, sky)));
+    EXPECT_EQ(resourceProperty(p, GL_UNIFORM, "FrameBlock.fog", GL_OFFSET),
+              GLint(offsetof(GpuFrame, fog)));
+    EXPECT_EQ(resourceProperty(p, GL_UNIFORM, "FrameBlock.shadowMap", GL_OFFSET),
+              GLint(offsetof(GpuFrame, shadowMap)));
+    EXPECT_EQ(resourceProperty(p, GL_UNIFORM, "FrameBlock.ao", GL_OFFSET),
+              GLint(offsetof(GpuFrame, ao)));
     const GLuint block = glGetProgramResourceIndex(p.id(), GL_UNIFORM_BLOCK, "FrameBlock");
     const GLenum property = GL_BUFFER_DATA_SIZE;
     GLint size = 0;
@@ -111,4 +145,5 @@ TEST(ShaderErrors, CompileErrorNamesTheIncludedFileAndLine) {
     EXPECT_FALSE(buildProgram(files, {"passes/fullscreen.vert", "test/main.frag", ""}, error));
     EXPECT_NE(error.find("test/broken.glsl:3"), std::string::npos) << error;
     EXPECT_NE(error.find("undefinedName"), std::string::npos) << error;
+    takeGlDebugErrors(); // the compile error is also a debug message: not the next test's
 }

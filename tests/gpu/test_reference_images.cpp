@@ -17,5 +17,7 @@ TEST_P(ReferenceImage, MatchesWithinTolerance) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, ReferenceImage,
-                         ::testing::Values("demo", "shapes", "csg", "mesh_cut", "gltf_instances"),
+                         ::testing::Values("demo", "shapes", "csg", "mesh_cut", "gltf_instances",
+                                           "modifiers", "pawn", "chessboard", "materials",
+                                           "primitives", "fractals", "smooth_blend"),
                          [](const auto& info) { return std::string(info.param); });

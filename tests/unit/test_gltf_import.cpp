@@ -148,7 +148,7 @@ TEST(GltfImport, PlaneIsATwoByTwoQuadFacingUp) {
     EXPECT_FLOAT_EQ(asset.materials[0].baseColorFactor.x, 0.8f);
     EXPECT_FLOAT_EQ(asset.materials[0].metallicFactor, 0.0f);
     EXPECT_FLOAT_EQ(asset.materials[0].roughnessFactor, 0.5f);
-    EXPECT_EQ(asset.materials[0].baseColorTexture, -1);
+    EXPECT_EQ(asset.materials[0].baseColorTexture.image, -1);
 }
 
 TEST(GltfImport, CubeHas24VerticesWithFlatOutwardNormals) {
@@ -197,7 +197,7 @@ TEST(GltfImport, CheckerPlaneTextureIsDecodedToRgba) {
     EXPECT_EQ(pixel(63, 0)[2], 40); // 7th square along x is dark
     EXPECT_EQ(pixel(5, 9)[3], 255); // opaque alpha added to RGB
     ASSERT_EQ(asset.materials.size(), 1u);
-    EXPECT_EQ(asset.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(asset.materials[0].baseColorTexture.image, 0);
 }
 
 TEST(GltfImport, GlbAndExternalBufferMatchTheGltfCube) {

@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
@@ -357,6 +360,19 @@ std::vector<Case> corpus() {
 TEST(GltfMalformed, Corpus62FilesAllRefusedWithFileAndPointer) {
     const std::vector<Case> cases = corpus();
     EXPECT_EQ(cases.size(), 62u);
+    // RMSC_FUZZ_SEED_DIR=tests/fuzz/seeds/gltf writes the corpus's entry files as fuzzer seeds.
+    if (const char* seedDir = std::getenv("RMSC_FUZZ_SEED_DIR")) {
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const std::filesystem::path entry = cases[i].entry;
+            const auto bytes = cases[i].files.find(cases[i].entry);
+            if (bytes == cases[i].files.end()) continue;
+            char name[32];
+            std::snprintf(name, sizeof name, "malformed-%02zu", i);
+            std::ofstream(std::filesystem::path(seedDir) / (name + entry.extension().string()),
+                          std::ios::binary)
+                << bytes->second;
+        }
+    }
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         Diagnostics diagnostics;

@@ -213,10 +213,10 @@ TEST(SceneErrors, TransformsAreChecked) {
 
 TEST(SceneErrors, TooManyLightsNamesTheLimit) {
     std::string lights;
-    for (int i = 0; i < 65; ++i)
+    for (int i = 0; i < 17; ++i)
         lights += std::string(i ? "," : "") + R"({"type": "directional"})";
     expectOneError(R"({"version": 1, "lights": [)" + lights + "]}", "/lights",
-                   "at most 64 are supported");
+                   "at most 16 are supported");
 }
 
 TEST(SceneErrors, TooManySdfNodesNamesTheLimit) {
@@ -230,8 +230,9 @@ TEST(SceneErrors, TooManySdfNodesNamesTheLimit) {
 }
 
 TEST(SceneErrors, LightsAreChecked) {
-    expectOneError(R"({"version": 1, "lights": [{"type": "point"}]})", "/lights/0/type",
-                   "unknown light type \"point\"; known types: \"directional\"");
+    expectOneError(R"({"version": 1, "lights": [{"type": "area"}]})", "/lights/0/type",
+                   "unknown light type \"area\"; known types: \"directional\", \"point\", "
+                   "\"spot\"");
     expectOneError(R"({"version": 1, "lights": [{"name": "sun"}]})", "/lights/0",
                    "missing \"type\"");
     expectOneError(R"({"version": 1, "lights": [{"type": "directional",
@@ -290,7 +291,7 @@ TEST(SceneErrors, EveryProblemIsReportedInOnePass) {
       "version": 1,
       "camera": {"fov": -5},
       "render": {"max_steps": 0},
-      "lights": [{"type": "spot"}],
+      "lights": [{"type": "area"}],
       "meshes": [{"file": "a.gltf", "scale": 0}],
       "sdf": {"children": [{"shape": "sphere", "radius": -1}, {"shape": "cube"},
                            {"shape": "box", "radus": 1}]}

@@ -1,0 +1,64 @@
+// Shared set-up of the headless commands.
+#include "app/headless_session.hpp"
+
+#include "app/commands.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+namespace rmsc::app {
+
+bool readFrameOptions(const char* command, const ParsedArgs& args, FrameOptions& options) {
+    if (args.has("--size") && !parseSize(args.get("--size", ""), options.width, options.height)) {
+        std::fprintf(stderr, "rmsc %s: --size: expected WxH with sides 1..16384, got '%s'\n",
+                     command, args.get("--size", "").c_str());
+        return false;
+    }
+    if (!parseGlBackend(args.get("--backend", "auto"), options.backend)) {
+        std::fprintf(stderr, "rmsc %s: --backend: expected auto, egl or osmesa, got '%s'\n",
+                     command, args.get("--backend", "").c_str());
+        return false;
+    }
+    const std::string strategy = args.get("--sdf-strategy", "baked");
+    if (std::optional<SdfStrategy> parsed = parseSdfStrategy(strategy)) {
+        options.strategy = *parsed;
+    } else {
+        std::fprintf(stderr,
+                     "rmsc %s: --sdf-strategy: expected baked, buffer or interpreter, got '%s'\n",
+                     command, strategy.c_str());
+        return false;
+    }
+    return true;
+}
+
+int openHeadlessSession(const char* command, const std::string& scenePath,
+                        const FrameOptions& options, HeadlessSession& session) {
+    Diagnostics diagnostics;
+    session.prepared = openScene(scenePath, diagnostics);
+    std::fputs(diagnostics.format().c_str(), stderr);
+    if (!session.prepared) return kExitBadInput;
+
+    std::string error;
+    session.context = createHeadlessContext(options.backend, false, error);
+    if (!session.context) {
+        std::fprintf(stderr, "rmsc %s: %s\n", command, error.c_str());
+        return kExitSystem;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    session.renderer = Renderer::create(ShaderFiles::embedded(), error);
+    if (!session.renderer) {
+        std::fprintf(stderr, "rmsc %s: %s\n", command, error.c_str());
+        return kExitSystem;
+    }
+    session.gpuScene.emplace(uploadScene(*session.prepared, options.strategy));
+    if (!session.renderer->prepare(*session.gpuScene, error)) {
+        std::fprintf(stderr, "rmsc %s: %s\n", command, error.c_str());
+        return kExitSystem;
+    }
+    glFinish();
+    session.shaderBuildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return kExitOk;
+}
+
+} // namespace rmsc::app

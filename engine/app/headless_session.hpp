@@ -1,0 +1,40 @@
+// What `rmsc render` and `rmsc bench` share: the common options (size, backend) and opening a
+// scene with a headless context, a renderer and the scene on the GPU, reporting any failure
+// with the right exit code.
+#pragma once
+
+#include "app/options.hpp"
+#include "gl/context.hpp"
+#include "render/renderer.hpp"
+#include "scene/prepared_scene.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace rmsc::app {
+
+struct FrameOptions {
+    int width = 640;
+    int height = 360;
+    GlBackend backend = GlBackend::Auto;
+    SdfStrategy strategy = SdfStrategy::Baked;
+};
+
+// Reads --size, --backend and --sdf-strategy; prints the problem and returns false on a bad value.
+bool readFrameOptions(const char* command, const ParsedArgs& args, FrameOptions& options);
+
+struct HeadlessSession {
+    std::optional<PreparedScene> prepared;
+    std::unique_ptr<HeadlessContext> context;
+    std::optional<Renderer> renderer;
+    std::optional<GpuScene> gpuScene;
+    double shaderBuildMs = 0.0; // time to build the renderer's programs for the scene
+};
+
+// Opens `scenePath` ("" = the built-in demo), prints diagnostics, creates the context and the
+// renderer and uploads the scene. Returns kExitOk or the exit code of the failure.
+int openHeadlessSession(const char* command, const std::string& scenePath,
+                        const FrameOptions& options, HeadlessSession& session);
+
+} // namespace rmsc::app

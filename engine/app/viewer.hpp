@@ -1,0 +1,158 @@
+// `rmsc view`: the interactive viewer and scene editor. One class holds the window, the editor
+// document, the GPU copy of the scene and the UI state; its parts live in viewer_app.cpp (the
+// frame loop, rendering, picking, files), viewer_panels.cpp (the Dear ImGui panels) and
+// viewer_controls.cpp (camera and viewport gestures).
+#pragma once
+
+#include "app/viewer_display.hpp"
+#include "app/viewer_input.hpp"
+#include "app/viewer_script.hpp"
+#include "editor/adaptive_scale.hpp"
+#include "editor/document.hpp"
+#include "editor/file_watcher.hpp"
+#include "editor/fly_camera.hpp"
+#include "gl/window.hpp"
+#include "render/renderer.hpp"
+
+#include <chrono>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace rmsc::app {
+
+struct ViewerOptions {
+    std::filesystem::path scene;  // "" = the built-in demo
+    std::filesystem::path script; // "" = interactive
+    int width = 1280, height = 720;
+    float targetMilliseconds = 33.0f;
+    bool watchShaders = true; // read shaders from the source tree and reload them on change
+};
+
+int runViewer(const ViewerOptions& options);
+
+// A rectangle of the window in window pixels (top-left origin).
+struct Rect {
+    float x = 0, y = 0, width = 0, height = 0;
+    bool contains(glm::vec2 p) const {
+        return p.x >= x && p.y >= y && p.x < x + width && p.y < y + height;
+    }
+};
+
+class Viewer {
+  public:
+    Viewer(const ViewerOptions& options, std::unique_ptr<Window> window);
+    ~Viewer();
+    int run(); // the frame loop; returns the exit code
+
+    // --- state shared by the parts ---
+    ViewerOptions options;
+    std::unique_ptr<Window> window;
+    InputState input;
+    std::optional<Script> script;
+    int frameNumber = 0;
+
+    editor::Document document;
+    editor::FlyCamera camera;
+    Camera sceneCameraBase; // fov and planes for the view
+    editor::AdaptiveScale adaptive;
+    ViewMode viewMode = ViewMode::Color;
+    bool showOverlay = true;
+
+    // GPU side
+    ShaderFiles shaderFiles;
+    std::optional<Renderer> renderer;
+    std::optional<DisplayPass> display;
+    std::optional<GpuScene> gpuScene;
+    std::optional<PreparedScene> prepared; // last scene that compiled
+    std::uint64_t uploadedRevision = 0;
+    std::optional<FrameTargets> targets;
+    float lastRenderMilliseconds = 0.0f;
+    float lastRenderScale = 1.0f;
+    float frameMilliseconds = 0.0f;
+    bool viewChanged = true;
+    Camera lastRenderedCamera;
+    std::uint64_t lastRenderedRevision = 0;
+    int lastViewMode = -1;
+
+    // Messages
+    std::string openError;   // the scene named on the command line could not be opened
+    std::string sceneError;  // the current scene does not compile / a reload failed
+    std::string shaderError; // the shaders on disk do not compile
+    std::string fileError;   // the last save / open failed
+    std::deque<std::pair<std::string, double>> notices; // short messages with their time
+
+    // Files
+    editor::FileWatcher sceneWatcher, shaderWatcher;
+    double lastPoll = 0.0;
+    bool externalChangePending = false;
+
+    // Gestures
+    struct Grab {
+        bool active = false;
+        int axis = -1; // -1 free (view plane), 0 x, 1 y, 2 z
+        glm::vec2 startMouse{0.0f};
+        glm::vec3 startPosition{0.0f}; // local position of the object at the start
+        glm::vec3 startWorld{0.0f};
+        glm::vec2 lastMoved{0.0f}; // mouse movement already applied
+    } grab;
+    bool orbiting = false;
+    bool looking = false;
+
+    // Modal dialogs
+    bool askClose = false;
+    enum class AfterDiscard { Quit, New } afterDiscard = AfterDiscard::Quit;
+    bool askPath = false;
+    enum class PathPurpose { Open, SaveAs, AddMesh } pathPurpose = PathPurpose::Open;
+    std::string pathBuffer;
+    bool quitRequested = false;
+    bool quitNow = false;
+
+    // Layout (window pixels)
+    Rect viewport;
+    float leftPanelWidth = 270.0f, rightPanelWidth = 340.0f;
+
+    // --- parts ---
+    void notice(const std::string& text);
+    double now() const;
+    Camera viewCamera() const { return camera.toCamera(sceneCameraBase); }
+
+    // viewer_app.cpp
+    bool loadShaders(bool initial);
+    void syncGpuScene();
+    void renderView();
+    void pick(glm::vec2 windowPixel);
+    bool writeScreenshot(const std::string& path, std::string& error);
+    bool writeWindowShot(const std::string& path, std::string& error);
+    void screenshotToDefaultFile();
+    void pollFiles();
+    void openFile(const std::filesystem::path& path);
+    void newScene();
+    void save();
+    void saveAs(const std::filesystem::path& path);
+    void resetCameraToScene();
+    void saveCameraToScene();
+    void requestClose();
+
+    // viewer_panels.cpp
+    void drawUi();
+    void drawMenuBar();
+    void drawHierarchy();
+    void drawInspector();
+    void drawOverlay();
+    void drawModals();
+
+    // viewer_controls.cpp
+    void handleShortcuts();
+    void handleCamera(float seconds);
+    void handleViewportMouse();
+    void updateGrab();
+    void frameSelection();
+
+  private:
+    std::chrono::steady_clock::time_point start_;
+};
+
+} // namespace rmsc::app

@@ -1,0 +1,35 @@
+// The viewer's display pass: draws the last rendered frame into the window's viewport
+// rectangle (scaling it up when it was rendered at a lower resolution), as colour, normals,
+// depth or object ids, with the selection outlined. Program: shaders/passes/viewer_display.*.
+#pragma once
+
+#include "gl/program.hpp"
+#include "render/renderer.hpp"
+
+#include <optional>
+#include <string>
+
+namespace rmsc::app {
+
+enum class ViewMode { Color = 0, Normals = 1, Depth = 2, ObjectId = 3 };
+
+struct DisplayInput {
+    const FrameTargets* frame = nullptr;
+    ViewMode mode = ViewMode::Color;
+    unsigned selectedFirst = 0, selectedLast = 0; // ids [first, last) to outline
+    float nearPlane = 0.05f, farPlane = 200.0f;
+    int x = 0, y = 0, width = 1, height = 1; // viewport in framebuffer pixels, y from the bottom
+};
+
+class DisplayPass {
+  public:
+    static std::optional<DisplayPass> create(const ShaderFiles& files, std::string& error);
+    void draw(const DisplayInput& input) const; // into the default framebuffer
+
+  private:
+    gl::Program program_;
+    gl::VertexArray emptyVertexArray_;
+    GLint mode_ = -1, selected_ = -1, depthRange_ = -1, viewportSize_ = -1;
+};
+
+} // namespace rmsc::app

@@ -1,0 +1,766 @@
+// The viewer's Dear ImGui panels: menu bar, hierarchy (with drag and drop), inspector (object,
+// material, light, render settings, camera, view), the overlay with timings and messages, and
+// the modal dialogs (see viewer.hpp). Widgets edit the document's scene in place and mark it
+// changed; the frame loop commits one undo step when no widget is active any more.
+#include "app/viewer.hpp"
+
+#include "editor/scene_edits.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/quaternion.hpp>
+
+namespace rmsc::app {
+namespace {
+
+using editor::Selection;
+using editor::SelectionKind;
+
+struct OpName {
+    SdfOp op;
+    const char* label;
+};
+constexpr OpName kOps[] = {
+    {SdfOp::Union, "union"},
+    {SdfOp::Subtraction, "subtraction"},
+    {SdfOp::Intersection, "intersection"},
+    {SdfOp::SmoothUnion, "smooth union"},
+    {SdfOp::SmoothSubtraction, "smooth subtraction"},
+    {SdfOp::SmoothIntersection, "smooth intersection"},
+};
+
+const char* opLabel(SdfOp op) {
+    for (const OpName& o : kOps)
+        if (o.op == op) return o.label;
+    return "?";
+}
+
+bool isSmooth(SdfOp op) {
+    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
+           op == SdfOp::SmoothIntersection;
+}
+
+std::string pathId(const std::vector<int>& path) {
+    std::string id = "r";
+    for (int i : path)
+        id += "." + std::to_string(i);
+    return id;
+}
+
+constexpr const char* kNodePayload = "RMSC_SDF_NODE";
+
+// A drag step that follows the size of what is edited (1% of it), never below 0.001.
+float stepFor(float size) {
+    return std::max(0.001f, std::abs(size) * 0.01f);
+}
+
+void helpTooltip(std::string_view text) {
+    if (!text.empty() && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%.*s", int(text.size()), text.data());
+}
+
+} // namespace
+
+void Viewer::drawUi() {
+    drawMenuBar();
+    drawHierarchy();
+    drawInspector();
+    drawOverlay();
+    drawModals();
+}
+
+void Viewer::drawMenuBar() {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("New")) {
+            if (document.dirty()) {
+                askClose = true;
+                afterDiscard = AfterDiscard::New;
+            } else {
+                newScene();
+            }
+        }
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) {
+            askPath = true;
+            pathPurpose = PathPurpose::Open;
+            pathBuffer = document.file().string();
+        }
+        if (ImGui::MenuItem("Save", "Ctrl+S")) save();
+        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) {
+            askPath = true;
+            pathPurpose = PathPurpose::SaveAs;
+            pathBuffer = document.file().empty() ? "scene.json" : document.file().string();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Screenshot", "F12")) screenshotToDefaultFile();
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit")) {
+            afterDiscard = AfterDiscard::Quit;
+            requestClose();
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        const std::string undo = "Undo " + document.undoLabel();
+        const std::string redo = "Redo " + document.redoLabel();
+        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, document.canUndo())) document.undo();
+        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, document.canRedo()))
+            document.redo();
+        ImGui::Separator();
+        const bool selected = !document.selection.empty();
+        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, selected))
+            document.apply("Duplicate", [](Scene& scene, Selection& selection) {
+                selection = editor::duplicateSelected(scene, selection);
+            });
+        if (ImGui::MenuItem("Delete", "Del", false, selected))
+            document.apply("Delete", [](Scene& scene, Selection& selection) {
+                selection = editor::deleteSelected(scene, selection);
+            });
+        if (ImGui::MenuItem("Move (grab)", "G, then X/Y/Z", false, false)) {
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Add")) {
+        if (ImGui::BeginMenu("Shape")) {
+            for (const PrimitiveSpec& spec : primitiveCatalogue()) {
+                if (ImGui::MenuItem(std::string(spec.name).c_str()))
+                    document.apply("Add " + std::string(spec.name),
+                                   [&](Scene& scene, Selection& selection) {
+                                       selection = Selection::sdf(editor::insertSdfNode(
+                                           scene, selection, editor::makeShape(spec.id)));
+                                   });
+                helpTooltip(spec.description);
+            }
+            ImGui::EndMenu();
+        }
+        if (ImGui::BeginMenu("Group")) {
+            for (const OpName& op : kOps)
+                if (ImGui::MenuItem(op.label))
+                    document.apply("Add group", [&](Scene& scene, Selection& selection) {
+                        selection = Selection::sdf(
+                            editor::insertSdfNode(scene, selection, editor::makeGroup(op.op)));
+                    });
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Directional light"))
+            document.apply("Add light", [](Scene& scene, Selection& selection) {
+                selection = Selection::light(editor::addLight(scene));
+            });
+        if (ImGui::MenuItem("glTF mesh from a file...")) {
+            askPath = true;
+            pathPurpose = PathPurpose::AddMesh;
+            pathBuffer.clear();
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        const char* names[] = {"Colour", "Normals", "Depth", "Object id"};
+        for (int i = 0; i < 4; ++i)
+            if (ImGui::MenuItem(names[i], nullptr, int(viewMode) == i)) viewMode = ViewMode(i);
+        ImGui::Separator();
+        ImGui::MenuItem("Overlay", nullptr, &showOverlay);
+        ImGui::MenuItem("Adaptive resolution", nullptr, &adaptive.enabled);
+        ImGui::SetNextItemWidth(120);
+        ImGui::DragFloat("target ms", &adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f, "%.0f ms");
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Camera")) {
+        if (ImGui::MenuItem("Frame selection", "F")) frameSelection();
+        if (ImGui::MenuItem("Save camera to scene")) saveCameraToScene();
+        if (ImGui::MenuItem("Reset to scene camera")) resetCameraToScene();
+        ImGui::EndMenu();
+    }
+    const std::string title =
+        (document.file().empty() ? std::string("(unsaved scene)") : document.file().string()) +
+        (document.dirty() ? " *" : "");
+    ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(title.c_str()).x - 16);
+    ImGui::TextDisabled("%s", title.c_str());
+    ImGui::EndMainMenuBar();
+}
+
+void Viewer::drawHierarchy() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(0, top));
+    ImGui::SetNextWindowSize(ImVec2(leftPanelWidth, io.DisplaySize.y - top));
+    ImGui::Begin("Scene", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+
+    if (ImGui::Button("+ Shape")) ImGui::OpenPopup("add shape");
+    if (ImGui::BeginPopup("add shape")) {
+        for (const PrimitiveSpec& spec : primitiveCatalogue())
+            if (ImGui::Selectable(std::string(spec.name).c_str()))
+                document.apply(
+                    "Add " + std::string(spec.name), [&](Scene& scene, Selection& selection) {
+                        selection = Selection::sdf(
+                            editor::insertSdfNode(scene, selection, editor::makeShape(spec.id)));
+                    });
+        ImGui::EndPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("+ Group")) ImGui::OpenPopup("add group");
+    if (ImGui::BeginPopup("add group")) {
+        for (const OpName& op : kOps)
+            if (ImGui::Selectable(op.label))
+                document.apply("Add group", [&](Scene& scene, Selection& selection) {
+                    selection = Selection::sdf(
+                        editor::insertSdfNode(scene, selection, editor::makeGroup(op.op)));
+                });
+        ImGui::EndPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("+ Light"))
+        document.apply("Add light", [](Scene& scene, Selection& selection) {
+            selection = Selection::light(editor::addLight(scene));
+        });
+    ImGui::SameLine();
+    if (ImGui::Button("+ Mesh")) {
+        askPath = true;
+        pathPurpose = PathPurpose::AddMesh;
+        pathBuffer.clear();
+    }
+    ImGui::Separator();
+
+    // The SDF tree. Moves found while drawing are applied afterwards, not mid-traversal.
+    struct PendingMove {
+        std::vector<int> from, into;
+        int index = -1;
+    };
+    std::optional<PendingMove> move;
+    const Scene& scene = document.scene();
+    std::function<void(const SdfNode&, std::vector<int>&)> drawNode = [&](const SdfNode& node,
+                                                                          std::vector<int>& path) {
+        ImGuiTreeNodeFlags flags =
+            ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth |
+            ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_OpenOnDoubleClick;
+        if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+        if (document.selection == Selection::sdf(path)) flags |= ImGuiTreeNodeFlags_Selected;
+        const std::string label =
+            (node.isGroup ? std::string("[") + opLabel(node.op) + "] " : std::string()) +
+            editor::displayName(node) + "##" + pathId(path);
+        const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
+        if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen())
+            document.selection = Selection::sdf(path);
+        if (!path.empty() && ImGui::BeginDragDropSource()) {
+            ImGui::SetDragDropPayload(kNodePayload, path.data(), path.size() * sizeof(int));
+            ImGui::TextUnformatted(editor::displayName(node).c_str());
+            ImGui::EndDragDropSource();
+        }
+        if (ImGui::BeginDragDropTarget()) {
+            if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kNodePayload)) {
+                const int* data = static_cast<const int*>(payload->Data);
+                std::vector<int> from(data, data + payload->DataSize / int(sizeof(int)));
+                if (node.isGroup)
+                    move = PendingMove{from, path, -1}; // into the group, last
+                else
+                    move = PendingMove{from, std::vector<int>(path.begin(), path.end() - 1),
+                                       path.back()};
+            }
+            ImGui::EndDragDropTarget();
+        }
+        if (node.isGroup && open) {
+            for (std::size_t i = 0; i < node.children.size(); ++i) {
+                path.push_back(int(i));
+                drawNode(node.children[i], path);
+                path.pop_back();
+            }
+            ImGui::TreePop();
+        }
+    };
+    ImGui::TextDisabled("SDF objects");
+    if (scene.sdf) {
+        std::vector<int> path;
+        drawNode(*scene.sdf, path);
+    } else {
+        ImGui::TextDisabled("  (none: add a shape)");
+    }
+    if (move) {
+        const PendingMove m = *move;
+        document.apply("Reorder", [m](Scene& s, Selection& selection) {
+            if (auto to = editor::moveSdfNode(s, m.from, m.into, m.index))
+                selection = Selection::sdf(*to);
+        });
+    }
+
+    ImGui::Spacing();
+    ImGui::TextDisabled("Meshes");
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const std::string label =
+            (scene.meshes[i].name.empty() ? scene.meshes[i].file : scene.meshes[i].name) +
+            "##mesh" + std::to_string(i);
+        if (ImGui::Selectable(label.c_str(), document.selection == Selection::mesh(int(i))))
+            document.selection = Selection::mesh(int(i));
+    }
+    ImGui::Spacing();
+    ImGui::TextDisabled("Lights");
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const std::string label = (scene.lights[i].name.empty() ? "light " + std::to_string(i + 1)
+                                                                : scene.lights[i].name) +
+                                  "##light" + std::to_string(i);
+        if (ImGui::Selectable(label.c_str(), document.selection == Selection::light(int(i))))
+            document.selection = Selection::light(int(i));
+    }
+    ImGui::Spacing();
+    ImGui::Separator();
+    ImGui::TextDisabled("Drag nodes onto a group to reparent,\nonto a shape to place before it.\n"
+                        "Click in the view to select;\nG moves (X/Y/Z: axis), F frames.\n"
+                        "Right mouse + WASD flies;\nAlt + drag orbits.");
+    ImGui::End();
+}
+
+namespace {
+
+// Transform widgets; `world` shows the position in world space (through `parentWorld`).
+bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float size) {
+    bool changed = false;
+    glm::vec3 position = world ? glm::vec3(parentWorld * glm::vec4(t.position, 1.0f)) : t.position;
+    if (ImGui::DragFloat3("position", &position.x, stepFor(size))) {
+        t.position =
+            world ? glm::vec3(glm::inverse(parentWorld) * glm::vec4(position, 1.0f)) : position;
+        changed = true;
+    }
+    glm::vec3 euler = glm::degrees(glm::eulerAngles(t.rotation));
+    if (ImGui::DragFloat3("rotation", &euler.x, 0.5f, -360.0f, 360.0f, "%.1f°")) {
+        t.rotation = glm::quat(glm::radians(euler));
+        changed = true;
+    }
+    if (ImGui::DragFloat3("scale", &t.scale.x, 0.005f, 0.001f, 1000.0f, "%.3f",
+                          ImGuiSliderFlags_AlwaysClamp))
+        changed = true;
+    return changed;
+}
+
+bool editMaterial(Material& m) {
+    bool changed = false;
+    changed |= ImGui::ColorEdit3("base colour", &m.baseColor.x, ImGuiColorEditFlags_Float);
+    changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f);
+    changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f);
+    changed |= ImGui::ColorEdit3("emissive", &m.emissive.x,
+                                 ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    return changed;
+}
+
+// Material choice: -1 is "inherit" (SDF) or "the glTF's own" (meshes); returns true on change.
+bool chooseMaterial(Scene& scene, int& material, const char* noneLabel) {
+    bool changed = false;
+    const char* current = material >= 0 && material < int(scene.materials.size())
+                              ? scene.materials[std::size_t(material)].name.c_str()
+                              : noneLabel;
+    if (ImGui::BeginCombo("material", current)) {
+        if (ImGui::Selectable(noneLabel, material < 0)) {
+            material = -1;
+            changed = true;
+        }
+        for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+            const std::string label = scene.materials[i].name + "##m" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str(), material == int(i))) {
+                material = int(i);
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("new")) {
+        Material m = material >= 0 && material < int(scene.materials.size())
+                         ? scene.materials[std::size_t(material)]
+                         : Material{};
+        m.name = "material " + std::to_string(scene.materials.size() + 1);
+        scene.materials.push_back(m);
+        material = int(scene.materials.size()) - 1;
+        changed = true;
+    }
+    if (material >= 0 && material < int(scene.materials.size())) {
+        ImGui::Indent();
+        Material& m = scene.materials[std::size_t(material)];
+        changed |= ImGui::InputText("name##material", &m.name);
+        changed |= editMaterial(m);
+        ImGui::Unindent();
+    }
+    return changed;
+}
+
+} // namespace
+
+void Viewer::drawInspector() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - rightPanelWidth, top));
+    ImGui::SetNextWindowSize(ImVec2(rightPanelWidth, io.DisplaySize.y - top));
+    ImGui::Begin("Inspector", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-90);
+    static bool worldCoordinates = false;
+    if (ImGui::BeginTabBar("inspector tabs")) {
+        if (ImGui::BeginTabItem("Object")) {
+            Scene& scene = document.editScene();
+            const Selection selection = document.selection;
+            if (selection.kind == SelectionKind::Sdf) {
+                SdfNode* node = editor::findSdfNode(scene, selection.sdfPath);
+                const std::optional<editor::Bounds> bounds =
+                    editor::selectionBounds(scene, selection);
+                const float size = bounds ? bounds->radius : 1.0f;
+                if (ImGui::InputText("name", &node->name)) document.markChanged("Rename");
+                ImGui::Checkbox("world coordinates", &worldCoordinates);
+                ImGui::Separator();
+                ImGui::TextDisabled("Transform");
+                if (editTransform(node->transform, worldCoordinates,
+                                  editor::sdfParentWorldMatrix(scene, selection.sdfPath), size))
+                    document.markChanged("Transform");
+                ImGui::Separator();
+                if (node->isGroup) {
+                    ImGui::TextDisabled("Group");
+                    if (ImGui::BeginCombo("operation", opLabel(node->op))) {
+                        for (const OpName& op : kOps) {
+                            if (ImGui::Selectable(op.label, node->op == op.op)) {
+                                node->op = op.op;
+                                if (isSmooth(op.op) && node->smoothness <= 0.0f)
+                                    node->smoothness = size * 0.1f;
+                                document.markChanged("Operation");
+                            }
+                        }
+                        ImGui::EndCombo();
+                    }
+                    if (isSmooth(node->op) &&
+                        ImGui::DragFloat("smoothness", &node->smoothness, stepFor(size) * 0.5f,
+                                         0.0f, size * 4.0f, "%.4f", ImGuiSliderFlags_AlwaysClamp))
+                        document.markChanged("Smoothness");
+                    helpTooltip("Blend distance of the smooth operation, in world units; the drag "
+                                "step follows the group's size.");
+                } else {
+                    ImGui::TextDisabled("Shape");
+                    const PrimitiveSpec& spec = primitiveSpec(node->primitive);
+                    if (ImGui::BeginCombo("shape", std::string(spec.name).c_str())) {
+                        for (const PrimitiveSpec& other : primitiveCatalogue()) {
+                            if (ImGui::Selectable(std::string(other.name).c_str(),
+                                                  other.id == spec.id) &&
+                                other.id != spec.id) {
+                                // Parameters of the same name keep their values.
+                                PrimitiveParams params = defaultParams(other);
+                                for (int i = 0; i < int(other.params.size()); ++i)
+                                    for (int j = 0; j < int(spec.params.size()); ++j)
+                                        if (other.params[std::size_t(i)].name ==
+                                                spec.params[std::size_t(j)].name &&
+                                            other.params[std::size_t(i)].components ==
+                                                spec.params[std::size_t(j)].components)
+                                            for (int c = 0;
+                                                 c < other.params[std::size_t(i)].components; ++c)
+                                                params[std::size_t(paramOffset(other, i) + c)] =
+                                                    node->params[std::size_t(paramOffset(spec, j) +
+                                                                             c)];
+                                if (node->name == spec.name) node->name = std::string(other.name);
+                                node->primitive = other.id;
+                                node->params = params;
+                                document.markChanged("Shape type");
+                            }
+                            helpTooltip(other.description);
+                        }
+                        ImGui::EndCombo();
+                    }
+                    helpTooltip(spec.description);
+                    const PrimitiveSpec& now = primitiveSpec(node->primitive);
+                    for (int i = 0; i < int(now.params.size()); ++i) {
+                        const ParamSpec& p = now.params[std::size_t(i)];
+                        float* value = &node->params[std::size_t(paramOffset(now, i))];
+                        const std::string name(p.name);
+                        float magnitude = 0.0f;
+                        for (int c = 0; c < p.components; ++c)
+                            magnitude = std::max(magnitude, std::abs(value[c]));
+                        const float step = stepFor(std::max(magnitude, 0.1f));
+                        const bool edited = p.components == 3
+                                                ? ImGui::DragFloat3(name.c_str(), value, step,
+                                                                    p.minValue, p.maxValue, "%.3f",
+                                                                    ImGuiSliderFlags_AlwaysClamp)
+                                                : ImGui::DragFloat(name.c_str(), value, step,
+                                                                   p.minValue, p.maxValue, "%.3f",
+                                                                   ImGuiSliderFlags_AlwaysClamp);
+                        if (edited) document.markChanged("Edit " + name);
+                        helpTooltip(p.description);
+                    }
+                }
+                ImGui::Separator();
+                ImGui::TextDisabled("Material");
+                if (chooseMaterial(scene, node->material, "(inherit)"))
+                    document.markChanged("Material");
+                ImGui::Separator();
+                ImGui::PushStyleColor(ImGuiCol_Text,
+                                      ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+                ImGui::TextWrapped("Modifiers, textures and shell mode: not in the editor yet.");
+                ImGui::PopStyleColor();
+                ImGui::Spacing();
+                if (ImGui::Button("Duplicate"))
+                    document.apply("Duplicate", [](Scene& s, Selection& sel) {
+                        sel = editor::duplicateSelected(s, sel);
+                    });
+                ImGui::SameLine();
+                if (ImGui::Button("Delete"))
+                    document.apply("Delete", [](Scene& s, Selection& sel) {
+                        sel = editor::deleteSelected(s, sel);
+                    });
+            } else if (selection.kind == SelectionKind::Mesh) {
+                MeshInstance& mesh = scene.meshes[std::size_t(selection.index)];
+                if (ImGui::InputText("name", &mesh.name)) document.markChanged("Rename");
+                ImGui::TextDisabled("file: %s", mesh.file.c_str());
+                ImGui::Separator();
+                const float size = std::max(
+                    {mesh.transform.scale.x, mesh.transform.scale.y, mesh.transform.scale.z});
+                if (editTransform(mesh.transform, false, glm::mat4(1.0f), size))
+                    document.markChanged("Transform");
+                ImGui::Separator();
+                if (chooseMaterial(scene, mesh.materialOverride, "(glTF materials)"))
+                    document.markChanged("Material");
+                if (ImGui::Button("Duplicate"))
+                    document.apply("Duplicate", [](Scene& s, Selection& sel) {
+                        sel = editor::duplicateSelected(s, sel);
+                    });
+                ImGui::SameLine();
+                if (ImGui::Button("Delete"))
+                    document.apply("Delete", [](Scene& s, Selection& sel) {
+                        sel = editor::deleteSelected(s, sel);
+                    });
+            } else if (selection.kind == SelectionKind::Light) {
+                Light& light = scene.lights[std::size_t(selection.index)];
+                if (ImGui::InputText("name", &light.name)) document.markChanged("Rename");
+                ImGui::TextDisabled("directional light");
+                // Direction as azimuth / elevation: dragging stays on the unit sphere.
+                const glm::vec3 d = glm::normalize(light.direction);
+                float azimuth = glm::degrees(std::atan2(d.x, d.z));
+                float elevation = glm::degrees(std::asin(std::clamp(-d.y, -1.0f, 1.0f)));
+                bool changed =
+                    ImGui::DragFloat("azimuth", &azimuth, 0.5f, -180.0f, 180.0f, "%.1f°");
+                changed |= ImGui::DragFloat("elevation", &elevation, 0.5f, -90.0f, 90.0f, "%.1f°",
+                                            ImGuiSliderFlags_AlwaysClamp);
+                helpTooltip("Height of the light above the horizon; 90 shines straight down.");
+                if (changed) {
+                    const float a = glm::radians(azimuth), e = glm::radians(elevation);
+                    light.direction = glm::vec3(std::sin(a) * std::cos(e), -std::sin(e),
+                                                std::cos(a) * std::cos(e));
+                    document.markChanged("Light direction");
+                }
+                if (ImGui::ColorEdit3("colour", &light.color.x, ImGuiColorEditFlags_Float))
+                    document.markChanged("Light colour");
+                if (ImGui::DragFloat("intensity", &light.intensity, 0.02f, 0.0f, 1000.0f, "%.2f",
+                                     ImGuiSliderFlags_AlwaysClamp))
+                    document.markChanged("Light intensity");
+                if (ImGui::Button("Duplicate"))
+                    document.apply("Duplicate", [](Scene& s, Selection& sel) {
+                        sel = editor::duplicateSelected(s, sel);
+                    });
+                ImGui::SameLine();
+                if (ImGui::Button("Delete"))
+                    document.apply("Delete", [](Scene& s, Selection& sel) {
+                        sel = editor::deleteSelected(s, sel);
+                    });
+            } else {
+                ImGui::TextWrapped("Nothing selected. Click an object in the view or in the Scene "
+                                   "panel, or add one with the + buttons.");
+            }
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Render")) {
+            RenderSettings& r = document.editScene().render;
+            bool changed = false;
+            changed |= ImGui::DragInt("max steps", &r.maxSteps, 1.0f, 1, 4096, "%d",
+                                      ImGuiSliderFlags_AlwaysClamp);
+            changed |= ImGui::DragFloat("max distance", &r.maxDistance, 0.5f, 0.1f, 10000.0f,
+                                        "%.1f", ImGuiSliderFlags_AlwaysClamp);
+            changed |= ImGui::DragFloat(
+                "surface epsilon", &r.surfaceEpsilon, 0.00005f, 0.000001f, 0.1f, "%.6f",
+                ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+            changed |= ImGui::ColorEdit3("background", &r.background.x, ImGuiColorEditFlags_Float);
+            changed |= ImGui::ColorEdit3("ambient", &r.ambient.x, ImGuiColorEditFlags_Float);
+            changed |= ImGui::DragFloat("exposure", &r.exposure, 0.01f, 0.0f, 100.0f, "%.2f",
+                                        ImGuiSliderFlags_AlwaysClamp);
+            if (changed) document.markChanged("Render settings");
+            ImGui::Separator();
+            ImGui::TextDisabled("Camera");
+            Camera& c = document.editScene().camera;
+            bool cameraChanged = ImGui::DragFloat("fov", &c.fovYDegrees, 0.2f, 1.0f, 170.0f,
+                                                  "%.1f°", ImGuiSliderFlags_AlwaysClamp);
+            cameraChanged |=
+                ImGui::DragFloat("near", &c.nearPlane, 0.001f, 0.0001f, c.farPlane * 0.5f, "%.4f",
+                                 ImGuiSliderFlags_AlwaysClamp);
+            cameraChanged |= ImGui::DragFloat("far", &c.farPlane, 0.5f, c.nearPlane * 2.0f,
+                                              100000.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+            if (cameraChanged) {
+                sceneCameraBase.fovYDegrees = c.fovYDegrees;
+                sceneCameraBase.nearPlane = c.nearPlane;
+                sceneCameraBase.farPlane = c.farPlane;
+                document.markChanged("Camera lens");
+            }
+            if (ImGui::Button("Save camera to scene")) saveCameraToScene();
+            ImGui::SameLine();
+            if (ImGui::Button("Reset to scene camera")) resetCameraToScene();
+            ImGui::DragFloat("fly speed", &camera.speed, 0.05f, 0.01f, 1000.0f, "%.2f m/s");
+            ImGui::Separator();
+            ImGui::TextDisabled("View");
+            const char* names[] = {"colour", "normals", "depth", "object id"};
+            int mode = int(viewMode);
+            if (ImGui::Combo("show", &mode, names, 4)) viewMode = ViewMode(mode);
+            ImGui::Checkbox("adaptive resolution", &adaptive.enabled);
+            ImGui::DragFloat("target", &adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f,
+                             "%.0f ms/frame");
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+void Viewer::drawOverlay() {
+    const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoDecoration |
+                                   ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (showOverlay) {
+        ImGui::SetNextWindowPos(ImVec2(viewport.x + 8, viewport.y + 8));
+        ImGui::SetNextWindowBgAlpha(0.55f);
+        ImGui::Begin("overlay", nullptr, fixed | ImGuiWindowFlags_NoInputs);
+        const int w = targets ? targets->display.width : 0,
+                  h = targets ? targets->display.height : 0;
+        ImGui::Text("frame %.1f ms   render %.1f ms", frameMilliseconds, lastRenderMilliseconds);
+        ImGui::Text("render scale %.0f%% (%dx%d)%s", lastRenderScale * 100.0f, w, h,
+                    adaptive.enabled ? "" : "  adaptive off");
+        const char* names[] = {"colour", "normals", "depth", "object id"};
+        ImGui::Text("view: %s   speed %.2f m/s", names[int(viewMode)], camera.speed);
+        if (grab.active)
+            ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1),
+                               "Move %s: mouse moves, X/Y/Z axis, click/Enter keeps, Esc cancels",
+                               grab.axis < 0    ? "(view plane)"
+                               : grab.axis == 0 ? "along X"
+                               : grab.axis == 1 ? "along Y"
+                                                : "along Z");
+        const double t = now();
+        for (const auto& [text, when] : notices)
+            if (t - when < 4.0) ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", text.c_str());
+        ImGui::End();
+    }
+    std::string errors;
+    for (const std::string* e : {&openError, &sceneError, &shaderError, &fileError})
+        if (!e->empty()) errors += (errors.empty() ? "" : "\n") + *e;
+    if (!errors.empty()) {
+        ImGui::SetNextWindowPos(ImVec2(viewport.x + 8, viewport.y + viewport.height - 8), 0,
+                                ImVec2(0, 1));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
+                                            ImVec2(viewport.width - 16, viewport.height * 0.5f));
+        ImGui::SetNextWindowBgAlpha(0.85f);
+        ImGui::Begin("problems", nullptr, fixed & ~ImGuiWindowFlags_NoDecoration);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::PushTextWrapPos(viewport.width - 40);
+        ImGui::TextUnformatted(errors.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("dismiss")) {
+            openError.clear();
+            fileError.clear();
+        }
+        ImGui::End();
+    }
+}
+
+void Viewer::drawModals() {
+    if (askClose) {
+        ImGui::OpenPopup("Unsaved changes");
+        askClose = false;
+    }
+    ImGui::SetNextWindowPos(
+        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("The scene has unsaved changes.");
+        if (ImGui::Button("Save")) {
+            save();
+            if (!document.dirty()) {
+                if (afterDiscard == AfterDiscard::Quit)
+                    quitNow = true;
+                else
+                    newScene();
+            }
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard changes")) {
+            if (afterDiscard == AfterDiscard::Quit)
+                quitNow = true;
+            else
+                newScene();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+            ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+
+    if (askPath) {
+        ImGui::OpenPopup("File");
+        askPath = false;
+    }
+    ImGui::SetNextWindowPos(
+        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        const char* what = pathPurpose == PathPurpose::Open     ? "Open scene file (.json):"
+                           : pathPurpose == PathPurpose::SaveAs ? "Save scene as (.json):"
+                                                                : "Add a glTF mesh (.gltf / .glb):";
+        ImGui::TextUnformatted(what);
+        if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+        ImGui::SetNextItemWidth(420);
+        const bool entered =
+            ImGui::InputText("##path", &pathBuffer, ImGuiInputTextFlags_EnterReturnsTrue);
+        if ((ImGui::Button("OK") || entered) && !pathBuffer.empty()) {
+            const std::filesystem::path path = pathBuffer;
+            if (pathPurpose == PathPurpose::Open) {
+                openFile(path);
+            } else if (pathPurpose == PathPurpose::SaveAs) {
+                saveAs(path);
+            } else {
+                std::error_code ec;
+                if (!std::filesystem::exists(path, ec)) {
+                    fileError = path.string() + ": no such file";
+                } else {
+                    document.apply("Add mesh", [&](Scene& scene, Selection& selection) {
+                        const int index = editor::addMesh(scene, std::filesystem::absolute(path));
+                        selection = Selection::mesh(index);
+                    });
+                }
+            }
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+            ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+
+    if (externalChangePending) {
+        ImGui::OpenPopup("Changed on disk");
+        externalChangePending = false;
+    }
+    ImGui::SetNextWindowPos(
+        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("%s changed on disk, and you have unsaved edits.",
+                    document.file().string().c_str());
+        if (ImGui::Button("Reload (lose my edits)")) {
+            Diagnostics diagnostics;
+            if (std::optional<Scene> scene =
+                    editor::loadSceneForEditing(document.file(), diagnostics))
+                document.reloadFromDisk(*scene);
+            else
+                sceneError = diagnostics.format();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Keep my edits")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+}
+
+} // namespace rmsc::app

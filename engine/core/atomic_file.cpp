@@ -1,0 +1,148 @@
+// Atomic file replacement (see atomic_file.hpp): temporary file, fsync, rename, then fsync of
+// the folder so the rename itself is durable (POSIX rename(2) is atomic within a file system).
+#include "core/atomic_file.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <system_error>
+#include <unistd.h>
+
+namespace rmsc {
+namespace {
+
+std::string systemError(int code) {
+    return std::strerror(code);
+}
+
+// Flushes an existing file's data to the disk.
+bool syncFile(const std::filesystem::path& path, std::string& error) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        error = "cannot open " + path.string() + " to flush it: " + systemError(errno);
+        return false;
+    }
+    const bool ok = ::fsync(fd) == 0;
+    if (!ok) error = "cannot flush " + path.string() + " to the disk: " + systemError(errno);
+    ::close(fd);
+    return ok;
+}
+
+// Best effort: some file systems refuse fsync on folders, which is not a failure of the save.
+void syncFolder(const std::filesystem::path& folder) {
+    const int fd =
+        ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    (void)::fsync(fd);
+    ::close(fd);
+}
+
+// A new, empty file next to `path`: "<name>.tmp-XXXXXX", created exclusively.
+bool createTemporary(const std::filesystem::path& path, std::filesystem::path& tmp,
+                     std::string& error) {
+    std::string pattern = path.string() + ".tmp-XXXXXX";
+    const int fd = ::mkstemp(pattern.data());
+    if (fd < 0) {
+        error = "cannot create a temporary file in " +
+                (path.has_parent_path() ? path.parent_path().string() : std::string(".")) + ": " +
+                systemError(errno);
+        return false;
+    }
+    ::close(fd);
+    tmp = pattern;
+    return true;
+}
+
+bool writeAll(const std::filesystem::path& path, std::string_view text, std::string& error) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (fd < 0) {
+        error = "cannot open " + path.string() + " for writing: " + systemError(errno);
+        return false;
+    }
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            error = "cannot write " + path.string() + ": " + systemError(n < 0 ? errno : EIO);
+            ::close(fd);
+            return false;
+        }
+        done += std::size_t(n);
+    }
+    if (::close(fd) != 0) {
+        error = "cannot write " + path.string() + ": " + systemError(errno);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+std::filesystem::path backupPath(const std::filesystem::path& path) {
+    std::filesystem::path backup = path;
+    backup += ".bak";
+    return backup;
+}
+
+bool replaceFileAtomically(
+    const std::filesystem::path& path, bool keepBackup, std::string& error,
+    const std::function<bool(const std::filesystem::path& tmp)>& writeTemporary) {
+    error.clear();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        error = "cannot save " + path.string() + ": it is a folder";
+        return false;
+    }
+    std::filesystem::path tmp;
+    if (!createTemporary(path, tmp, error)) return false;
+    const auto fail = [&](std::string why) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        error = std::move(why);
+        return false;
+    };
+    if (!writeTemporary(tmp))
+        return fail(error.empty() ? "cannot write " + tmp.string() : std::string(error));
+    std::string why;
+    if (!syncFile(tmp, why)) return fail(why);
+    // mkstemp creates files readable by the owner only; give the saved file the permissions
+    // an ordinary new file would get, or those of the file it replaces.
+    const auto existing = std::filesystem::status(path, ec);
+    const std::filesystem::perms perms =
+        !ec && std::filesystem::exists(existing)
+            ? existing.permissions()
+            : std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+                  std::filesystem::perms::group_read | std::filesystem::perms::others_read;
+    std::filesystem::permissions(tmp, perms, ec);
+    if (keepBackup && std::filesystem::exists(path, ec)) {
+        // A hard link keeps the old file's bytes under the backup name without copying; a copy
+        // is the fallback for file systems without links.
+        const std::filesystem::path backup = backupPath(path);
+        std::filesystem::remove(backup, ec);
+        std::filesystem::create_hard_link(path, backup, ec);
+        if (ec) {
+            ec.clear();
+            std::filesystem::copy_file(path, backup,
+                                       std::filesystem::copy_options::overwrite_existing, ec);
+        }
+        if (ec)
+            return fail("cannot keep the previous file as " + backup.string() + ": " +
+                        ec.message());
+    }
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        return fail("cannot replace " + path.string() + " with " + tmp.string() + ": " +
+                    systemError(errno));
+    }
+    syncFolder(path.parent_path());
+    return true;
+}
+
+bool saveTextFileAtomically(const std::filesystem::path& path, std::string_view text,
+                            bool keepBackup, std::string& error) {
+    return replaceFileAtomically(path, keepBackup, error, [&](const std::filesystem::path& tmp) {
+        return writeAll(tmp, text, error);
+    });
+}
+
+} // namespace rmsc

@@ -1,0 +1,150 @@
+// The editor document and its undo history (see document.hpp).
+#include "editor/document.hpp"
+
+#include "core/atomic_file.hpp"
+#include "editor/scene_edits.hpp"
+#include "scene/scene_json.hpp"
+
+#include <limits>
+
+namespace rmsc::editor {
+
+Scene emptyScene() {
+    Scene scene;
+    Light light;
+    light.name = "sun";
+    light.direction = glm::normalize(light.direction);
+    scene.lights.push_back(light);
+    return scene;
+}
+
+Document::Document() : Document(emptyScene()) {}
+
+Document::Document(Scene scene, std::filesystem::path file)
+    : scene_(std::move(scene)), file_(std::move(file)) {
+    committed_ = scene_;
+}
+
+void Document::markChanged(const std::string& label) {
+    if (!pending_) pendingLabel_ = label;
+    pending_ = true;
+    ++revision_;
+}
+
+void Document::commit() {
+    if (!pending_) return;
+    pending_ = false;
+    if (!selectionValid(scene_, selection)) selection = Selection::none();
+    history_.resize(position_); // a new edit drops the redo branch
+    if (savedPosition_ > position_) savedPosition_ = std::numeric_limits<std::size_t>::max();
+    history_.push_back({pendingLabel_, committed_, scene_, committedSelection_, selection});
+    position_ = history_.size();
+    committed_ = scene_;
+    committedSelection_ = selection;
+}
+
+void Document::revertPending() {
+    if (!pending_) return;
+    pending_ = false;
+    scene_ = committed_;
+    if (!selectionValid(scene_, selection)) selection = Selection::none();
+    ++revision_;
+}
+
+void Document::apply(const std::string& label,
+                     const std::function<void(Scene&, Selection&)>& edit) {
+    commit();
+    edit(scene_, selection);
+    markChanged(label);
+    commit();
+}
+
+std::string Document::undoLabel() const {
+    return canUndo() ? history_[position_ - 1].label : "";
+}
+std::string Document::redoLabel() const {
+    return canRedo() ? history_[position_].label : "";
+}
+
+bool Document::undo() {
+    commit();
+    if (!canUndo()) return false;
+    const Step& step = history_[--position_];
+    scene_ = step.before;
+    selection = step.selectionBefore;
+    committed_ = scene_;
+    committedSelection_ = selection;
+    ++revision_;
+    return true;
+}
+
+bool Document::redo() {
+    commit();
+    if (!canRedo()) return false;
+    const Step& step = history_[position_++];
+    scene_ = step.after;
+    selection = step.selectionAfter;
+    committed_ = scene_;
+    committedSelection_ = selection;
+    ++revision_;
+    return true;
+}
+
+bool Document::save(std::string& error) {
+    if (file_.empty()) {
+        error = "the scene has no file yet: use Save As";
+        return false;
+    }
+    return saveAs(file_, error);
+}
+
+bool Document::saveAs(const std::filesystem::path& path, std::string& error) {
+    commit();
+    namespace fs = std::filesystem;
+    Scene toWrite = scene_;
+    // Mesh paths are written relative to the scene file's folder.
+    const fs::path folder = fs::absolute(path).parent_path();
+    for (MeshInstance& mesh : toWrite.meshes) {
+        std::error_code ec;
+        if (!mesh.path.empty() && fs::exists(mesh.path, ec)) {
+            const fs::path relative = fs::proximate(fs::absolute(mesh.path), folder, ec);
+            if (!ec) mesh.file = relative.generic_string();
+        }
+    }
+    toWrite.file = path;
+    if (!saveTextFileAtomically(path, sceneToJson(toWrite), true, error)) return false;
+    scene_.file = path;
+    for (std::size_t i = 0; i < scene_.meshes.size(); ++i)
+        scene_.meshes[i].file = toWrite.meshes[i].file;
+    committed_ = scene_;
+    file_ = path;
+    savedPosition_ = position_;
+    return true;
+}
+
+void Document::reset(Scene scene, std::filesystem::path file) {
+    scene_ = std::move(scene);
+    committed_ = scene_;
+    file_ = std::move(file);
+    history_.clear();
+    position_ = savedPosition_ = 0;
+    pending_ = false;
+    selection = committedSelection_ = Selection::none();
+    ++revision_;
+}
+
+void Document::reloadFromDisk(Scene scene) {
+    commit();
+    scene_ = std::move(scene);
+    if (!selectionValid(scene_, selection)) selection = Selection::none();
+    markChanged("Reload from disk");
+    commit();
+    savedPosition_ = position_;
+}
+
+std::optional<Scene> loadSceneForEditing(const std::filesystem::path& path,
+                                         Diagnostics& diagnostics) {
+    return loadScene(path, diskFileSource(), diagnostics);
+}
+
+} // namespace rmsc::editor

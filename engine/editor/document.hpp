@@ -1,0 +1,90 @@
+// The editor's document: the scene being edited, its file, the selection, and an unlimited
+// undo/redo history. Edits change `scene()` in place and are then committed as one undo step
+// (a slider drag commits once, when released). Each step stores the scene before and after,
+// so undo and redo are exact whatever the edit was. GL-free.
+#pragma once
+
+#include "core/diagnostics.hpp"
+#include "editor/selection.hpp"
+#include "scene/scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rmsc::editor {
+
+// A scene to start from: one light, no objects (what "New" and a failed load give).
+Scene emptyScene();
+
+class Document {
+  public:
+    Document();
+    explicit Document(Scene scene, std::filesystem::path file = {});
+
+    const Scene& scene() const { return scene_; }
+    // For in-place edits; call markChanged() after changing, and commit() when the gesture ends.
+    Scene& editScene() { return scene_; }
+    const std::filesystem::path& file() const { return file_; } // "" until saved
+    bool dirty() const { return position_ != savedPosition_ || pending_; }
+
+    Selection selection;
+
+    // Records that the scene was changed by an edit named `label` (not yet an undo step).
+    void markChanged(const std::string& label);
+    bool hasPendingChange() const { return pending_; }
+    // Makes the pending change one undo step. Does nothing without a pending change.
+    void commit();
+    // Abandons the pending change: the scene returns to the last committed state.
+    void revertPending();
+    // edit(scene, selection), then commit: one undo step.
+    void apply(const std::string& label, const std::function<void(Scene&, Selection&)>& edit);
+
+    bool canUndo() const { return position_ > 0; }
+    bool canRedo() const { return position_ < history_.size(); }
+    std::string undoLabel() const;
+    std::string redoLabel() const;
+    bool undo();
+    bool redo();
+    std::size_t historySize() const { return history_.size(); }
+
+    // Increments whenever the scene changes (edit, undo, redo, load): renderers compare it.
+    std::uint64_t revision() const { return revision_; }
+
+    // Writes sceneToJson atomically, keeping the previous file as FILE.bak. On failure returns
+    // false with `error` saying why; the scene, its edits and the old file are kept.
+    bool save(std::string& error);
+    bool saveAs(const std::filesystem::path& path, std::string& error);
+
+    // Replaces everything (New, Open, reload): history cleared, clean.
+    void reset(Scene scene, std::filesystem::path file);
+    // Replaces the scene after an external change of the file, as an undoable step that leaves
+    // the document clean (the file on disk is what it now shows).
+    void reloadFromDisk(Scene scene);
+
+  private:
+    struct Step {
+        std::string label;
+        Scene before, after;
+        Selection selectionBefore, selectionAfter;
+    };
+    Scene scene_;
+    Scene committed_; // the scene after the last step (what undo returns from)
+    Selection committedSelection_;
+    std::filesystem::path file_;
+    std::vector<Step> history_;
+    std::size_t position_ = 0;      // steps [0, position_) are applied
+    std::size_t savedPosition_ = 0; // position_ when last saved; SIZE_MAX when unreachable
+    bool pending_ = false;
+    std::string pendingLabel_;
+    std::uint64_t revision_ = 1;
+};
+
+// Loads a scene file for editing (parse only: meshes are loaded by the renderer).
+std::optional<Scene> loadSceneForEditing(const std::filesystem::path& path,
+                                         Diagnostics& diagnostics);
+
+} // namespace rmsc::editor

@@ -1,0 +1,83 @@
+// Structural edits of a Scene used by the editor: finding SDF nodes by path, adding, deleting,
+// duplicating and moving nodes, meshes and lights, mapping object ids (the id AOV) back to what
+// they show, and rough bounds for framing. GL-free; every function keeps the scene valid to
+// compile (no empty groups are left behind).
+#pragma once
+
+#include "editor/selection.hpp"
+#include "scene/scene.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace rmsc::editor {
+
+// The node at `path`, or nullptr when the path does not exist.
+SdfNode* findSdfNode(Scene& scene, const std::vector<int>& path);
+const SdfNode* findSdfNode(const Scene& scene, const std::vector<int>& path);
+// True when the selection names something that exists in `scene`.
+bool selectionValid(const Scene& scene, const Selection& selection);
+
+// World matrix of the node at `path` (product of the transforms from the root), and of its
+// parent (identity for the root).
+glm::mat4 sdfWorldMatrix(const Scene& scene, const std::vector<int>& path);
+glm::mat4 sdfParentWorldMatrix(const Scene& scene, const std::vector<int>& path);
+
+// A new shape with the catalogue's default parameters, named after the primitive.
+SdfNode makeShape(PrimitiveId primitive);
+// A group of `op` holding one default sphere (an empty group would not compile).
+SdfNode makeGroup(SdfOp op);
+
+// Inserts `node` next to the selection: into the selected group (last child), after a selected
+// shape in its parent group, or at the end of the root group. A scene without an SDF gets
+// `node` as root; a root that is a shape is first wrapped in a union group. Returns the new
+// node's path.
+std::vector<int> insertSdfNode(Scene& scene, const Selection& near, SdfNode node);
+
+// Removes the node at `path`; a group left empty is removed too, the root leaves no SDF.
+// Returns false when the path does not exist.
+bool deleteSdfNode(Scene& scene, const std::vector<int>& path);
+// Copies the node at `path` right after itself ("name copy"); returns the copy's path.
+std::optional<std::vector<int>> duplicateSdfNode(Scene& scene, const std::vector<int>& path);
+
+// Moves the node at `from` into group `intoGroup` at child position `index` (-1 = last).
+// Refuses (returns nullopt) moving the root, moving a node into itself or its own subtree,
+// or a target that is not a group. Returns the node's new path.
+std::optional<std::vector<int>> moveSdfNode(Scene& scene, const std::vector<int>& from,
+                                            const std::vector<int>& intoGroup, int index);
+
+// Meshes and lights.
+int addMesh(Scene& scene, const std::filesystem::path& file); // index of the new instance
+int addLight(Scene& scene);
+bool deleteMesh(Scene& scene, int index);
+bool deleteLight(Scene& scene, int index);
+int duplicateMesh(Scene& scene, int index);
+int duplicateLight(Scene& scene, int index);
+
+// Deletes / duplicates whatever is selected; returns the selection afterwards.
+Selection deleteSelected(Scene& scene, const Selection& selection);
+Selection duplicateSelected(Scene& scene, const Selection& selection);
+
+// What an object id of the id AOV shows (kMeshIdBase + mesh index, kSdfIdBase + pre-order
+// index of the SDF node), or none for the background / an unknown id.
+Selection selectionForObjectId(const Scene& scene, std::uint32_t objectId);
+// The id range [first, last) drawn by the selection: a group covers its whole subtree.
+struct IdRange {
+    std::uint32_t first = 0;
+    std::uint32_t last = 0;
+};
+IdRange objectIdRange(const Scene& scene, const Selection& selection);
+
+// A sphere around the selected object in world space (rough: from the parameters' sizes and
+// the transform scales), for framing and orbiting.
+struct Bounds {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+};
+std::optional<Bounds> selectionBounds(const Scene& scene, const Selection& selection);
+
+// A name for display: the node's name, or its shape / operation.
+std::string displayName(const SdfNode& node);
+
+} // namespace rmsc::editor

@@ -1,0 +1,36 @@
+// A window with an OpenGL 4.5 core context (GLFW), for the viewer. glad is loaded through
+// glfwGetProcAddress once the context is current. Move-only; destroying it closes the window.
+#pragma once
+
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+namespace rmsc {
+
+class Window {
+  public:
+    // Opens a `width` x `height` window titled `title` and makes its context current. Returns
+    // nullptr with `error` saying why (no display, no GL 4.5 core) on failure.
+    static std::unique_ptr<Window> open(int width, int height, const std::string& title,
+                                        std::string& error);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    GLFWwindow* handle() const { return window_; }
+    bool shouldClose() const;
+    void setShouldClose(bool close);
+    void setTitle(const std::string& title);
+    void swapBuffers();
+    // Size of the drawable in pixels, and of the window in screen coordinates.
+    void framebufferSize(int& width, int& height) const;
+    void windowSize(int& width, int& height) const;
+
+  private:
+    explicit Window(GLFWwindow* window) : window_(window) {}
+    GLFWwindow* window_ = nullptr;
+};
+
+} // namespace rmsc

@@ -1,0 +1,34 @@
+// Shadow pass: renders the depth of every mesh instance into the layers of a shadow-map array,
+// one layer per GpuScene::shadowViews entry. SDF objects are not drawn: they cast shadows by
+// marching (shaders/common/shadows.glsl).
+#pragma once
+
+#include "gl/program.hpp"
+#include "render/gpu_scene.hpp"
+
+#include <optional>
+#include <string>
+
+namespace rmsc {
+
+class ShadowPass {
+  public:
+    static std::optional<ShadowPass> create(const ShaderFiles& files, std::string& error);
+    // Draws the scene's shadow views (the maps are reallocated when their size or count
+    // changes). Leaves the framebuffer binding and viewport changed.
+    void draw(const GpuScene& scene);
+    // The depth array (DEPTH_COMPONENT32F, compare mode on, linear filtering): always a
+    // complete texture, 1x1x1 while no scene needs maps.
+    const gl::Texture& maps() const { return maps_; }
+
+  private:
+    gl::Program program_;
+    GLint model_ = -1, lightViewProjection_ = -1;
+    gl::Texture maps_;
+    gl::Framebuffer framebuffer_;
+    int size_ = 0, layers_ = 0;
+
+    void allocate(int size, int layers);
+};
+
+} // namespace rmsc

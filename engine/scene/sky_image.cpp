@@ -1,0 +1,66 @@
+// Decoding sky images with stb_image's stbi_loadf_from_memory.
+#include "scene/sky_image.hpp"
+
+#include "core/limits.hpp"
+
+#include <stb_image.h>
+
+#include <limits>
+
+namespace rmsc {
+
+std::optional<SkyImage> loadSkyImage(const std::filesystem::path& path, const FileSource& files,
+                                     const std::string& sceneFile, const std::string& pointer,
+                                     Diagnostics& diagnostics) {
+    std::string why;
+    std::optional<std::string> bytes;
+    try {
+        bytes = files.read(path, why);
+    } catch (const std::exception& e) {
+        why = e.what();
+    }
+    if (!bytes) {
+        diagnostics.error(sceneFile, pointer, "cannot read the sky image: " + why);
+        return std::nullopt;
+    }
+    if (bytes->empty() || bytes->size() > std::size_t(std::numeric_limits<int>::max())) {
+        diagnostics.error(sceneFile, pointer,
+                          "the sky image \"" + path.string() + "\" is empty or too large");
+        return std::nullopt;
+    }
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(data, int(bytes->size()), &width, &height, &channels)) {
+        const char* reason = stbi_failure_reason();
+        diagnostics.error(sceneFile, pointer,
+                          "\"" + path.string() + "\" is not a decodable image (" +
+                              (reason ? reason : "unknown format") +
+                              "); expected an equirectangular Radiance .hdr image");
+        return std::nullopt;
+    }
+    if (width <= 0 || height <= 0 || width > limits::kTextureDimension ||
+        height > limits::kTextureDimension) {
+        diagnostics.error(sceneFile, pointer,
+                          "the sky image is " + std::to_string(width) + "x" +
+                              std::to_string(height) + ", expected at most " +
+                              std::to_string(limits::kTextureDimension) + " on each side");
+        return std::nullopt;
+    }
+    stbi_set_flip_vertically_on_load_thread(0);
+    float* pixels = stbi_loadf_from_memory(data, int(bytes->size()), &width, &height, &channels, 3);
+    if (!pixels) {
+        const char* reason = stbi_failure_reason();
+        diagnostics.error(sceneFile, pointer,
+                          std::string("the sky image could not be decoded (") +
+                              (reason ? reason : "unknown") + ")");
+        return std::nullopt;
+    }
+    SkyImage image;
+    image.width = width;
+    image.height = height;
+    image.rgb.assign(pixels, pixels + std::size_t(width) * std::size_t(height) * 3);
+    stbi_image_free(pixels);
+    return image;
+}
+
+} // namespace rmsc

@@ -1,0 +1,206 @@
+// Generates the GLSL of the SDF map from the compiled postfix program (see glsl_codegen.hpp).
+// The value stack becomes local variables s0..sN (depth known from the compiler), the point
+// stack becomes one variable per point frame; each instruction becomes one statement.
+#include "sdf/glsl_codegen.hpp"
+
+#include "sdf/primitives.hpp"
+
+#include <cstdio>
+#include <functional>
+#include <sstream>
+#include <vector>
+
+namespace rmsc {
+
+std::string_view sdfStrategyName(SdfStrategy strategy) {
+    switch (strategy) {
+    case SdfStrategy::Interpreter:
+        return "interpreter";
+    case SdfStrategy::Buffer:
+        return "buffer";
+    case SdfStrategy::Baked:
+        return "baked";
+    }
+    return "baked";
+}
+
+std::optional<SdfStrategy> parseSdfStrategy(std::string_view name) {
+    for (SdfStrategy s : {SdfStrategy::Interpreter, SdfStrategy::Buffer, SdfStrategy::Baked})
+        if (sdfStrategyName(s) == name) return s;
+    return std::nullopt;
+}
+
+namespace {
+
+// A GLSL float literal that reads back as exactly `value` (9 significant digits round-trip a
+// float) and is never mistaken for an int.
+std::string floatLiteral(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(value));
+    std::string literal = text;
+    if (literal.find_first_of(".en") == std::string::npos) literal += ".0";
+    return literal;
+}
+
+std::string vec4Literal(const glm::vec4& v) {
+    return "vec4(" + floatLiteral(v.x) + ", " + floatLiteral(v.y) + ", " + floatLiteral(v.z) +
+           ", " + floatLiteral(v.w) + ")";
+}
+
+// Where the generated code takes instruction i's numbers from: literals or the buffer.
+struct Operands {
+    const SdfProgram& program;
+    bool baked;
+
+    std::string instruction(std::size_t i) const {
+        return "sdfInstructions[" + std::to_string(i) + "]";
+    }
+    std::string params(std::size_t i, int row) const {
+        return baked ? vec4Literal(program.instructions[i].params[row])
+                     : instruction(i) + ".params[" + std::to_string(row) + "]";
+    }
+    std::string param(std::size_t i, int k) const {
+        return baked ? floatLiteral(program.instructions[i].params[k / 4][k % 4])
+                     : instruction(i) + ".params[" + std::to_string(k / 4) + "][" +
+                           std::to_string(k % 4) + "]";
+    }
+    std::string local(std::size_t i, const std::string& point) const {
+        if (!baked)
+            return "sdfAffine(" + instruction(i) + ".worldToLocal[0], " + instruction(i) +
+                   ".worldToLocal[1], " + instruction(i) + ".worldToLocal[2], " + point + ")";
+        const GpuSdfInstruction& in = program.instructions[i];
+        return "sdfAffine(" + vec4Literal(in.worldToLocal[0]) + ", " +
+               vec4Literal(in.worldToLocal[1]) + ", " + vec4Literal(in.worldToLocal[2]) + ", " +
+               point + ")";
+    }
+    std::string scale(std::size_t i) const {
+        return baked ? floatLiteral(program.instructions[i].misc.x) : instruction(i) + ".misc.x";
+    }
+    std::string material(std::size_t i) const {
+        return baked ? std::to_string(program.instructions[i].material) + "u"
+                     : instruction(i) + ".material";
+    }
+    std::string objectId(std::size_t i) const {
+        return baked ? std::to_string(program.instructions[i].objectId) + "u"
+                     : instruction(i) + ".objectId";
+    }
+};
+
+// The body of sdfDistance (surface = false) or sdfSurface (surface = true).
+void emitBody(std::ostream& out, const Operands& ops, bool surface) {
+    const std::vector<GpuSdfInstruction>& code = ops.program.instructions;
+    const char* slotType = surface ? "SdfSurface" : "float";
+    const int depth = std::max(ops.program.stackDepth, 1);
+    for (int slot = 0; slot < depth; ++slot)
+        out << "    " << slotType << " s" << slot << ";\n";
+    if (!surface) out << "    float w;\n";
+    int top = 0;
+    int nextPoint = 1;           // p0 is the argument
+    std::vector<int> pointStack; // saved point variables
+    int point = 0;               // the current point variable
+    auto slot = [](int index) { return "s" + std::to_string(index); };
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const GpuSdfInstruction& in = code[i];
+        const std::string p = "p" + std::to_string(point);
+        const std::string kind = std::to_string(in.kind) + "u";
+        switch (SdfOpcode(in.opcode)) {
+        case SdfOpcode::Shape:
+        case SdfOpcode::Profile: {
+            const std::string q = "q" + std::to_string(i);
+            out << "    vec3 " << q << " = " << ops.local(i, p) << ";\n";
+            std::string distance;
+            if (SdfOpcode(in.opcode) == SdfOpcode::Shape) {
+                const PrimitiveSpec& spec = primitiveSpec(PrimitiveId(in.kind));
+                distance = primitiveGlslCall(spec, q, [&](int k) { return ops.param(i, k); });
+            } else {
+                distance = "sdfProfile(" + kind + ", " + q + ", " + ops.params(i, 0) + ", " +
+                           ops.params(i, 1) + ", " + ops.params(i, 2) + ")";
+            }
+            distance += " * " + ops.scale(i);
+            out << "    " << slot(top) << " = ";
+            if (surface) {
+                out << "sdfMaterialSurface(" << distance << ", " << ops.objectId(i) << ", "
+                    << ops.material(i) << ", " << q << ");\n";
+            } else {
+                out << distance << ";\n";
+            }
+            ++top;
+            break;
+        }
+        case SdfOpcode::PushPoint:
+            pointStack.push_back(point);
+            out << "    vec3 p" << nextPoint << " = " << ops.local(i, p) << ";\n";
+            point = nextPoint++;
+            break;
+        case SdfOpcode::PointModifier:
+            out << "    vec3 p" << nextPoint << " = sdfPointModifier(" << kind << ", " << p << ", "
+                << ops.params(i, 0) << ", " << ops.params(i, 1) << ", " << ops.params(i, 2)
+                << ");\n";
+            point = nextPoint++;
+            break;
+        case SdfOpcode::PopPoint:
+            point = pointStack.back();
+            pointStack.pop_back();
+            break;
+        case SdfOpcode::DistanceModifier: {
+            const std::string target = slot(top - 1) + (surface ? ".distance" : "");
+            out << "    " << target << " = sdfDistanceModifier(" << kind << ", " << target << ", "
+                << p << ", " << ops.params(i, 0) << ");\n";
+            break;
+        }
+        case SdfOpcode::Combine:
+            out << "    " << slot(top - 2) << " = ";
+            if (surface) {
+                out << "sdfCombineSurfaces(" << kind << ", " << slot(top - 2) << ", "
+                    << slot(top - 1) << ", " << ops.params(i, 0) << ");\n";
+            } else {
+                out << "sdfCombine(" << kind << ", " << slot(top - 2) << ", " << slot(top - 1)
+                    << ", " << ops.params(i, 0) << ", w);\n";
+            }
+            --top;
+            break;
+        }
+    }
+    out << "    return s0;\n";
+}
+
+} // namespace
+
+SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requested) {
+    if (requested == SdfStrategy::Interpreter) return requested;
+    int leaves = 0;
+    for (const GpuSdfInstruction& in : program.instructions)
+        leaves +=
+            SdfOpcode(in.opcode) == SdfOpcode::Shape || SdfOpcode(in.opcode) == SdfOpcode::Profile;
+    return leaves > kMaxGeneratedLeaves ? SdfStrategy::Interpreter : requested;
+}
+
+std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested) {
+    const SdfStrategy strategy = effectiveSdfStrategy(program, requested);
+    std::ostringstream out;
+    out << "// Generated by engine/sdf/glsl_codegen.cpp, strategy " << sdfStrategyName(strategy)
+        << ", " << program.instructions.size() << " instructions.\n";
+    if (strategy == SdfStrategy::Interpreter) {
+        std::vector<bool> used(std::size_t(PrimitiveId::Count), false);
+        for (const GpuSdfInstruction& in : program.instructions)
+            if (SdfOpcode(in.opcode) == SdfOpcode::Shape) used[in.kind] = true;
+        out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; })
+            << "#include \"common/sdf_interpreter.glsl\"\n";
+        return out.str();
+    }
+    if (program.instructions.empty()) {
+        out << "bool sdfSceneEmpty() { return true; }\n"
+            << "float sdfDistance(vec3 p0) { return SDF_FAR; }\n"
+            << "SdfSurface sdfSurface(vec3 p0) { return sdfEmptySurface(p0); }\n";
+        return out.str();
+    }
+    const Operands ops{program, strategy == SdfStrategy::Baked};
+    out << "bool sdfSceneEmpty() { return false; }\n\nfloat sdfDistance(vec3 p0) {\n";
+    emitBody(out, ops, false);
+    out << "}\n\nSdfSurface sdfSurface(vec3 p0) {\n";
+    emitBody(out, ops, true);
+    out << "}\n";
+    return out.str();
+}
+
+} // namespace rmsc

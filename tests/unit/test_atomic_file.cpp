@@ -1,0 +1,138 @@
+// Atomic saves (core/atomic_file.hpp): the new content replaces the old in one step, the
+// previous content is kept as <name>.bak, and a failed save reports why and leaves the old
+// file and the folder as they were.
+#include "core/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace rmsc;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh, empty folder per test, removed afterwards.
+class AtomicFile : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        folder_ = fs::temp_directory_path() /
+                  ("rmsc-atomic-" + std::to_string(::getpid()) + "-" + test->name());
+        fs::remove_all(folder_);
+        fs::create_directories(folder_);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+
+    static std::string read(const fs::path& path) {
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    }
+    static void write(const fs::path& path, const std::string& text) {
+        std::ofstream(path, std::ios::binary) << text;
+    }
+    std::vector<std::string> names() const {
+        std::vector<std::string> out;
+        for (const auto& entry : fs::directory_iterator(folder_))
+            out.push_back(entry.path().filename().string());
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+
+    fs::path folder_;
+};
+
+} // namespace
+
+TEST_F(AtomicFile, NewFileIsWrittenWithoutBackupOrTemporary) {
+    std::string error;
+    ASSERT_TRUE(saveTextFileAtomically(folder_ / "scene.json", "{\"version\": 1}\n", true, error))
+        << error;
+    EXPECT_EQ(read(folder_ / "scene.json"), "{\"version\": 1}\n");
+    EXPECT_EQ(names(), std::vector<std::string>{"scene.json"});
+    // Ordinary permissions, not mkstemp's owner-only ones.
+    const auto perms = fs::status(folder_ / "scene.json").permissions();
+    EXPECT_NE(perms & fs::perms::others_read, fs::perms::none);
+}
+
+TEST_F(AtomicFile, BackupHoldsThePreviousContent) {
+    write(folder_ / "scene.json", "old");
+    std::string error;
+    ASSERT_TRUE(saveTextFileAtomically(folder_ / "scene.json", "new", true, error)) << error;
+    EXPECT_EQ(read(folder_ / "scene.json"), "new");
+    EXPECT_EQ(read(folder_ / "scene.json.bak"), "old");
+    // A second save moves the backup on: it always holds the content before the last save.
+    ASSERT_TRUE(saveTextFileAtomically(folder_ / "scene.json", "newer", true, error)) << error;
+    EXPECT_EQ(read(folder_ / "scene.json"), "newer");
+    EXPECT_EQ(read(folder_ / "scene.json.bak"), "new");
+    EXPECT_EQ(names(), (std::vector<std::string>{"scene.json", "scene.json.bak"}));
+}
+
+TEST_F(AtomicFile, WithoutBackupNoBakFileAppears) {
+    write(folder_ / "a.txt", "old");
+    std::string error;
+    ASSERT_TRUE(saveTextFileAtomically(folder_ / "a.txt", "new", false, error)) << error;
+    EXPECT_EQ(read(folder_ / "a.txt"), "new");
+    EXPECT_EQ(names(), std::vector<std::string>{"a.txt"});
+}
+
+TEST_F(AtomicFile, ParentThatIsAFileFailsWithAReason) {
+    write(folder_ / "not_a_folder", "x");
+    std::string error;
+    EXPECT_FALSE(
+        saveTextFileAtomically(folder_ / "not_a_folder" / "scene.json", "new", true, error));
+    EXPECT_NE(error.find("not_a_folder"), std::string::npos) << error;
+    EXPECT_NE(error.find("Not a directory"), std::string::npos) << error;
+    EXPECT_EQ(read(folder_ / "not_a_folder"), "x");
+    EXPECT_EQ(names(), std::vector<std::string>{"not_a_folder"});
+}
+
+TEST_F(AtomicFile, MissingFolderFailsWithAReason) {
+    std::string error;
+    EXPECT_FALSE(saveTextFileAtomically(folder_ / "missing" / "scene.json", "new", true, error));
+    EXPECT_NE(error.find("No such file or directory"), std::string::npos) << error;
+}
+
+TEST_F(AtomicFile, FolderInTheWayFailsAndIsLeftAlone) {
+    fs::create_directory(folder_ / "scene.json");
+    std::string error;
+    EXPECT_FALSE(saveTextFileAtomically(folder_ / "scene.json", "new", true, error));
+    EXPECT_NE(error.find("is a folder"), std::string::npos) << error;
+    EXPECT_TRUE(fs::is_directory(folder_ / "scene.json"));
+}
+
+TEST_F(AtomicFile, FailedWriteLeavesTheOldFileAndNoTemporary) {
+    write(folder_ / "image.png", "old image");
+    write(folder_ / "image.png.bak", "older image");
+    std::string error;
+    fs::path temporary;
+    const bool saved =
+        replaceFileAtomically(folder_ / "image.png", true, error, [&](const fs::path& tmp) {
+            temporary = tmp;
+            std::ofstream(tmp, std::ios::binary) << "half an ima"; // then the disk is full
+            return false;
+        });
+    EXPECT_FALSE(saved);
+    EXPECT_FALSE(error.empty());
+    EXPECT_EQ(temporary.parent_path(), folder_); // the temporary was in the same folder
+    EXPECT_EQ(read(folder_ / "image.png"), "old image");
+    EXPECT_EQ(read(folder_ / "image.png.bak"), "older image"); // backup untouched too
+    EXPECT_EQ(names(), (std::vector<std::string>{"image.png", "image.png.bak"}));
+}
+
+TEST_F(AtomicFile, ReadOnlyFolderFailsAndKeepsTheOldFile) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root ignores folder permissions";
+    write(folder_ / "scene.json", "old");
+    fs::permissions(folder_, fs::perms::owner_read | fs::perms::owner_exec);
+    std::string error;
+    const bool saved = saveTextFileAtomically(folder_ / "scene.json", "new", true, error);
+    fs::permissions(folder_, fs::perms::owner_all);
+    EXPECT_FALSE(saved);
+    EXPECT_NE(error.find("Permission denied"), std::string::npos) << error;
+    EXPECT_EQ(read(folder_ / "scene.json"), "old");
+    EXPECT_EQ(names(), std::vector<std::string>{"scene.json"});
+}

@@ -1,0 +1,107 @@
+// The GLSL generated from compiled SDF programs (sdf/glsl_codegen.hpp), checked as text: which
+// strategy's text changes with which edit, literals that read back exactly, and the fallback
+// of very large scenes to the interpreter. That the code draws the right image is checked by
+// the GPU tests (test_sdf_strategies.cpp).
+#include "scene/scene_json.hpp"
+#include "sdf/compiler.hpp"
+#include "sdf/glsl_codegen.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace rmsc;
+
+namespace {
+
+SdfProgram compileText(const std::string& sdfJson) {
+    Diagnostics diagnostics;
+    const std::optional<Scene> scene =
+        parseScene(R"({"version": 1, "sdf": )" + sdfJson + "}", "t.json", diagnostics);
+    EXPECT_TRUE(scene) << diagnostics.format();
+    if (!scene || !scene->sdf) return {};
+    std::optional<SdfProgram> program = compileSdf(*scene->sdf, 0, "t.json", diagnostics);
+    EXPECT_TRUE(program) << diagnostics.format();
+    return program ? std::move(*program) : SdfProgram{};
+}
+
+const char* kTwoShapes = R"({"op": "smooth_union", "smoothness": 0.3, "children": [
+    {"shape": "sphere", "radius": 0.5, "position": [1, 0, 0]},
+    {"shape": "torus", "major_radius": 0.6, "minor_radius": 0.1,
+     "modifiers": [{"type": "twist", "amount": 45, "radius": 0.7}]}]})";
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++n;
+    return n;
+}
+
+} // namespace
+
+TEST(GlslCodegen, BakedCodeCallsOnlyTheUsedPrimitivesWithLiterals) {
+    const std::string map = generateSdfMap(compileText(kTwoShapes), SdfStrategy::Baked);
+    EXPECT_EQ(count(map, "sdSphere("), 2u); // once in sdfDistance, once in sdfSurface
+    EXPECT_EQ(count(map, "sdTorus("), 2u);
+    EXPECT_EQ(count(map, "sdBox("), 0u);
+    EXPECT_EQ(count(map, "sdfInstructions["), 0u) << "baked code reads no buffer";
+    EXPECT_NE(map.find("sdSphere(q"), std::string::npos);
+    EXPECT_NE(map.find(", 0.5)"), std::string::npos) << map; // the radius as a literal
+    EXPECT_NE(map.find("sdfPointModifier("), std::string::npos) << "the twist";
+    EXPECT_NE(map.find("bool sdfSceneEmpty() { return false; }"), std::string::npos);
+}
+
+TEST(GlslCodegen, BufferCodeKeepsItsTextUnderParameterEdits) {
+    const SdfProgram program = compileText(kTwoShapes);
+    SdfProgram edited = compileText(R"({"op": "smooth_union", "smoothness": 0.1, "children": [
+        {"shape": "sphere", "radius": 0.9, "position": [0, 2, 0], "rotation": [10, 0, 0]},
+        {"shape": "torus", "major_radius": 0.2, "minor_radius": 0.05,
+         "modifiers": [{"type": "twist", "amount": 10, "radius": 0.25}]}]})");
+    EXPECT_EQ(generateSdfMap(program, SdfStrategy::Buffer),
+              generateSdfMap(edited, SdfStrategy::Buffer));
+    EXPECT_NE(generateSdfMap(program, SdfStrategy::Baked),
+              generateSdfMap(edited, SdfStrategy::Baked));
+    // Another operation is another structure.
+    const SdfProgram other = compileText(R"({"op": "union", "children": [
+        {"shape": "sphere", "radius": 0.5}, {"shape": "torus", "major_radius": 0.6,
+         "minor_radius": 0.1, "modifiers": [{"type": "twist", "amount": 45, "radius": 0.7}]}]})");
+    EXPECT_NE(generateSdfMap(program, SdfStrategy::Buffer),
+              generateSdfMap(other, SdfStrategy::Buffer));
+}
+
+TEST(GlslCodegen, LiteralsReadBackExactly) {
+    const SdfProgram program = compileText(
+        R"({"shape": "sphere", "radius": 0.1234567, "position": [0.3, -1e-7, 12345.678]})");
+    const std::string map = generateSdfMap(program, SdfStrategy::Baked);
+    const float radius = program.instructions[0].params[0].x;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(radius));
+    EXPECT_NE(map.find(text), std::string::npos) << map;
+    EXPECT_EQ(std::stof(text), radius);
+    // Whole numbers still read as floats in GLSL (an int literal would not convert inside
+    // vec4(...) overload resolution everywhere): the scale of 1 is written "1.0".
+    EXPECT_NE(map.find(" * 1.0;"), std::string::npos) << map;
+}
+
+TEST(GlslCodegen, EmptySceneNeverHits) {
+    const std::string map = generateSdfMap(SdfProgram{}, SdfStrategy::Baked);
+    EXPECT_NE(map.find("bool sdfSceneEmpty() { return true; }"), std::string::npos);
+    EXPECT_NE(map.find("return SDF_FAR;"), std::string::npos);
+}
+
+TEST(GlslCodegen, VeryLargeScenesFallBackToTheInterpreter) {
+    std::string children;
+    for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
+        children += std::string(i ? ", " : "") +
+                    R"({"shape": "sphere", "radius": 0.1, "position": [)" + std::to_string(i) +
+                    ", 0, 0]}";
+    const SdfProgram large = compileText(R"({"children": [)" + children + "]}");
+    EXPECT_EQ(effectiveSdfStrategy(large, SdfStrategy::Baked), SdfStrategy::Interpreter);
+    const std::string map = generateSdfMap(large, SdfStrategy::Baked);
+    EXPECT_NE(map.find("#include \"common/sdf_interpreter.glsl\""), std::string::npos);
+    // Its dispatch holds only the kinds the scene uses.
+    EXPECT_NE(map.find("sdSphere("), std::string::npos);
+    EXPECT_EQ(map.find("sdBox("), std::string::npos);
+    EXPECT_EQ(effectiveSdfStrategy(compileText(kTwoShapes), SdfStrategy::Baked),
+              SdfStrategy::Baked);
+}

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Fuzzes the scene reader and the glTF importer with libFuzzer (clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer) for SECONDS each, starting from the samples, the seed inputs in
+# tests/fuzz/seeds and the regression inputs in tests/fuzz/regressions. Fails when a fuzzer
+# finds a crash, a sanitizer report, a leak or a hang; the input that did it is left in
+# build-fuzz/crashes/ (add it to tests/fuzz/regressions/<fuzzer>/ with the fix).
+# Usage: tools/fuzz.sh [SECONDS, default 60]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+build=build-fuzz
+CC=clang CXX=clang++ cmake -S . -B "$build" -DRMSC_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build" -j"$(nproc)" --target fuzz_scene fuzz_gltf
+mkdir -p "$build/crashes"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+total=0
+for name in scene gltf; do
+  case $name in
+    scene) seeds=(samples/scenes) ;;
+    gltf) seeds=(samples/assets) ;;
+  esac
+  for dir in "tests/fuzz/seeds/$name" "tests/fuzz/regressions/$name"; do
+    [ -d "$dir" ] && seeds+=("$dir")
+  done
+  corpus="$build/corpus/$name" # grows between local runs; starts empty in CI
+  mkdir -p "$corpus"
+  log="$build/fuzz_$name.log"
+  echo "fuzz_$name: ${seconds}s from ${seeds[*]}"
+  if ! "$build/bin/fuzz_$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2560 \
+      -print_final_stats=1 -artifact_prefix="$build/crashes/$name-" "$corpus" "${seeds[@]}" \
+      >"$log" 2>&1; then
+    tail -n 60 "$log"
+    echo "fuzz_$name FAILED: see $log and $build/crashes/" >&2
+    exit 1
+  fi
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
+  echo "fuzz_$name: $runs executions, no crash ($(ls "$corpus" | wc -l) inputs in $corpus)"
+  total=$((total + runs))
+done
+echo "fuzz: $total executions in all, no crash"
