@@ -9,6 +9,8 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 namespace rmsc::app {
@@ -21,6 +23,8 @@ const OptionSpec kOptions[] = {
     {"--backend", nullptr, "NAME", "auto | egl | osmesa"},
     {"--sdf-strategy", nullptr, "NAME",
      "baked (default), buffer, interpreter, or all (each in turn, with ratios to baked)"},
+    {"--sdf-map", nullptr, "FILE",
+     "also time a hand-written SDF map (GLSL defining sdfSceneEmpty, sdfDistance, sdfSurface)"},
     {"--json", nullptr, nullptr, "print one JSON object instead of text"},
 };
 
@@ -35,9 +39,12 @@ const CommandSpec kSpec = {
     "process and the ratios of their median frame times to the baked one are reported.",
     kOptions, 1};
 
+// Not a strategy: the run of the --sdf-map file.
+constexpr SdfStrategy kHandWritten = SdfStrategy(-1);
+
 // One strategy's timings.
 struct StrategyRun {
-    SdfStrategy strategy = SdfStrategy::Baked;
+    std::string name;
     double compileMs = 0.0;
     std::vector<double> wall;
     std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
@@ -100,13 +107,30 @@ int runBench(std::span<const std::string> args) {
         all ? std::vector<SdfStrategy>{SdfStrategy::Baked, SdfStrategy::Buffer,
                                        SdfStrategy::Interpreter}
             : std::vector<SdfStrategy>{frame.strategy};
-    for (SdfStrategy strategy : strategies) {
+    std::vector<SdfStrategy> timed = strategies;
+    std::string handWrittenMap;
+    if (parsed->has("--sdf-map")) {
+        const std::string path = parsed->get("--sdf-map", "");
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in) {
+            std::fprintf(stderr, "rmsc bench: --sdf-map: cannot read '%s'\n", path.c_str());
+            return kExitBadInput;
+        }
+        handWrittenMap = "#line 1\n" + text.str();
+        timed.push_back(kHandWritten);
+    }
+    for (SdfStrategy strategy : timed) {
         StrategyRun run;
-        run.strategy = effectiveSdfStrategy(session.prepared->sdf, strategy);
+        run.name = strategy == kHandWritten
+                       ? "hand-written"
+                       : sdfStrategyName(effectiveSdfStrategy(session.prepared->sdf, strategy));
         if (std::any_of(runs.begin(), runs.end(),
-                        [&](const StrategyRun& r) { return r.strategy == run.strategy; }))
+                        [&](const StrategyRun& r) { return r.name == run.name; }))
             continue; // a scene too large for generated code runs the interpreter only once
-        const GpuScene gpuScene = uploadScene(*session.prepared, strategy);
+        GpuScene gpuScene = uploadScene(*session.prepared, strategy);
+        if (strategy == kHandWritten) gpuScene.sdfMap = handWrittenMap;
         const auto compileStart = std::chrono::steady_clock::now();
         if (!renderer.prepare(gpuScene, error)) {
             std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
@@ -146,9 +170,8 @@ int runBench(std::span<const std::string> args) {
             std::printf("%s{\"strategy\": \"%s\", \"shader_build_ms\": %.3f, "
                         "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
                         "\"ratio_to_first\": %.3f, \"pass_gpu_ms\": {",
-                        r ? ", " : "", std::string(sdfStrategyName(run.strategy)).c_str(),
-                        run.compileMs, wallStats.median, wallStats.min, wallStats.max,
-                        wallStats.median / bakedMedian);
+                        r ? ", " : "", run.name.c_str(), run.compileMs, wallStats.median,
+                        wallStats.min, wallStats.max, wallStats.median / bakedMedian);
             for (std::size_t p = 0; p < run.passes.size(); ++p) {
                 const Stats s = stats(run.passes[p]);
                 std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}",
@@ -165,11 +188,10 @@ int runBench(std::span<const std::string> args) {
     std::printf("memory    %.1f MiB peak resident\n", peakMiB);
     for (const StrategyRun& run : runs) {
         const Stats wallStats = stats(run.wall);
-        std::printf("\nstrategy  %s: shaders %.1f ms to build",
-                    std::string(sdfStrategyName(run.strategy)).c_str(), run.compileMs);
+        std::printf("\nstrategy  %s: shaders %.1f ms to build", run.name.c_str(), run.compileMs);
         if (runs.size() > 1)
             std::printf(", %.2fx the %s frame time", wallStats.median / bakedMedian,
-                        std::string(sdfStrategyName(runs.front().strategy)).c_str());
+                        runs.front().name.c_str());
         std::printf("\n%-9s %9s %9s %9s\n", "ms", "median", "min", "max");
         std::printf("%-9s %9.2f %9.2f %9.2f\n", "frame", wallStats.median, wallStats.min,
                     wallStats.max);

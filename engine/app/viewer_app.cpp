@@ -108,6 +108,8 @@ bool Viewer::loadShaders(bool initial) {
 #endif
     std::string error;
     std::optional<Renderer> newRenderer = Renderer::create(files, error);
+    // The scene's SDF passes too, so a broken shader is found here and not while drawing.
+    if (newRenderer && gpuScene && !newRenderer->prepare(*gpuScene, error)) newRenderer.reset();
     std::optional<DisplayPass> newDisplay;
     if (newRenderer) newDisplay = DisplayPass::create(files, error);
     if (newRenderer && newDisplay) {
@@ -146,8 +148,17 @@ void Viewer::syncGpuScene() {
             "The scene does not compile (showing the last one that did):\n" + diagnostics.format();
         return;
     }
+    // Parameters from the buffer: a slider drag changes buffer contents only and reuses the
+    // compiled shaders; a structural edit compiles once (the renderer caches by structure).
+    GpuScene candidate = uploadScene(*next, SdfStrategy::Buffer);
+    std::string error;
+    if (renderer && !renderer->prepare(candidate, error)) {
+        sceneError =
+            "The scene's shaders do not build (showing the last scene that did):\n" + error;
+        return;
+    }
     sceneError.clear();
-    gpuScene = uploadScene(*next);
+    gpuScene = std::move(candidate);
     prepared = std::move(next);
 }
 
