@@ -14,3 +14,6 @@ for aov in depth normal id; do
   "$rmsc" render -o "docs/images/demo-$aov.png" --size 320x180 --aov "$aov"
 done
 "$rmsc" render samples/assets/sphere.gltf -o docs/images/gltf-viewer.png --size 320x180
+# The viewer with its panels, under a virtual display when there is no display.
+view=("$rmsc" view samples/scenes/pawn.json --size 1280x720 --embedded-shaders --script tools/viewer-gallery.txt)
+if [ -n "${DISPLAY:-}" ]; then "${view[@]}"; else xvfb-run -a -s "-screen 0 1280x720x24" "${view[@]}"; fi
