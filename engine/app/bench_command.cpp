@@ -2,6 +2,7 @@
 // shader build time and peak memory. Numbers for tracking, never asserted by tests.
 #include "app/commands.hpp"
 #include "app/headless_session.hpp"
+#include "render/readback.hpp"
 
 #include <sys/resource.h>
 
@@ -46,6 +47,7 @@ constexpr SdfStrategy kHandWritten = SdfStrategy(-1);
 struct StrategyRun {
     std::string name;
     double compileMs = 0.0;
+    double stepsPerPixel = 0.0; // mean SDF march steps per pixel of the last frame
     std::vector<double> wall;
     std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
 };
@@ -149,6 +151,11 @@ int runBench(std::span<const std::string> args) {
             for (std::size_t p = 0; p < times.size(); ++p)
                 run.passes[p].push_back(times[p]);
         }
+        const Pixels<float> steps = readMarchSteps(targets);
+        double total = 0.0;
+        for (float n : steps.data)
+            total += n;
+        run.stepsPerPixel = total / double(std::max<std::size_t>(steps.data.size(), 1));
         runs.push_back(std::move(run));
     }
     rusage usage{};
@@ -169,9 +176,11 @@ int runBench(std::span<const std::string> args) {
             const Stats wallStats = stats(run.wall);
             std::printf("%s{\"strategy\": \"%s\", \"shader_build_ms\": %.3f, "
                         "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
-                        "\"ratio_to_first\": %.3f, \"pass_gpu_ms\": {",
+                        "\"ratio_to_first\": %.3f, \"march_steps_per_pixel\": %.2f, "
+                        "\"pass_gpu_ms\": {",
                         r ? ", " : "", run.name.c_str(), run.compileMs, wallStats.median,
-                        wallStats.min, wallStats.max, wallStats.median / bakedMedian);
+                        wallStats.min, wallStats.max, wallStats.median / bakedMedian,
+                        run.stepsPerPixel);
             for (std::size_t p = 0; p < run.passes.size(); ++p) {
                 const Stats s = stats(run.passes[p]);
                 std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}",
@@ -188,7 +197,8 @@ int runBench(std::span<const std::string> args) {
     std::printf("memory    %.1f MiB peak resident\n", peakMiB);
     for (const StrategyRun& run : runs) {
         const Stats wallStats = stats(run.wall);
-        std::printf("\nstrategy  %s: shaders %.1f ms to build", run.name.c_str(), run.compileMs);
+        std::printf("\nstrategy  %s: shaders %.1f ms to build, %.1f march steps per pixel",
+                    run.name.c_str(), run.compileMs, run.stepsPerPixel);
         if (runs.size() > 1)
             std::printf(", %.2fx the %s frame time", wallStats.median / bakedMedian,
                         runs.front().name.c_str());

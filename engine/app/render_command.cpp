@@ -17,7 +17,7 @@ const OptionSpec kOptions[] = {
     {"--sdf-strategy", nullptr, "NAME",
      "how the SDF scene reaches the shader: baked (default), buffer or interpreter"},
     {"--aov", nullptr, "NAME",
-     "color | depth | normal | id (default color); depth is linear view depth"},
+     "color | depth | normal | id | steps (default color); depth is linear view depth"},
 };
 
 const CommandSpec kSpec = {
@@ -26,7 +26,8 @@ const CommandSpec kSpec = {
     "framing camera; without SCENE, the built-in demo) headless and writes one image.\n"
     "AOVs: depth = 16-bit grey PNG, round(65535*(z-near)/(far-near)), 65535 where nothing was\n"
     "hit (or float view depth in a .pfm); normal = world normal as (n*0.5+0.5) in RGB, black\n"
-    "where nothing was hit (float in a .pfm); id = a stable colour per object.",
+    "where nothing was hit (float in a .pfm); id = a stable colour per object; steps = the\n"
+    "SDF march steps per pixel as a heatmap, black 0 to red at max_steps (float in a .pfm).",
     kOptions, 1};
 
 } // namespace
@@ -45,8 +46,9 @@ int runRender(std::span<const std::string> args) {
     FrameOptions frame;
     if (!readFrameOptions("render", *parsed, frame)) return kExitUsage;
     const std::string aov = parsed->get("--aov", "color");
-    if (aov != "color" && aov != "depth" && aov != "normal" && aov != "id") {
-        std::fprintf(stderr, "rmsc render: --aov: expected color, depth, normal or id, got '%s'\n",
+    if (aov != "color" && aov != "depth" && aov != "normal" && aov != "id" && aov != "steps") {
+        std::fprintf(stderr,
+                     "rmsc render: --aov: expected color, depth, normal, id or steps, got '%s'\n",
                      aov.c_str());
         return kExitUsage;
     }
@@ -61,8 +63,8 @@ int runRender(std::span<const std::string> args) {
                      output.c_str());
         return kExitUsage;
     }
-    if (pfm && aov != "depth" && aov != "normal") {
-        std::fprintf(stderr, "rmsc render: .pfm output is for --aov depth or normal\n");
+    if (pfm && aov != "depth" && aov != "normal" && aov != "steps") {
+        std::fprintf(stderr, "rmsc render: .pfm output is for --aov depth, normal or steps\n");
         return kExitUsage;
     }
 
@@ -87,6 +89,10 @@ int runRender(std::span<const std::string> args) {
         const Pixels<float> normals = readNormals(targets);
         written = pfm ? writePfm(output, normals, error)
                       : writePng8(output, encodeNormals(normals), error);
+    } else if (aov == "steps") {
+        const Pixels<float> steps = readMarchSteps(targets);
+        written = pfm ? writePfm(output, steps, error)
+                      : writePng8(output, encodeStepsHeatmap(steps, scene.render.maxSteps), error);
     } else {
         written = writePng8(output, encodeObjectIds(readObjectIds(targets)), error);
     }

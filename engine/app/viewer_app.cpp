@@ -211,6 +211,7 @@ void Viewer::renderView() {
     in.selectedLast = ids.last;
     in.nearPlane = view.nearPlane;
     in.farPlane = std::min(view.farPlane, document.scene().render.maxDistance);
+    in.maxSteps = document.scene().render.maxSteps;
     in.x = vx;
     in.y = vy;
     in.width = vw;

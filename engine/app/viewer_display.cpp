@@ -13,6 +13,7 @@ std::optional<DisplayPass> DisplayPass::create(const ShaderFiles& files, std::st
     pass.mode_ = uniformLocation(pass.program_, "uMode");
     pass.selected_ = uniformLocation(pass.program_, "uSelected");
     pass.depthRange_ = uniformLocation(pass.program_, "uDepthRange");
+    pass.maxSteps_ = uniformLocation(pass.program_, "uMaxSteps");
     pass.viewportSize_ = uniformLocation(pass.program_, "uViewportSize");
     return pass;
 }
@@ -28,6 +29,7 @@ void DisplayPass::draw(const DisplayInput& input) const {
     glProgramUniform1i(program_.id(), mode_, int(input.mode));
     glProgramUniform2ui(program_.id(), selected_, input.selectedFirst, input.selectedLast);
     glProgramUniform2f(program_.id(), depthRange_, input.nearPlane, input.farPlane);
+    glProgramUniform1f(program_.id(), maxSteps_, float(input.maxSteps));
     glProgramUniform2f(program_.id(), viewportSize_, float(input.width), float(input.height));
     glBindTextureUnit(0, input.frame->display.color.id());
     glBindTextureUnit(1, input.frame->combined.normal.id());

@@ -158,8 +158,8 @@ void Viewer::drawMenuBar() {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
-        const char* names[] = {"Colour", "Normals", "Depth", "Object id"};
-        for (int i = 0; i < 4; ++i)
+        const char* names[] = {"Colour", "Normals", "Depth", "Object id", "March steps"};
+        for (int i = 0; i < 5; ++i)
             if (ImGui::MenuItem(names[i], nullptr, int(viewMode) == i)) viewMode = ViewMode(i);
         ImGui::Separator();
         ImGui::MenuItem("Overlay", nullptr, &showOverlay);
@@ -598,9 +598,9 @@ void Viewer::drawInspector() {
             ImGui::DragFloat("fly speed", &camera.speed, 0.05f, 0.01f, 1000.0f, "%.2f m/s");
             ImGui::Separator();
             ImGui::TextDisabled("View");
-            const char* names[] = {"colour", "normals", "depth", "object id"};
+            const char* names[] = {"colour", "normals", "depth", "object id", "march steps"};
             int mode = int(viewMode);
-            if (ImGui::Combo("show", &mode, names, 4)) viewMode = ViewMode(mode);
+            if (ImGui::Combo("show", &mode, names, 5)) viewMode = ViewMode(mode);
             ImGui::Checkbox("adaptive resolution", &adaptive.enabled);
             ImGui::DragFloat("target", &adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f,
                              "%.0f ms/frame");

@@ -134,4 +134,21 @@ Pixels<std::uint8_t> encodeObjectIds(const Pixels<std::uint32_t>& ids) {
     return out;
 }
 
+Pixels<std::uint8_t> encodeStepsHeatmap(const Pixels<float>& steps, int maxSteps) {
+    // Piecewise-linear ramp through black, blue, cyan, green, yellow, red.
+    static const float ramp[6][3] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 1},
+                                     {0, 1, 0}, {1, 1, 0}, {1, 0, 0}};
+    Pixels<std::uint8_t> out{steps.width, steps.height, 3, {}};
+    out.data.resize(std::size_t(steps.width) * steps.height * 3);
+    for (std::size_t i = 0; i < steps.data.size(); ++i) {
+        const float x = std::clamp(steps.data[i] / float(std::max(maxSteps, 1)), 0.0f, 1.0f) * 5;
+        const int k = std::min(int(x), 4);
+        const float f = x - float(k);
+        for (int c = 0; c < 3; ++c)
+            out.data[i * 3 + c] = std::uint8_t(
+                std::lround(255.0f * (ramp[k][c] + (ramp[k + 1][c] - ramp[k][c]) * f)));
+    }
+    return out;
+}
+
 } // namespace rmsc

@@ -10,8 +10,7 @@
 
 namespace rmsc {
 
-template <class T>
-struct Pixels {
+template <class T> struct Pixels {
     int width = 0;
     int height = 0;
     int channels = 0;
@@ -42,6 +41,8 @@ Pixels<std::uint16_t> encodeDepth16(const Pixels<float>& viewDepth, float nearPl
                                     float farPlane);
 Pixels<std::uint8_t> encodeNormals(const Pixels<float>& normals);
 Pixels<std::uint8_t> encodeObjectIds(const Pixels<std::uint32_t>& ids);
+// March steps as a heatmap: 0 black, then blue, green, yellow, red at maxSteps (RGB).
+Pixels<std::uint8_t> encodeStepsHeatmap(const Pixels<float>& steps, int maxSteps);
 // The colour of one object id (a hash, so neighbouring ids get unlike colours).
 void objectIdColor(std::uint32_t id, std::uint8_t rgb[3]);
 

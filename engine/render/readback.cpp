@@ -25,8 +25,8 @@ Pixels<T> readTexture(const gl::Texture& texture, int width, int height, int cha
 } // namespace
 
 Pixels<std::uint8_t> readDisplayColor(const FrameTargets& t) {
-    return readTexture<std::uint8_t>(t.display.color, t.display.width, t.display.height, 4,
-                                     GL_RGBA, GL_UNSIGNED_BYTE);
+    return readTexture<std::uint8_t>(t.display.color, t.display.width, t.display.height, 4, GL_RGBA,
+                                     GL_UNSIGNED_BYTE);
 }
 
 Pixels<float> readViewDepth(const FrameTargets& t) {
@@ -37,6 +37,17 @@ Pixels<float> readViewDepth(const FrameTargets& t) {
 Pixels<float> readNormals(const FrameTargets& t) {
     return readTexture<float>(t.combined.normal, t.combined.width, t.combined.height, 3, GL_RGB,
                               GL_FLOAT);
+}
+
+Pixels<float> readMarchSteps(const FrameTargets& t) {
+    // The march pass keeps each pixel's step count in the normal target's w.
+    const Pixels<float> rgba = readTexture<float>(t.combined.normal, t.combined.width,
+                                                  t.combined.height, 4, GL_RGBA, GL_FLOAT);
+    Pixels<float> steps{rgba.width, rgba.height, 1, {}};
+    steps.data.resize(std::size_t(rgba.width) * rgba.height);
+    for (std::size_t i = 0; i < steps.data.size(); ++i)
+        steps.data[i] = rgba.data[i * 4 + 3];
+    return steps;
 }
 
 Pixels<std::uint32_t> readObjectIds(const FrameTargets& t) {

@@ -9,10 +9,11 @@
 
 namespace rmsc {
 
-Pixels<std::uint8_t> readDisplayColor(const FrameTargets& targets);  // RGBA8 sRGB
-Pixels<float> readViewDepth(const FrameTargets& targets);            // 1 channel, kNoDepth = miss
-Pixels<float> readNormals(const FrameTargets& targets);              // 3 channels, world
-Pixels<std::uint32_t> readObjectIds(const FrameTargets& targets);    // 1 channel
-Pixels<float> readHdrColor(const FrameTargets& targets);             // 3 channels, linear
+Pixels<std::uint8_t> readDisplayColor(const FrameTargets& targets); // RGBA8 sRGB
+Pixels<float> readViewDepth(const FrameTargets& targets);           // 1 channel, kNoDepth = miss
+Pixels<float> readNormals(const FrameTargets& targets);             // 3 channels, world
+Pixels<float> readMarchSteps(const FrameTargets& targets);          // 1 channel: steps per pixel
+Pixels<std::uint32_t> readObjectIds(const FrameTargets& targets);   // 1 channel
+Pixels<float> readHdrColor(const FrameTargets& targets);            // 3 channels, linear
 
 } // namespace rmsc

@@ -68,7 +68,7 @@ void main() {
     float tMax = min(frame.march.y, rasterViewDepth / forwardness);
 
     float t;
-    int steps;
+    int steps = 0;
     if (tMin < tMax &&
         sdfMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, t, steps)) {
         vec3 p = ro + rd * t;
@@ -85,7 +85,7 @@ void main() {
         if (materialHasTextures(surface.material))
             applySdfTextures(surface, p, t * forwardness, s);
         outColor = vec4(shadeSurface(s), 1.0);
-        outNormal = vec4(s.normal, 0.0);
+        outNormal = vec4(s.normal, float(steps)); // w: march steps (the steps AOV)
         outViewDepth = t * forwardness;
         outObjectId = surface.objectId;
         gl_FragDepth = windowDepth(p);
@@ -95,7 +95,7 @@ void main() {
     // Nothing hit here at all: the sky, when the scene has one.
     if (hasSky() && texelFetch(uRasterObjectId, pixel, 0).r == 0u)
         outColor = vec4(skyBackground(rd), 1.0);
-    outNormal = texelFetch(uRasterNormal, pixel, 0);
+    outNormal = vec4(texelFetch(uRasterNormal, pixel, 0).xyz, float(steps));
     outViewDepth = rasterViewDepth;
     outObjectId = texelFetch(uRasterObjectId, pixel, 0).r;
     gl_FragDepth = texelFetch(uRasterDepth, pixel, 0).r;

@@ -8,7 +8,8 @@ layout(binding = 1) uniform sampler2D uNormal;     // world normal (0 where noth
 layout(binding = 2) uniform sampler2D uViewDepth;  // linear view depth, 1e30 where nothing was hit
 layout(binding = 3) uniform usampler2D uObjectId;  // 0 = background
 
-uniform int uMode;           // 0 colour, 1 normals, 2 depth, 3 object id
+uniform int uMode;           // 0 colour, 1 normals, 2 depth, 3 object id, 4 march steps
+uniform float uMaxSteps;     // march steps at which the heatmap is red
 uniform uvec2 uSelected;     // selected ids: [x, y)
 uniform vec2 uDepthRange;    // near, far of the depth view
 uniform vec2 uViewportSize;  // window pixels the image covers
@@ -60,6 +61,14 @@ void main() {
         color = vec3(1.0 - pow(v, 0.25)); // near = bright; the fourth root spreads nearby depths
     } else if (uMode == 3) {
         color = idColor(texelFetch(uObjectId, sourceTexel(vUv), 0).r);
+    } else if (uMode == 4) {
+        // The march pass keeps the step count in the normal target's w. The ramp of
+        // encodeStepsHeatmap (engine/core/image_io.cpp): black, blue, cyan, green, yellow, red.
+        float x = clamp(texelFetch(uNormal, sourceTexel(vUv), 0).w / max(uMaxSteps, 1.0), 0.0, 1.0) * 5.0;
+        const vec3 ramp[6] = vec3[6](vec3(0, 0, 0), vec3(0, 0, 1), vec3(0, 1, 1), vec3(0, 1, 0),
+                                     vec3(1, 1, 0), vec3(1, 0, 0));
+        int k = min(int(x), 4);
+        color = mix(ramp[k], ramp[k + 1], x - float(k));
     } else {
         color = bilinearColor(vUv);
     }

@@ -82,7 +82,7 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("depth pfm", ["render", "-o", pfm, "--size", "64x36", "--aov", "depth"], 0)
     with open(pfm, "rb") as f:
         check("pfm header", f.read(3) == b"Pf\n")
-    for aov in ["normal", "id"]:
+    for aov in ["normal", "id", "steps"]:
         path = os.path.join(tmp, aov + ".png")
         expect(f"{aov} aov", ["render", "-o", path, "--size", "64x36", "--aov", aov], 0)
         check(f"{aov} is 8-bit RGB", png_header(path)[2:] == (8, 2), png_header(path))
