@@ -28,10 +28,18 @@ float sdfSoftShadow(vec3 ro, vec3 rd, float tMax, float w) {
         float h = sdfDistance(ro + rd * t);
         if (h < 1e-4 * max(t, 1.0)) return 0.0;
         // The closest approach between this sample and the previous one: the spheres of radius
-        // `previous` and h around the two samples meet at distance y back along the ray.
+        // `previous` and h around the two samples meet at distance y back along the ray. When
+        // they do not meet ahead of the ray's start (y >= h or y >= t: the ray leaves the
+        // surface head-on, h doubling each step), that estimate says nothing; the classic
+        // h / t bound is used there (Quilez, "Soft shadows", the original estimate), instead of
+        // a zero that would print black specks where the light meets the normal.
         float y = h * h / (2.0 * previous);
-        float d = sqrt(max(h * h - y * y, 0.0));
-        result = min(result, d / (w * max(t - y, 1e-4)));
+        if (y < h && y < t) {
+            float d = sqrt(h * h - y * y);
+            result = min(result, d / (w * (t - y)));
+        } else {
+            result = min(result, h / (w * t));
+        }
         previous = h;
         t += h;
     }
