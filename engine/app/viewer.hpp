@@ -109,6 +109,11 @@ class Viewer {
     std::string pathBuffer;
     bool quitRequested = false;
     bool quitNow = false;
+    // Crash recovery (editor/recovery.hpp): a recovery file found at start, offered once.
+    std::optional<std::filesystem::path> offeredRecovery;
+    bool askRecover = false;
+    std::uint64_t recoveryRevision = 0; // document revision last written to the recovery file
+    double lastRecoveryWrite = -1e9;
 
     // Layout (window pixels)
     Rect viewport;
@@ -131,6 +136,7 @@ class Viewer {
     void openFile(const std::filesystem::path& path);
     void newScene();
     void save();
+    void autosave(); // unsaved edits to the recovery file, at most every few seconds
     void saveAs(const std::filesystem::path& path);
     void resetCameraToScene();
     void saveCameraToScene();

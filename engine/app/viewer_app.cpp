@@ -1,6 +1,7 @@
 // `rmsc view`: the frame loop, the GPU copy of the scene, rendering with adaptive resolution,
 // picking through the id buffer, screenshots and the scene / shader files (see viewer.hpp).
 #include "app/viewer.hpp"
+#include "editor/recovery.hpp"
 
 #include "app/commands.hpp"
 #include "core/image_io.hpp"
@@ -73,6 +74,7 @@ Viewer::Viewer(const ViewerOptions& opts, std::unique_ptr<Window> win)
         if (scene) document.reset(*scene, path);
         sceneWatcher = editor::FileWatcher(path); // a broken file that gets fixed loads then
     }
+    offeredRecovery = editor::findRecovery(document.file());
     if (diagnostics.hasErrors()) {
         openError = "Could not open " + path.string() + "; showing an empty scene.\n" +
                     diagnostics.format();
@@ -284,10 +286,25 @@ void Viewer::screenshotToDefaultFile() {
         fileError = "Screenshot failed: " + error;
 }
 
+void Viewer::autosave() {
+    const double t = now();
+    if (!document.dirty() || document.revision() == recoveryRevision || t - lastRecoveryWrite < 5.0)
+        return;
+    lastRecoveryWrite = t;
+    std::string error;
+    if (editor::writeRecovery(document, error)) {
+        recoveryRevision = document.revision();
+    } else if (recoveryRevision != document.revision()) {
+        notice("cannot write the recovery file: " + error);
+        recoveryRevision = document.revision(); // say it once per change, not every 5 s
+    }
+}
+
 void Viewer::pollFiles() {
     const double t = now();
     if (t - lastPoll < 1.0) return;
     lastPoll = t;
+    autosave();
     if (!sceneWatcher.path().empty() && sceneWatcher.changed()) {
         Diagnostics diagnostics;
         std::optional<Scene> scene = editor::loadSceneForEditing(sceneWatcher.path(), diagnostics);
@@ -349,10 +366,13 @@ void Viewer::save() {
 
 void Viewer::saveAs(const std::filesystem::path& path) {
     std::string error;
+    const std::filesystem::path previousFile = document.file();
     if (!document.saveAs(path, error)) {
         fileError = "Save failed; your edits are kept in memory.\n" + error;
         return;
     }
+    editor::removeRecovery(previousFile); // the edits are safe in the file now
+    editor::removeRecovery(path);
     fileError.clear();
     sceneWatcher = editor::FileWatcher(path); // our own write is not an external change
     notice("saved " + path.string());
@@ -382,6 +402,8 @@ int Viewer::run() {
         return kExitSystem;
     }
     if (!script) attachGlfwInput(window->handle(), &input);
+    // Scripted runs (tests) never see a recovery prompt, so they replay the same everywhere.
+    askRecover = offeredRecovery.has_value() && !script;
     int failures = 0;
     auto previous = std::chrono::steady_clock::now();
     while (!quitNow) {
@@ -467,6 +489,7 @@ int Viewer::run() {
             return kExitSystem;
         }
     }
+    if (!document.dirty()) editor::removeRecovery(document.file()); // closed cleanly
     return failures ? kExitSystem : kExitOk;
 }
 

@@ -3,6 +3,7 @@
 // the modal dialogs (see viewer.hpp). Widgets edit the document's scene in place and mark it
 // changed; the frame loop commits one undo step when no widget is active any more.
 #include "app/viewer.hpp"
+#include "editor/recovery.hpp"
 
 #include "editor/scene_edits.hpp"
 
@@ -757,6 +758,40 @@ void Viewer::drawOverlay() {
 }
 
 void Viewer::drawModals() {
+    if (askRecover) {
+        ImGui::OpenPopup("Recover unsaved edits");
+        askRecover = false;
+    }
+    ImGui::SetNextWindowPos(
+        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Recover unsaved edits", nullptr,
+                               ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("Edits that were never saved were found in\n%s",
+                    offeredRecovery ? offeredRecovery->string().c_str() : "");
+        if (ImGui::Button("Recover")) {
+            Diagnostics diagnostics;
+            std::optional<Scene> recovered =
+                offeredRecovery ? editor::loadSceneForEditing(*offeredRecovery, diagnostics)
+                                : std::nullopt;
+            if (recovered) {
+                recovered->file = document.scene().file;
+                document.apply("Recover unsaved edits",
+                               [&](Scene& scene, editor::Selection&) { scene = *recovered; });
+                notice("recovered the unsaved edits; save to keep them");
+            } else {
+                fileError = "The recovery file does not load:\n" + diagnostics.format();
+            }
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard them")) {
+            editor::removeRecovery(document.file());
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+
     if (askClose) {
         ImGui::OpenPopup("Unsaved changes");
         askClose = false;
@@ -778,6 +813,7 @@ void Viewer::drawModals() {
         }
         ImGui::SameLine();
         if (ImGui::Button("Discard changes")) {
+            editor::removeRecovery(document.file());
             if (afterDiscard == AfterDiscard::Quit)
                 quitNow = true;
             else

@@ -1,0 +1,28 @@
+// Crash recovery for the editor: while a scene has unsaved edits the viewer writes them, every
+// few seconds, to a recovery file next to the scene ("SCENE.recovery", or one in the temporary
+// folder for a scene never saved); a save or a deliberate close removes it, so a file that is
+// still there on the next start means edits were lost, and the viewer offers them. GL-free.
+#pragma once
+
+#include "editor/document.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace rmsc::editor {
+
+// Where the edits of `sceneFile` ("" for a scene never saved) are kept.
+std::filesystem::path recoveryPath(const std::filesystem::path& sceneFile);
+
+// Writes the document's scene to recoveryPath(document.file()) atomically. False with `error`
+// saying why when it cannot be written.
+bool writeRecovery(const Document& document, std::string& error);
+
+// The recovery file of `sceneFile` if there is one worth offering: it exists and is newer than
+// the scene file (or the scene file is gone, or was never saved).
+std::optional<std::filesystem::path> findRecovery(const std::filesystem::path& sceneFile);
+
+void removeRecovery(const std::filesystem::path& sceneFile);
+
+} // namespace rmsc::editor
