@@ -59,6 +59,13 @@ float stepFor(float size) {
     return std::max(0.001f, std::abs(size) * 0.01f);
 }
 
+// Dialogs open in the middle of the window.
+void centerNextWindow() {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
+}
+
 void helpTooltip(std::string_view text) {
     if (!text.empty() && ImGui::IsItemHovered())
         ImGui::SetTooltip("%.*s", int(text.size()), text.data());
@@ -762,9 +769,7 @@ void Viewer::drawModals() {
         ImGui::OpenPopup("Recover unsaved edits");
         askRecover = false;
     }
-    ImGui::SetNextWindowPos(
-        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    centerNextWindow();
     if (ImGui::BeginPopupModal("Recover unsaved edits", nullptr,
                                ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::Text("Edits that were never saved were found in\n%s",
@@ -796,9 +801,7 @@ void Viewer::drawModals() {
         ImGui::OpenPopup("Unsaved changes");
         askClose = false;
     }
-    ImGui::SetNextWindowPos(
-        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    centerNextWindow();
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::Text("The scene has unsaved changes.");
         if (ImGui::Button("Save")) {
@@ -830,9 +833,7 @@ void Viewer::drawModals() {
         ImGui::OpenPopup("File");
         askPath = false;
     }
-    ImGui::SetNextWindowPos(
-        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    centerNextWindow();
     if (ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         const char* what = pathPurpose == PathPurpose::Open     ? "Open scene file (.json):"
                            : pathPurpose == PathPurpose::SaveAs ? "Save scene as (.json):"
@@ -871,9 +872,7 @@ void Viewer::drawModals() {
         ImGui::OpenPopup("Changed on disk");
         externalChangePending = false;
     }
-    ImGui::SetNextWindowPos(
-        ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    centerNextWindow();
     if (ImGui::BeginPopupModal("Changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::Text("%s changed on disk, and you have unsaved edits.",
                     document.file().string().c_str());
