@@ -1,11 +1,13 @@
 // `rmsc view`: the frame loop, the GPU copy of the scene, rendering with adaptive resolution,
-// picking through the id buffer, screenshots and the scene / shader files (see viewer.hpp).
+// picking by CPU ray casts, screenshots and the scene / shader files (see viewer.hpp).
 #include "app/viewer.hpp"
 #include "editor/recovery.hpp"
 
 #include "app/commands.hpp"
 #include "core/image_io.hpp"
+#include "editor/picking.hpp"
 #include "editor/scene_edits.hpp"
+#include "render/frame.hpp"
 #include "render/readback.hpp"
 #include "scene/scene_json.hpp"
 
@@ -222,16 +224,24 @@ void Viewer::renderView() {
 }
 
 void Viewer::pick(glm::vec2 p) {
-    if (!targets || !viewport.contains(p)) return;
-    const float u = (p.x - viewport.x) / viewport.width;
-    const float v = (p.y - viewport.y) / viewport.height;
-    const int w = targets->combined.width, h = targets->combined.height;
-    const int tx = std::clamp(int(u * float(w)), 0, w - 1);
-    const int ty = std::clamp(int((1.0f - v) * float(h)), 0, h - 1); // GL rows start at the bottom
-    std::uint32_t id = 0;
-    glGetTextureSubImage(targets->combined.objectId.id(), 0, tx, ty, 0, 1, 1, 1, GL_RED_INTEGER,
-                         GL_UNSIGNED_INT, sizeof(id), &id);
-    document.selection = editor::selectionForObjectId(document.scene(), id);
+    if (!prepared || !viewport.contains(p)) return;
+    // A ray from the eye through the clicked point, built as the march pass builds its rays
+    // (pixelRayDirection adds half a pixel, so the point itself is the pixel's centre).
+    const Camera view = viewCamera();
+    const int w = std::max(1, int(viewport.width)), h = std::max(1, int(viewport.height));
+    const FrameCamera frame = makeFrameCamera(view, w, h);
+    const float x = p.x - viewport.x - 0.5f;
+    const float y = viewport.height - (p.y - viewport.y) - 0.5f; // rows counted from the bottom
+    const glm::vec3 direction = pixelRayDirection(frame, x, y, w, h); // forward component 1
+    const float length = glm::length(direction);
+    editor::PickRay ray;
+    ray.origin = view.position;
+    ray.direction = direction / length;
+    ray.tMin = view.nearPlane * length; // the near and far planes are view depths
+    ray.tMax = view.farPlane * length;
+    const std::optional<editor::PickHit> hit = editor::pick(*prepared, ray);
+    document.selection = hit ? editor::selectionForObjectId(document.scene(), hit->objectId)
+                             : editor::Selection::none();
 }
 
 bool Viewer::writeScreenshot(const std::string& path, std::string& error) {

@@ -1,0 +1,83 @@
+// Picking by CPU ray casts (see picking.hpp).
+#include "editor/picking.hpp"
+
+#include "editor/ray_triangle.hpp"
+#include "editor/scene_edits.hpp"
+#include "sdf/cpu_eval.hpp"
+
+#include <algorithm>
+
+namespace rmsc::editor {
+namespace {
+
+// The nearest triangle of one asset along a ray given in the asset's own space.
+std::optional<float> nearestTriangle(const MeshAsset& asset, glm::vec3 origin, glm::vec3 direction,
+                                     float tMin, float tMax) {
+    // A little room around the bounds so a flat mesh (zero thickness) is not culled by rounding.
+    const glm::vec3 pad =
+        glm::vec3(1e-4f) * (1.0f + glm::length(asset.boundsMax - asset.boundsMin));
+    if (!rayHitsBox(origin, direction, asset.boundsMin - pad, asset.boundsMax + pad, tMin, tMax))
+        return std::nullopt;
+    std::optional<float> nearest;
+    for (const MeshPrimitive& primitive : asset.primitives) {
+        for (std::size_t i = 0; i + 2 < primitive.indices.size(); i += 3) {
+            const std::uint32_t ia = primitive.indices[i], ib = primitive.indices[i + 1],
+                                ic = primitive.indices[i + 2];
+            if (std::max({ia, ib, ic}) >= primitive.vertices.size()) continue;
+            const std::optional<float> t = rayTriangle(
+                origin, direction, primitive.vertices[ia].position, primitive.vertices[ib].position,
+                primitive.vertices[ic].position, tMin, nearest ? *nearest : tMax);
+            if (t) nearest = t;
+        }
+    }
+    return nearest;
+}
+
+} // namespace
+
+std::optional<PickHit> pickMesh(const PreparedScene& prepared, const PickRay& ray) {
+    std::optional<PickHit> best;
+    const std::vector<MeshInstance>& meshes = prepared.scene.meshes;
+    for (std::size_t i = 0; i < meshes.size() && i < prepared.instanceAsset.size(); ++i) {
+        const int assetIndex = prepared.instanceAsset[i];
+        if (assetIndex < 0 || assetIndex >= int(prepared.assets.size())) continue;
+        // Into the asset's space: an affine map keeps the ray parameter t, so hits there are at
+        // the same t as in the world (the direction is mapped too, and not renormalized).
+        const glm::mat4 toAsset = glm::inverse(meshes[i].transform.matrix());
+        const glm::vec3 origin = glm::vec3(toAsset * glm::vec4(ray.origin, 1.0f));
+        const glm::vec3 direction = glm::vec3(toAsset * glm::vec4(ray.direction, 0.0f));
+        const float tMax = best ? best->t : ray.tMax;
+        const std::optional<float> t = nearestTriangle(prepared.assets[std::size_t(assetIndex)],
+                                                       origin, direction, ray.tMin, tMax);
+        if (t) {
+            const std::uint32_t id = kMeshIdBase + std::uint32_t(i);
+            best = PickHit{id, *t, Selection::mesh(int(i))};
+        }
+    }
+    return best;
+}
+
+std::optional<PickHit> pickSdf(const PreparedScene& prepared, const PickRay& ray) {
+    if (prepared.sdf.instructions.empty()) return std::nullopt;
+    const RenderSettings& settings = prepared.scene.render;
+    const float tMax = std::min(ray.tMax, settings.maxDistance);
+    const std::optional<SdfHit> hit =
+        sdfCastRay(prepared.sdf, settings, ray.origin, ray.direction, ray.tMin, tMax);
+    if (!hit) return std::nullopt;
+    // The shape that dominates the distance at the hit point is the one the id AOV shows.
+    const SdfSurface surface = sdfSurface(prepared.sdf, {}, hit->position);
+    return PickHit{surface.objectId, hit->t,
+                   selectionForObjectId(prepared.scene, surface.objectId)};
+}
+
+std::optional<PickHit> pick(const PreparedScene& prepared, const PickRay& ray) {
+    const std::optional<PickHit> mesh = pickMesh(prepared, ray);
+    // The SDF only needs to be traced up to the mesh hit: anything farther is hidden.
+    PickRay sdfRay = ray;
+    if (mesh) sdfRay.tMax = mesh->t;
+    const std::optional<PickHit> sdf = pickSdf(prepared, sdfRay);
+    if (sdf && (!mesh || sdf->t < mesh->t)) return sdf;
+    return mesh;
+}
+
+} // namespace rmsc::editor
