@@ -11,6 +11,7 @@
 #include "editor/document.hpp"
 #include "editor/file_watcher.hpp"
 #include "editor/fly_camera.hpp"
+#include "editor/transform_gesture.hpp"
 #include "gl/window.hpp"
 #include "render/renderer.hpp"
 
@@ -89,15 +90,17 @@ class Viewer {
     double lastPoll = 0.0;
     bool externalChangePending = false;
 
-    // Gestures
-    struct Grab {
+    // Gestures: move (G), rotate (R) and scale (S) of the selection with the mouse; the math
+    // is editor/transform_gesture.hpp. X / Y / Z constrain, click / Enter keeps, Esc cancels.
+    struct Gesture {
         bool active = false;
-        int axis = -1; // -1 free (view plane), 0 x, 1 y, 2 z
-        glm::vec2 startMouse{0.0f};
-        glm::vec3 startPosition{0.0f}; // local position of the object at the start
-        glm::vec3 startWorld{0.0f};
-        glm::vec2 lastMoved{0.0f}; // mouse movement already applied
-    } grab;
+        editor::TransformGesture math; // the start; its axis and space change while it runs
+        glm::vec2 lastMouse{0.0f};     // viewport pixels last applied
+        bool needsApply = false;       // apply even if the mouse did not move (axis changed)
+    } gesture;
+    // Inspector setting: positions shown in world coordinates, gesture axes are the world's
+    // (otherwise the object's own).
+    bool worldCoordinates = false;
     bool orbiting = false;
     bool looking = false;
 
@@ -154,7 +157,8 @@ class Viewer {
     void handleShortcuts();
     void handleCamera(float seconds);
     void handleViewportMouse();
-    void updateGrab();
+    void startGesture();  // G, R or S pressed with a movable selection
+    void updateGesture(); // follows the mouse; keeps, cancels or changes the axis
     void frameSelection();
 
   private:

@@ -424,7 +424,7 @@ int Viewer::run() {
             glfwPollEvents();
             actions = playScriptFrame(*script, frameNumber, input);
         } else if (!viewChanged && adaptive.refined(lastRenderScale) && !ImGui::IsAnyItemActive() &&
-                   !grab.active) {
+                   !gesture.active) {
             glfwWaitEventsTimeout(0.25); // idle: wake for input or the file poll
         } else {
             glfwPollEvents();
@@ -455,11 +455,12 @@ int Viewer::run() {
                     std::max(1.0f, float(wh) - top)};
 
         handleShortcuts();
+        startGesture(); // before the camera, so the S of "scale" does not also fly back
         handleCamera(seconds);
         handleViewportMouse();
-        updateGrab();
+        updateGesture();
         drawUi();
-        if (!ImGui::IsAnyItemActive() && !grab.active && document.hasPendingChange())
+        if (!ImGui::IsAnyItemActive() && !gesture.active && document.hasPendingChange())
             document.commit();
         if (!editor::selectionValid(document.scene(), document.selection))
             document.selection = editor::Selection::none();

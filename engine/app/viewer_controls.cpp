@@ -1,6 +1,7 @@
 // Viewer gestures: keyboard shortcuts, the fly / orbit camera, picking by clicking in the
-// viewport, and grab (G, then X / Y / Z to constrain to a world axis, like Blender) to move the
-// selected object with the mouse (see viewer.hpp).
+// viewport, and move / rotate / scale of the selected object with the mouse (G / R / S, then
+// X / Y / Z to constrain to an axis, like Blender; the math is editor/transform_gesture.hpp).
+// See viewer.hpp.
 #include "app/viewer.hpp"
 
 #include "editor/scene_edits.hpp"
@@ -8,7 +9,7 @@
 
 #include <imgui.h>
 
-#include <cmath>
+#include <string>
 
 namespace rmsc::app {
 namespace {
@@ -25,7 +26,7 @@ void Viewer::handleShortcuts() {
     if (input.pressed(GLFW_KEY_F12)) screenshotToDefaultFile();
     if (input.ctrl() && !io.WantTextInput && !askPath) {
         if (input.pressed(GLFW_KEY_Z)) {
-            grab.active = false;
+            gesture.active = false;
             if (input.shift())
                 document.redo();
             else
@@ -51,7 +52,7 @@ void Viewer::handleShortcuts() {
                 selection = editor::duplicateSelected(scene, selection);
             });
     }
-    if (!keyboardFree(input) || grab.active) return;
+    if (!keyboardFree(input) || gesture.active) return;
     if (input.pressed(GLFW_KEY_DELETE) && !document.selection.empty())
         document.apply("Delete", [](Scene& scene, editor::Selection& selection) {
             selection = editor::deleteSelected(scene, selection);
@@ -62,7 +63,7 @@ void Viewer::handleShortcuts() {
 void Viewer::handleCamera(float seconds) {
     const ImGuiIO& io = ImGui::GetIO();
     editor::FlyInput fly;
-    if (keyboardFree(input)) {
+    if (keyboardFree(input) && !gesture.active) { // the gesture keys do not fly
         const bool w = input.held(GLFW_KEY_W), s = input.held(GLFW_KEY_S);
         const bool a = input.held(GLFW_KEY_A), d = input.held(GLFW_KEY_D);
         const bool space = input.held(GLFW_KEY_SPACE);
@@ -74,15 +75,15 @@ void Viewer::handleCamera(float seconds) {
             fly.moveUp = -1.0f;
         else
             fly.fast = input.shift();
-        if (!grab.active) fly.roll = float(input.held(GLFW_KEY_E)) - float(input.held(GLFW_KEY_Q));
+        fly.roll = float(input.held(GLFW_KEY_E)) - float(input.held(GLFW_KEY_Q));
     }
     const bool inViewport = viewport.contains(input.mouse) && !io.WantCaptureMouse;
-    if (input.clicked[1] && inViewport && !grab.active) looking = true;
+    if (input.clicked[1] && inViewport && !gesture.active) looking = true;
     if (!input.buttons[1]) looking = false;
     if (looking) fly.look = input.mouseDelta;
     if (input.wheel != 0.0f && inViewport) camera.changeSpeed(input.wheel);
 
-    if (input.clicked[0] && input.alt() && inViewport && !grab.active) orbiting = true;
+    if (input.clicked[0] && input.alt() && inViewport && !gesture.active) orbiting = true;
     if (!input.buttons[0]) orbiting = false;
     if (orbiting && input.mouseDelta != glm::vec2(0.0f)) {
         const std::optional<editor::Bounds> bounds =
@@ -96,7 +97,7 @@ void Viewer::handleCamera(float seconds) {
 
 void Viewer::handleViewportMouse() {
     const ImGuiIO& io = ImGui::GetIO();
-    if (grab.active || !input.clicked[0] || input.alt()) return;
+    if (gesture.active || !input.clicked[0] || input.alt()) return;
     if (!viewport.contains(input.mouse) || io.WantCaptureMouse) return;
     pick(input.mouse);
 }
@@ -109,90 +110,92 @@ void Viewer::frameSelection() {
     camera.frame(bounds->center, bounds->radius, sceneCameraBase.fovYDegrees);
 }
 
-void Viewer::updateGrab() {
+namespace {
+
+// The selected object's transform (an SDF node's is relative to its parent group), or nullptr.
+Transform* selectedTransform(Scene& scene, const editor::Selection& selection) {
+    if (selection.kind == editor::SelectionKind::Sdf) {
+        SdfNode* node = editor::findSdfNode(scene, selection.sdfPath);
+        return node ? &node->transform : nullptr;
+    }
+    if (selection.kind == editor::SelectionKind::Mesh && editor::selectionValid(scene, selection))
+        return &scene.meshes[std::size_t(selection.index)].transform;
+    return nullptr;
+}
+
+std::string gestureLabel(const editor::TransformGesture& g) {
+    const char* verb = g.kind == editor::GestureKind::Move     ? "Move"
+                       : g.kind == editor::GestureKind::Rotate ? "Rotate"
+                                                               : "Scale";
+    if (g.axis < 0) return verb;
+    const char* preposition = g.kind == editor::GestureKind::Rotate ? " about " : " along ";
+    return std::string(verb) + preposition + char('X' + g.axis);
+}
+
+} // namespace
+
+void Viewer::startGesture() {
+    if (gesture.active || !keyboardFree(input)) return;
+    editor::GestureKind kind;
+    if (input.pressed(GLFW_KEY_G))
+        kind = editor::GestureKind::Move;
+    else if (input.pressed(GLFW_KEY_R))
+        kind = editor::GestureKind::Rotate;
+    else if (input.pressed(GLFW_KEY_S) && !input.buttons[1]) // S with the right button: fly back
+        kind = editor::GestureKind::Scale;
+    else
+        return;
     const editor::Selection& selection = document.selection;
-    const bool movable = selection.kind == editor::SelectionKind::Sdf ||
-                         selection.kind == editor::SelectionKind::Mesh;
-    if (!grab.active) {
-        if (!input.pressed(GLFW_KEY_G) || !keyboardFree(input) || !movable ||
-            !editor::selectionValid(document.scene(), selection))
-            return;
-        document.commit();
-        grab.active = true;
-        grab.axis = -1;
-        grab.startMouse = input.mouse;
-        grab.lastMoved = glm::vec2(0.0f);
-        if (selection.kind == editor::SelectionKind::Sdf) {
-            grab.startPosition =
-                editor::findSdfNode(document.scene(), selection.sdfPath)->transform.position;
-            grab.startWorld =
-                glm::vec3(editor::sdfWorldMatrix(document.scene(), selection.sdfPath)[3]);
-        } else {
-            grab.startPosition =
-                document.scene().meshes[std::size_t(selection.index)].transform.position;
-            grab.startWorld = grab.startPosition;
-        }
+    const Transform* transform = selectedTransform(document.editScene(), selection);
+    if (!transform) return; // nothing movable selected (S then flies back as usual)
+    document.commit();
+    editor::TransformGesture& g = gesture.math;
+    g = {};
+    g.kind = kind;
+    g.space = worldCoordinates ? editor::AxisSpace::World : editor::AxisSpace::Local;
+    g.start = *transform;
+    if (selection.kind == editor::SelectionKind::Sdf)
+        g.parentWorld = editor::sdfParentWorldMatrix(document.scene(), selection.sdfPath);
+    const FrameCamera frame =
+        makeFrameCamera(viewCamera(), int(viewport.width), int(viewport.height));
+    g.view.viewProjection = frame.viewProjection;
+    g.view.viewportSize = glm::vec2(viewport.width, viewport.height);
+    g.view.forward = frame.forward;
+    g.startMouse = input.mouse - glm::vec2(viewport.x, viewport.y);
+    gesture.lastMouse = g.startMouse;
+    gesture.needsApply = false;
+    gesture.active = true;
+}
+
+void Viewer::updateGesture() {
+    if (!gesture.active) return;
+    const editor::Selection& selection = document.selection;
+    if (!selectedTransform(document.editScene(), selection)) {
+        gesture.active = false;
         return;
     }
-    if (!editor::selectionValid(document.scene(), selection)) {
-        grab.active = false;
-        return;
-    }
+    editor::TransformGesture& g = gesture.math;
     for (int axis = 0; axis < 3; ++axis) {
         if (input.pressed(GLFW_KEY_X + axis) && !input.ctrl()) {
-            grab.axis = grab.axis == axis ? -1 : axis;
-            grab.lastMoved = glm::vec2(-1e9f); // apply again with the new constraint
+            g.axis = g.axis == axis ? -1 : axis;
+            gesture.needsApply = true; // apply again with the new constraint
         }
     }
     if (input.pressed(GLFW_KEY_ESCAPE) || input.clicked[1]) {
         document.revertPending();
-        grab.active = false;
+        gesture.active = false;
         return;
     }
-
-    const Camera view = viewCamera();
-    const FrameCamera frame = makeFrameCamera(view, int(viewport.width), int(viewport.height));
-    const glm::vec2 moved = input.mouse - grab.startMouse;
-    glm::vec3 worldDelta(0.0f);
-    if (grab.axis < 0) {
-        // Free move in the view plane: one pixel is the world size of a pixel at the object.
-        const float depth =
-            std::max(glm::dot(grab.startWorld - view.position, frame.forward), 0.01f);
-        const float worldPerPixel =
-            2.0f * depth * std::tan(glm::radians(view.fovYDegrees) * 0.5f) / viewport.height;
-        worldDelta =
-            camera.right() * moved.x * worldPerPixel - camera.up() * moved.y * worldPerPixel;
-    } else {
-        // Along a world axis: the mouse movement projected on the axis as drawn on screen.
-        glm::vec3 axis(0.0f);
-        axis[grab.axis] = 1.0f;
-        auto toScreen = [&](glm::vec3 p) {
-            const glm::vec4 clip = frame.viewProjection * glm::vec4(p, 1.0f);
-            const glm::vec2 ndc = glm::vec2(clip) / std::max(clip.w, 1e-4f);
-            return glm::vec2((ndc.x * 0.5f + 0.5f) * viewport.width,
-                             (0.5f - ndc.y * 0.5f) * viewport.height);
-        };
-        const glm::vec2 screenAxis = toScreen(grab.startWorld + axis) - toScreen(grab.startWorld);
-        const float length2 = glm::dot(screenAxis, screenAxis);
-        if (length2 > 1e-6f) worldDelta = axis * (glm::dot(moved, screenAxis) / length2);
-    }
-    if (moved != grab.lastMoved) {
-        grab.lastMoved = moved;
-        Scene& scene = document.editScene();
-        if (selection.kind == editor::SelectionKind::Sdf) {
-            const glm::mat3 parent(editor::sdfParentWorldMatrix(scene, selection.sdfPath));
-            editor::findSdfNode(scene, selection.sdfPath)->transform.position =
-                grab.startPosition + glm::inverse(parent) * worldDelta;
-        } else {
-            scene.meshes[std::size_t(selection.index)].transform.position =
-                grab.startPosition + worldDelta;
-        }
-        document.markChanged(grab.axis < 0 ? "Move"
-                                           : std::string("Move along ") + char('X' + grab.axis));
+    const glm::vec2 mouse = input.mouse - glm::vec2(viewport.x, viewport.y);
+    if (mouse != gesture.lastMouse || gesture.needsApply) {
+        gesture.lastMouse = mouse;
+        gesture.needsApply = false;
+        *selectedTransform(document.editScene(), selection) = editor::gestureTransform(g, mouse);
+        document.markChanged(gestureLabel(g));
     }
     if (input.pressed(GLFW_KEY_ENTER) || input.clicked[0]) {
         document.commit();
-        grab.active = false;
+        gesture.active = false;
     }
 }
 

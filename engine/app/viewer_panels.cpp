@@ -130,6 +130,10 @@ void Viewer::drawMenuBar() {
             });
         if (ImGui::MenuItem("Move (grab)", "G, then X/Y/Z", false, false)) {
         }
+        if (ImGui::MenuItem("Rotate", "R, then X/Y/Z", false, false)) {
+        }
+        if (ImGui::MenuItem("Scale", "S, then X/Y/Z", false, false)) {
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Add")) {
@@ -315,7 +319,8 @@ void Viewer::drawHierarchy() {
     ImGui::Spacing();
     ImGui::Separator();
     ImGui::TextDisabled("Drag nodes onto a group to reparent,\nonto a shape to place before it.\n"
-                        "Click in the view to select;\nG moves (X/Y/Z: axis), F frames.\n"
+                        "Click in the view to select;\nG moves, R rotates, S scales\n"
+                        "(X/Y/Z: axis), F frames.\n"
                         "Right mouse + WASD flies;\nAlt + drag orbits.");
     ImGui::End();
 }
@@ -494,7 +499,6 @@ void Viewer::drawInspector() {
     ImGui::Begin("Inspector", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(-90);
-    static bool worldCoordinates = false;
     if (ImGui::BeginTabBar("inspector tabs")) {
         if (ImGui::BeginTabItem("Object")) {
             Scene& scene = document.editScene();
@@ -506,6 +510,9 @@ void Viewer::drawInspector() {
                 const float size = bounds ? bounds->radius : 1.0f;
                 if (ImGui::InputText("name", &node->name)) document.markChanged("Rename");
                 ImGui::Checkbox("world coordinates", &worldCoordinates);
+                helpTooltip("Position in world coordinates; R / G with X, Y or Z use the world's "
+                            "axes. Off: the position in the parent group and the object's own "
+                            "axes.");
                 ImGui::Separator();
                 ImGui::TextDisabled("Transform");
                 if (editTransform(node->transform, worldCoordinates,
@@ -606,6 +613,9 @@ void Viewer::drawInspector() {
                 MeshInstance& mesh = scene.meshes[std::size_t(selection.index)];
                 if (ImGui::InputText("name", &mesh.name)) document.markChanged("Rename");
                 ImGui::TextDisabled("file: %s", mesh.file.c_str());
+                ImGui::Checkbox("world coordinates", &worldCoordinates);
+                helpTooltip("R / G with X, Y or Z: the world's axes when on, the mesh's own "
+                            "axes when off.");
                 ImGui::Separator();
                 const float size = std::max(
                     {mesh.transform.scale.x, mesh.transform.scale.y, mesh.transform.scale.z});
@@ -729,13 +739,26 @@ void Viewer::drawOverlay() {
                     adaptive.enabled ? "" : "  adaptive off");
         const char* names[] = {"colour", "normals", "depth", "object id"};
         ImGui::Text("view: %s   speed %.2f m/s", names[int(viewMode)], camera.speed);
-        if (grab.active)
+        if (gesture.active) {
+            const editor::TransformGesture& g = gesture.math;
+            const char* what = g.kind == editor::GestureKind::Move     ? "Move"
+                               : g.kind == editor::GestureKind::Rotate ? "Rotate"
+                                                                       : "Scale";
+            const char* free = g.kind == editor::GestureKind::Move     ? "in the view plane"
+                               : g.kind == editor::GestureKind::Rotate ? "about the view axis"
+                                                                       : "uniformly";
+            std::string axis = free;
+            if (g.axis >= 0) {
+                // Scaling always uses the object's own axes (a world axis would need shear).
+                const bool world =
+                    g.space == editor::AxisSpace::World && g.kind != editor::GestureKind::Scale;
+                axis = std::string(g.kind == editor::GestureKind::Rotate ? "about " : "along ") +
+                       char('X' + g.axis) + (world ? " (world)" : " (own axis)");
+            }
             ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1),
-                               "Move %s: mouse moves, X/Y/Z axis, click/Enter keeps, Esc cancels",
-                               grab.axis < 0    ? "(view plane)"
-                               : grab.axis == 0 ? "along X"
-                               : grab.axis == 1 ? "along Y"
-                                                : "along Z");
+                               "%s %s: mouse drives it, X/Y/Z axis, click/Enter keeps, Esc cancels",
+                               what, axis.c_str());
+        }
         const double t = now();
         for (const auto& [text, when] : notices)
             if (t - when < 4.0) ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", text.c_str());

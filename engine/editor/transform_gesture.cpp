@@ -1,0 +1,129 @@
+// Move, rotate and scale gesture math (see transform_gesture.hpp).
+#include "editor/transform_gesture.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rmsc::editor {
+namespace {
+
+// The rotation part of an affine matrix (its columns normalized; exact without shear).
+glm::quat rotationOf(const glm::mat4& m) {
+    glm::mat3 r(m);
+    for (int c = 0; c < 3; ++c) {
+        const float length = glm::length(r[c]);
+        if (length > 0.0f) r[c] /= length;
+    }
+    return glm::normalize(glm::quat_cast(r));
+}
+
+glm::vec3 startWorld(const TransformGesture& gesture) {
+    return glm::vec3(gesture.parentWorld * glm::vec4(gesture.start.position, 1.0f));
+}
+
+// The world point under screen point `screen` on the plane through `world` that faces the
+// camera (the plane of constant depth): normalized device coordinates back through the inverse
+// view-projection matrix.
+glm::vec3 screenToWorldAtDepthOf(const GestureView& view, glm::vec2 screen, glm::vec3 world) {
+    const glm::vec4 clip = view.viewProjection * glm::vec4(world, 1.0f);
+    const float depth = clip.z / clip.w;
+    const glm::vec2 ndc(screen.x / view.viewportSize.x * 2.0f - 1.0f,
+                        1.0f - screen.y / view.viewportSize.y * 2.0f);
+    const glm::vec4 back = glm::inverse(view.viewProjection) * glm::vec4(ndc, depth, 1.0f);
+    return glm::vec3(back) / back.w;
+}
+
+// The world movement for a move gesture with the mouse at `mouse`.
+glm::vec3 moveDelta(const TransformGesture& gesture, glm::vec2 mouse) {
+    const glm::vec3 origin = startWorld(gesture);
+    if (gesture.axis < 0)
+        return screenToWorldAtDepthOf(gesture.view, mouse, origin) -
+               screenToWorldAtDepthOf(gesture.view, gesture.startMouse, origin);
+    // Along an axis: the mouse movement projected on the axis as drawn on screen, one unit of
+    // the axis per its length in pixels.
+    const glm::vec3 axis = constraintAxis(gesture);
+    const glm::vec2 screenAxis =
+        worldToScreen(gesture.view, origin + axis) - worldToScreen(gesture.view, origin);
+    const float length2 = glm::dot(screenAxis, screenAxis);
+    if (length2 < 1e-6f) return glm::vec3(0.0f); // the axis points at the camera
+    return axis * (glm::dot(mouse - gesture.startMouse, screenAxis) / length2);
+}
+
+} // namespace
+
+glm::vec2 worldToScreen(const GestureView& view, glm::vec3 world) {
+    const glm::vec4 clip = view.viewProjection * glm::vec4(world, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / std::max(clip.w, 1e-4f);
+    return glm::vec2((ndc.x * 0.5f + 0.5f) * view.viewportSize.x,
+                     (0.5f - ndc.y * 0.5f) * view.viewportSize.y);
+}
+
+glm::vec2 gesturePivot(const TransformGesture& gesture) {
+    return worldToScreen(gesture.view, startWorld(gesture));
+}
+
+float screenAngle(glm::vec2 pivot, glm::vec2 from, glm::vec2 to) {
+    const glm::vec2 a = from - pivot, b = to - pivot;
+    // atan2(cross, dot) is the signed angle from a to b; with y pointing down the cross product
+    // is positive for a clockwise turn as seen, hence the minus sign.
+    const float cross = a.x * b.y - a.y * b.x;
+    return std::atan2(-cross, glm::dot(a, b));
+}
+
+float scaleFactor(glm::vec2 pivot, glm::vec2 from, glm::vec2 to) {
+    const float startDistance = glm::length(from - pivot);
+    const float distance = glm::length(to - pivot);
+    return std::max(0.001f,
+                    1.0f + (distance - startDistance) / std::max(startDistance, kMinScaleRadius));
+}
+
+glm::vec3 constraintAxis(const TransformGesture& gesture) {
+    glm::vec3 axis(0.0f);
+    axis[std::clamp(gesture.axis, 0, 2)] = 1.0f;
+    if (gesture.space == AxisSpace::Local)
+        axis = rotationOf(gesture.parentWorld) * gesture.start.rotation * axis;
+    return glm::normalize(axis);
+}
+
+glm::vec3 rotationAxis(const TransformGesture& gesture) {
+    // The view axis reversed points at the viewer: a counter-clockwise turn about it
+    // (right-hand rule) is counter-clockwise on screen.
+    const glm::vec3 towardViewer = -glm::normalize(gesture.view.forward);
+    if (gesture.axis < 0) return towardViewer;
+    const glm::vec3 axis = constraintAxis(gesture);
+    // An axis pointing away from the viewer turns the other way on screen.
+    return glm::dot(axis, towardViewer) < 0.0f ? -axis : axis;
+}
+
+Transform gestureTransform(const TransformGesture& gesture, glm::vec2 mouse) {
+    Transform result = gesture.start;
+    switch (gesture.kind) {
+    case GestureKind::Move: {
+        // The world movement seen from the parent's frame.
+        const glm::mat3 parent(gesture.parentWorld);
+        result.position = gesture.start.position + glm::inverse(parent) * moveDelta(gesture, mouse);
+        break;
+    }
+    case GestureKind::Rotate: {
+        const float angle = screenAngle(gesturePivot(gesture), gesture.startMouse, mouse);
+        const glm::quat worldTurn = glm::angleAxis(angle, rotationAxis(gesture));
+        // A world-space turn seen from the parent's frame, P^-1 * turn * P, applied after the
+        // object's own rotation.
+        const glm::quat parent = rotationOf(gesture.parentWorld);
+        result.rotation =
+            glm::normalize(glm::inverse(parent) * worldTurn * parent * gesture.start.rotation);
+        break;
+    }
+    case GestureKind::Scale: {
+        const float factor = scaleFactor(gesturePivot(gesture), gesture.startMouse, mouse);
+        if (gesture.axis < 0)
+            result.scale = gesture.start.scale * factor;
+        else
+            result.scale[gesture.axis] = gesture.start.scale[gesture.axis] * factor;
+        break;
+    }
+    }
+    return result;
+}
+
+} // namespace rmsc::editor

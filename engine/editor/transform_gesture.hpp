@@ -1,0 +1,68 @@
+// The math of the viewer's move (G), rotate (R) and scale (S) gestures, without a window: given
+// where the gesture started (the object's transform, the camera, the mouse) and where the mouse
+// is now, the transform the object gets. Blender-like: moving follows the mouse in the plane
+// through the object facing the camera (or along one axis as drawn on screen), rotating follows
+// the angle the mouse turns around the object's centre on screen, scaling follows the mouse's
+// distance from that centre. The viewer applies the result every frame and commits it as one
+// undo step when the gesture is confirmed.
+#pragma once
+
+#include "scene/scene.hpp"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace rmsc::editor {
+
+enum class GestureKind { Move, Rotate, Scale };
+
+// Which axes X / Y / Z name: the world's, or the object's own (its world rotation applied).
+enum class AxisSpace { World, Local };
+
+// The camera as a gesture sees it: screen positions are viewport pixels, y down.
+struct GestureView {
+    glm::mat4 viewProjection{1.0f};
+    glm::vec2 viewportSize{1.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f}; // the viewing direction, world space
+};
+
+struct TransformGesture {
+    GestureKind kind = GestureKind::Move;
+    int axis = -1; // -1: free move in the view plane / rotate about the view axis / uniform scale;
+                   // 0, 1, 2: along / about x, y, z
+    AxisSpace space = AxisSpace::World; // scaling always uses the object's own axes
+    Transform start;                    // the object's transform (in its parent) at the start
+    glm::mat4 parentWorld{1.0f};        // the parent's world matrix (identity for meshes)
+    GestureView view;
+    glm::vec2 startMouse{0.0f}; // viewport pixels, y down
+};
+
+// Below this distance from the pivot (pixels) the scale gesture measures movement against this
+// distance instead, so starting with the mouse on the object does not make it jump.
+constexpr float kMinScaleRadius = 40.0f;
+
+// A world point on screen (viewport pixels, y down).
+glm::vec2 worldToScreen(const GestureView& view, glm::vec3 world);
+// The object's centre on screen at the start: what rotation and scaling turn around.
+glm::vec2 gesturePivot(const TransformGesture& gesture);
+
+// The angle (radians) the mouse turned around `pivot` going from `from` to `to`, positive when
+// it turns counter-clockwise as seen on the screen (whose y axis points down); in (-pi, pi].
+float screenAngle(glm::vec2 pivot, glm::vec2 from, glm::vec2 to);
+
+// The scale factor for the mouse going from `from` to `to`: the ratio of their distances from
+// `pivot` (1 + change / kMinScaleRadius near the pivot), never below 0.001.
+float scaleFactor(glm::vec2 pivot, glm::vec2 from, glm::vec2 to);
+
+// The world direction of axis `gesture.axis` (0, 1, 2) in the gesture's space, unit length.
+glm::vec3 constraintAxis(const TransformGesture& gesture);
+
+// The world-space axis a rotation turns about, pointing so that a positive angle turns the
+// object the way the mouse turned on screen.
+glm::vec3 rotationAxis(const TransformGesture& gesture);
+
+// The object's transform with the mouse at `mouse` (viewport pixels): start moved, rotated
+// about its own origin, or scaled (uniformly, or along one of its own axes).
+Transform gestureTransform(const TransformGesture& gesture, glm::vec2 mouse);
+
+} // namespace rmsc::editor
