@@ -53,6 +53,8 @@ std::string pathId(const std::vector<int>& path) {
 }
 
 constexpr const char* kNodePayload = "RMSC_SDF_NODE";
+constexpr const char* kMeshPayload = "RMSC_MESH";   // an int: the mesh instance's index
+constexpr const char* kLightPayload = "RMSC_LIGHT"; // an int: the light's index
 
 // A drag step that follows the size of what is edited (1% of it), never below 0.001.
 float stepFor(float size) {
@@ -298,27 +300,57 @@ void Viewer::drawHierarchy() {
         });
     }
 
+    // Meshes and lights: drag one onto another of its list to put it in that place.
+    struct PendingReorder {
+        SelectionKind kind = SelectionKind::Mesh;
+        int from = -1, to = -1;
+    };
+    std::optional<PendingReorder> reorder;
+    const auto listItem = [&](const std::string& name, SelectionKind kind, int index,
+                              const char* payloadType) {
+        const Selection itemSelection =
+            kind == SelectionKind::Mesh ? Selection::mesh(index) : Selection::light(index);
+        const std::string label = name + "##" + payloadType + std::to_string(index);
+        if (ImGui::Selectable(label.c_str(), document.selection == itemSelection))
+            document.selection = itemSelection;
+        if (ImGui::BeginDragDropSource()) {
+            ImGui::SetDragDropPayload(payloadType, &index, sizeof(index));
+            ImGui::TextUnformatted(name.c_str());
+            ImGui::EndDragDropSource();
+        }
+        if (ImGui::BeginDragDropTarget()) {
+            if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(payloadType))
+                reorder = PendingReorder{kind, *static_cast<const int*>(payload->Data), index};
+            ImGui::EndDragDropTarget();
+        }
+    };
     ImGui::Spacing();
     ImGui::TextDisabled("Meshes");
-    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
-        const std::string label =
-            (scene.meshes[i].name.empty() ? scene.meshes[i].file : scene.meshes[i].name) +
-            "##mesh" + std::to_string(i);
-        if (ImGui::Selectable(label.c_str(), document.selection == Selection::mesh(int(i))))
-            document.selection = Selection::mesh(int(i));
-    }
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i)
+        listItem(scene.meshes[i].name.empty() ? scene.meshes[i].file : scene.meshes[i].name,
+                 SelectionKind::Mesh, int(i), kMeshPayload);
     ImGui::Spacing();
     ImGui::TextDisabled("Lights");
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        const std::string label = (scene.lights[i].name.empty() ? "light " + std::to_string(i + 1)
-                                                                : scene.lights[i].name) +
-                                  "##light" + std::to_string(i);
-        if (ImGui::Selectable(label.c_str(), document.selection == Selection::light(int(i))))
-            document.selection = Selection::light(int(i));
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        listItem(scene.lights[i].name.empty() ? "light " + std::to_string(i + 1)
+                                              : scene.lights[i].name,
+                 SelectionKind::Light, int(i), kLightPayload);
+    if (reorder && reorder->from != reorder->to) {
+        const PendingReorder r = *reorder;
+        document.apply(r.kind == SelectionKind::Mesh ? "Reorder meshes" : "Reorder lights",
+                       [r](Scene& s, Selection& selection) {
+                           if (r.kind == SelectionKind::Mesh) {
+                               if (const int to = editor::moveMesh(s, r.from, r.to); to >= 0)
+                                   selection = Selection::mesh(to);
+                           } else if (const int to = editor::moveLight(s, r.from, r.to); to >= 0) {
+                               selection = Selection::light(to);
+                           }
+                       });
     }
     ImGui::Spacing();
     ImGui::Separator();
-    ImGui::TextDisabled("Drag nodes onto a group to reparent,\nonto a shape to place before it.\n"
+    ImGui::TextDisabled("Drag nodes onto a group to reparent,\nonto a shape to place before it;\n"
+                        "drag a mesh or light onto another\nto put it in its place.\n"
                         "Click in the view to select;\nG moves, R rotates, S scales\n"
                         "(X/Y/Z: axis), F frames.\n"
                         "Right mouse + WASD flies;\nAlt + drag orbits.");

@@ -26,7 +26,10 @@ Document::Document(Scene scene, std::filesystem::path file)
 }
 
 void Document::markChanged(const std::string& label) {
-    if (!pending_) pendingLabel_ = label;
+    if (!pending_) {
+        pendingLabel_ = label;
+        committedSelection_ = selection; // what undo selects again: the selection of the edit
+    }
     pending_ = true;
     ++revision_;
 }
@@ -54,8 +57,10 @@ void Document::revertPending() {
 void Document::apply(const std::string& label,
                      const std::function<void(Scene&, Selection&)>& edit) {
     commit();
+    const Selection before = selection;
     edit(scene_, selection);
     markChanged(label);
+    committedSelection_ = before; // undo selects what was selected before the edit changed it
     commit();
 }
 

@@ -72,8 +72,8 @@ class Document {
         Selection selectionBefore, selectionAfter;
     };
     Scene scene_;
-    Scene committed_; // the scene after the last step (what undo returns from)
-    Selection committedSelection_;
+    Scene committed_;              // the scene after the last step (what undo returns from)
+    Selection committedSelection_; // the selection when the pending change began (undo restores)
     std::filesystem::path file_;
     std::vector<Step> history_;
     std::size_t position_ = 0;      // steps [0, position_) are applied

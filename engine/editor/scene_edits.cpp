@@ -281,6 +281,30 @@ int duplicateLight(Scene& scene, int index) {
     return index + 1;
 }
 
+namespace {
+
+// Moves element `from` of `items` to position `to`, the rest keeping their order.
+template <typename T> int moveWithin(std::vector<T>& items, int from, int to) {
+    const int count = int(items.size());
+    if (from < 0 || from >= count || to < 0 || to >= count) return -1;
+    const auto first = items.begin();
+    if (from < to)
+        std::rotate(first + from, first + from + 1, first + to + 1);
+    else
+        std::rotate(first + to, first + from, first + from + 1);
+    return to;
+}
+
+} // namespace
+
+int moveMesh(Scene& scene, int from, int to) {
+    return moveWithin(scene.meshes, from, to);
+}
+
+int moveLight(Scene& scene, int from, int to) {
+    return moveWithin(scene.lights, from, to);
+}
+
 Selection deleteSelected(Scene& scene, const Selection& selection) {
     switch (selection.kind) {
     case SelectionKind::Sdf:

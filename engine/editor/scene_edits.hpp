@@ -1,6 +1,6 @@
 // Structural edits of a Scene used by the editor: finding SDF nodes by path, adding, deleting,
-// duplicating and moving nodes, meshes and lights, mapping object ids (the id AOV) back to what
-// they show, and rough bounds for framing. GL-free; every function keeps the scene valid to
+// duplicating, moving and reordering nodes, meshes and lights, mapping object ids (the id AOV) back
+// to what they show, and rough bounds for framing. GL-free; every function keeps the scene valid to
 // compile (no empty groups are left behind).
 #pragma once
 
@@ -54,6 +54,11 @@ bool deleteMesh(Scene& scene, int index);
 bool deleteLight(Scene& scene, int index);
 int duplicateMesh(Scene& scene, int index);
 int duplicateLight(Scene& scene, int index);
+// Moves mesh instance / light `from` to position `to` in its list (the others keep their order;
+// moving down puts it after the one that was at `to`). Returns the new index, or -1 (nothing
+// changed) when either index is out of range.
+int moveMesh(Scene& scene, int from, int to);
+int moveLight(Scene& scene, int from, int to);
 
 // Deletes / duplicates whatever is selected; returns the selection afterwards.
 Selection deleteSelected(Scene& scene, const Selection& selection);

@@ -1,7 +1,8 @@
 // The editor model without a window: scene edits (insert, delete, duplicate, reparent and
-// reorder), object-id mapping for picking and outlines, selection, undo/redo (including a
-// multi-frame drag as one step), the dirty flag, save/load round trips, atomic saves with a
-// backup, a failed save that keeps the old file and the edits, and the file watcher.
+// reorder SDF nodes; reorder meshes and lights), object-id mapping for picking and outlines,
+// selection, undo/redo (including a multi-frame drag as one step), the dirty flag, save/load
+// round trips, atomic saves with a backup, a failed save that keeps the old file and the edits,
+// and the file watcher.
 #include "editor/adaptive_scale.hpp"
 #include "editor/document.hpp"
 #include "editor/file_watcher.hpp"
@@ -143,6 +144,76 @@ TEST(EditorSceneEdits, MoveReordersAndReparents) {
     EXPECT_FALSE(moveSdfNode(scene, {1}, {1, 0}, -1));
     EXPECT_FALSE(moveSdfNode(scene, {}, {1}, -1));
     EXPECT_FALSE(moveSdfNode(scene, {0}, {1, 0}, -1));
+}
+
+namespace {
+
+std::string meshNames(const Scene& scene) {
+    std::string names;
+    for (const MeshInstance& mesh : scene.meshes)
+        names += mesh.name;
+    return names;
+}
+
+std::string lightNames(const Scene& scene) {
+    std::string names;
+    for (const Light& light : scene.lights)
+        names += light.name;
+    return names;
+}
+
+} // namespace
+
+TEST(EditorSceneEdits, ReordersMeshesAndLights) {
+    Scene scene = emptyScene();
+    scene.lights.clear();
+    for (const char* name : {"a", "b", "c", "d"}) {
+        MeshInstance mesh;
+        mesh.name = name;
+        mesh.transform.position.x = float(scene.meshes.size()); // travels with the instance
+        scene.meshes.push_back(mesh);
+        Light light;
+        light.name = name;
+        scene.lights.push_back(light);
+    }
+    EXPECT_EQ(moveMesh(scene, 0, 2), 2); // down: after the one that was at 2
+    EXPECT_EQ(meshNames(scene), "bcad");
+    EXPECT_FLOAT_EQ(scene.meshes[2].transform.position.x, 0.0f);
+    EXPECT_EQ(moveMesh(scene, 3, 0), 0); // up: before the one that was at 0
+    EXPECT_EQ(meshNames(scene), "dbca");
+    EXPECT_EQ(moveMesh(scene, 1, 1), 1);
+    EXPECT_EQ(meshNames(scene), "dbca");
+    EXPECT_EQ(moveMesh(scene, 4, 0), -1); // out of range: nothing changes
+    EXPECT_EQ(moveMesh(scene, 0, -1), -1);
+    EXPECT_EQ(meshNames(scene), "dbca");
+    EXPECT_EQ(moveLight(scene, 1, 3), 3);
+    EXPECT_EQ(lightNames(scene), "acdb");
+    EXPECT_EQ(moveLight(scene, 2, 1), 1);
+    EXPECT_EQ(lightNames(scene), "adcb");
+    EXPECT_EQ(moveLight(scene, 0, 9), -1);
+    EXPECT_EQ(meshNames(scene), "dbca"); // lights moved, meshes did not
+}
+
+TEST(EditorDocument, ReorderingIsUndoableAndMovesTheSelection) {
+    Scene scene = emptyScene();
+    for (const char* name : {"b", "c"}) {
+        Light light;
+        light.name = name;
+        scene.lights.push_back(light);
+    }
+    scene.lights[0].name = "a";
+    Document doc(scene);
+    doc.selection = Selection::light(0);
+    doc.apply("Reorder lights", [](Scene& s, Selection& selection) {
+        selection = Selection::light(moveLight(s, selection.index, 2));
+    });
+    EXPECT_EQ(lightNames(doc.scene()), "bca");
+    EXPECT_EQ(doc.selection, Selection::light(2));
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(lightNames(doc.scene()), "abc");
+    EXPECT_EQ(doc.selection, Selection::light(0));
+    ASSERT_TRUE(doc.redo());
+    EXPECT_EQ(lightNames(doc.scene()), "bca");
 }
 
 TEST(EditorSceneEdits, ObjectIdsMapToNodesInPreOrder) {
