@@ -15,6 +15,7 @@
 #include "gl/window.hpp"
 #include "render/renderer.hpp"
 
+#include <array>
 #include <chrono>
 #include <deque>
 #include <filesystem>
@@ -118,6 +119,16 @@ class Viewer {
     std::uint64_t recoveryRevision = 0; // document revision last written to the recovery file
     double lastRecoveryWrite = -1e9;
 
+    // Inspector: the file fields of the selected material's textures, one per slot
+    // (editor/material_texture_edits.hpp); the file changes only when "apply" loads it.
+    struct TextureFileField {
+        int material = -1;     // the material the text belongs to
+        std::string shownFile; // the slot's file when the text was last filled from it
+        std::string text;      // the file name being typed
+        std::string error;     // why the last apply failed ("" = it did not)
+    };
+    std::array<TextureFileField, 3> textureFileFields;
+
     // Layout (window pixels)
     Rect viewport;
     float leftPanelWidth = 270.0f, rightPanelWidth = 340.0f;
@@ -150,6 +161,7 @@ class Viewer {
     void drawMenuBar();
     void drawHierarchy();
     void drawInspector();
+    void drawMaterialTextures(int material); // the texture slots of scene.materials[material]
     void drawOverlay();
     void drawModals();
 
