@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """End-to-end test of `rmsc view` under Xvfb: a replay script flies the camera, selects the
-ball by clicking, moves it along X (G, X), undoes and redoes, saves. Checks the saved scene
+ball by clicking, moves it along X (G, X), undoes and redoes, rotates it a quarter turn about Z
+(R, Z), scales it to twice its size (S), saves. Checks the saved scene
 (parsed), the backup, and that screenshots differ where the edit and the flight say they should.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
-import json, os, shutil, struct, subprocess, sys, tempfile, zlib
+import json, math, os, shutil, struct, subprocess, sys, tempfile, zlib
 
 SKIP = 77
 
@@ -96,6 +97,13 @@ def main():
         # 50 pixels at ~3.7 m with a 40 degree fov over 341 pixels: about 0.4 m along X.
         check("ball moved along +X by the dragged amount", 0.2 < position[0] < 0.6, position)
         check("Y and Z stayed (axis constraint)", abs(position[1]) < 1e-6 and abs(position[2]) < 1e-6, position)
+        q = ball.get("quaternion", [0, 0, 0, 1])  # x, y, z, w
+        turn = math.degrees(2 * math.atan2(q[2], q[3]))
+        check("ball turned about Z only (R, Z)", abs(q[0]) < 1e-3 and abs(q[1]) < 1e-3, q)
+        check("by about a quarter turn counter-clockwise", 70 < turn < 110, turn)
+        scale = ball.get("scale", 1)
+        check("ball scaled uniformly (S)", isinstance(scale, (int, float)), scale)
+        check("to about twice its size", isinstance(scale, (int, float)) and 1.7 < scale < 2.3, scale)
         check("ball keeps its shape", ball.get("shape") == "sphere" and abs(ball.get("radius", 0) - 0.5) < 1e-6, ball)
         check("base untouched", base.get("position") == [0, -0.9, 0] or
               all(abs(a - b) < 1e-6 for a, b in zip(base.get("position", []), [0, -0.9, 0])), base)
