@@ -223,15 +223,7 @@ class Planner {
                 diagnostics_.error(file_, node.pointer,
                                    "the node's transform (with its groups') cannot be "
                                    "inverted; is a scale 0?");
-            double lipschitz = 1.0;
-            double displacement = 1.0;
-            for (const SdfModifier& m : node.modifiers) {
-                lipschitz *= pointModifierLipschitz(m);
-                if (m.type == SdfModifierType::Displace)
-                    displacement += std::abs(double(m.amount)) * std::abs(double(m.frequency)) *
-                                    kNoiseGradientBound;
-            }
-            planned.nodeScale = spaceScale * scale / (lipschitz * displacement);
+            planned.nodeScale = spaceScale * scale / sdfFieldShrink(node.modifiers);
             childWorld = glm::dmat4(1.0);
             childScale = planned.nodeScale;
         } else {
@@ -566,6 +558,18 @@ void emit(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out) {
 }
 
 } // namespace
+
+double sdfFieldShrink(const std::vector<SdfModifier>& modifiers) {
+    double lipschitz = 1.0;
+    double displacement = 1.0;
+    for (const SdfModifier& m : modifiers) {
+        lipschitz *= pointModifierLipschitz(m);
+        if (m.type == SdfModifierType::Displace)
+            displacement +=
+                std::abs(double(m.amount)) * std::abs(double(m.frequency)) * kNoiseGradientBound;
+    }
+    return lipschitz * displacement;
+}
 
 std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,
                                      const std::string& file, Diagnostics& diagnostics) {

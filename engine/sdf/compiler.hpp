@@ -20,4 +20,10 @@ namespace rmsc {
 std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,
                                      const std::string& file, Diagnostics& diagnostics);
 
+// The factor a node's modifiers divide its distance field by so that sphere tracing stays
+// safe (the step corrections): the product of the Lipschitz constants of its twists and bends
+// times 1 + the gradient bound of its displacements. 1 for a node with none of them. The
+// compiler converts the node's lengths (distance modifiers, its children's fields) with it.
+double sdfFieldShrink(const std::vector<SdfModifier>& modifiers);
+
 } // namespace rmsc
