@@ -26,18 +26,23 @@ const OptionSpec kOptions[] = {
      "baked (default), buffer, interpreter, or all (each in turn, with ratios to baked)"},
     {"--sdf-map", nullptr, "FILE",
      "also time a hand-written SDF map (GLSL defining sdfSceneEmpty, sdfDistance, sdfSurface)"},
+    {"--shells", nullptr, "MODE",
+     "scene: shells through their proxies; fullscreen: all in the fullscreen pass; both "
+     "(default when the scene has shells): each in turn"},
     {"--json", nullptr, nullptr, "print one JSON object instead of text"},
 };
 
 const CommandSpec kSpec = {
     "bench",
     "rmsc bench [SCENE] [--size WxH] [--frames N] [--warmup N] [--sdf-strategy NAME|all] "
-    "[--json]",
+    "[--shells scene|fullscreen|both] [--json]",
     "Renders SCENE (default: the built-in demo) repeatedly and reports, over the timed frames,\n"
     "the median, minimum and maximum of the wall time per frame (glFinish after each) and of\n"
     "each pass's GPU time (timer queries), the time to compile the scene's shaders and the\n"
-    "peak resident memory. With --sdf-strategy all, every strategy runs in turn in the same\n"
-    "process and the ratios of their median frame times to the baked one are reported.",
+    "peak resident memory, the SDF march steps per pixel and how many fragments marched in the\n"
+    "fullscreen and the shell pass. With --sdf-strategy all, every strategy runs in turn in the\n"
+    "same process and the ratios of their median frame times to the first are reported; a scene\n"
+    "with shells also runs with every node in the fullscreen pass (--shells both).",
     kOptions, 1};
 
 // Not a strategy: the run of the --sdf-map file.
@@ -48,6 +53,7 @@ struct StrategyRun {
     std::string name;
     double compileMs = 0.0;
     double stepsPerPixel = 0.0; // mean SDF march steps per pixel of the last frame
+    MarchStatistics marched;    // fragments that marched in the last frame
     std::vector<double> wall;
     std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
 };
@@ -94,6 +100,7 @@ int runBench(std::span<const std::string> args) {
 
     const bool all = parsed->get("--sdf-strategy", "") == "all";
     if (all) parsed->values.erase("--sdf-strategy");
+    const std::string shellsOption = parsed->get("--shells", "both");
     FrameOptions frame;
     if (!readFrameOptions("bench", *parsed, frame)) return kExitUsage;
 
@@ -103,6 +110,19 @@ int runBench(std::span<const std::string> args) {
     Renderer& renderer = *session.renderer;
     FrameTargets targets = createFrameTargets(frame.width, frame.height);
     const Scene& scene = session.prepared->scene;
+    // The shell modes to run: the scene's, and all-fullscreen too when it has shells.
+    std::vector<std::pair<std::string, const PreparedScene*>> modes = {{"", &*session.prepared}};
+    std::optional<PreparedScene> fullscreen;
+    if (shellsOption == "both" && !session.prepared->shells.empty()) {
+        Diagnostics diagnostics;
+        fullscreen = openScene(scenePath, diagnostics, ShellMode::Fullscreen);
+        if (!fullscreen) {
+            std::fputs(diagnostics.format().c_str(), stderr);
+            return kExitBadInput;
+        }
+        modes[0].first = ", shells";
+        modes.emplace_back(", fullscreen", &*fullscreen);
+    }
 
     std::vector<StrategyRun> runs;
     const std::vector<SdfStrategy> strategies =
@@ -123,46 +143,50 @@ int runBench(std::span<const std::string> args) {
         handWrittenMap = "#line 1\n" + text.str();
         timed.push_back(kHandWritten);
     }
-    for (SdfStrategy strategy : timed) {
-        StrategyRun run;
-        run.name = strategy == kHandWritten
-                       ? "hand-written"
-                       : sdfStrategyName(effectiveSdfStrategy(session.prepared->sdf, strategy));
-        if (std::any_of(runs.begin(), runs.end(),
-                        [&](const StrategyRun& r) { return r.name == run.name; }))
-            continue; // a scene too large for generated code runs the interpreter only once
-        GpuScene gpuScene = uploadScene(*session.prepared, strategy);
-        if (strategy == kHandWritten) gpuScene.sdfMap = handWrittenMap;
-        const auto compileStart = std::chrono::steady_clock::now();
-        if (!renderer.prepare(gpuScene, error)) {
-            std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
-            return kExitSystem;
+    for (const auto& [modeName, prepared] : modes)
+        for (SdfStrategy strategy : timed) {
+            StrategyRun run;
+            run.name = (strategy == kHandWritten ? std::string("hand-written")
+                                                 : std::string(sdfStrategyName(effectiveSdfStrategy(
+                                                       prepared->sdf, strategy)))) +
+                       modeName;
+            if (std::any_of(runs.begin(), runs.end(),
+                            [&](const StrategyRun& r) { return r.name == run.name; }))
+                continue; // a scene too large for generated code runs the interpreter only once
+            GpuScene gpuScene = uploadScene(*prepared, strategy);
+            if (strategy == kHandWritten) gpuScene.sdfMap = handWrittenMap;
+            const auto compileStart = std::chrono::steady_clock::now();
+            if (!renderer.prepare(gpuScene, error)) {
+                std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
+                return kExitSystem;
+            }
+            run.compileMs = strategy == frame.strategy && runs.empty()
+                                ? session.shaderBuildMs
+                                : millisecondsSince(compileStart);
+            for (int i = 0; i < warmup + frames; ++i) {
+                const auto start = std::chrono::steady_clock::now();
+                renderer.render(gpuScene, scene.camera, scene.render, targets);
+                glFinish();
+                const double ms = millisecondsSince(start);
+                if (i < warmup) continue;
+                run.wall.push_back(ms);
+                const PassTimes times = renderer.lastPassTimes();
+                for (std::size_t p = 0; p < times.size(); ++p)
+                    run.passes[p].push_back(times[p]);
+            }
+            run.marched = renderer.lastMarchStatistics();
+            const Pixels<float> steps = readMarchSteps(targets);
+            double total = 0.0;
+            for (float n : steps.data)
+                total += n;
+            run.stepsPerPixel = total / double(std::max<std::size_t>(steps.data.size(), 1));
+            runs.push_back(std::move(run));
         }
-        run.compileMs =
-            strategy == frame.strategy ? session.shaderBuildMs : millisecondsSince(compileStart);
-        for (int i = 0; i < warmup + frames; ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            renderer.render(gpuScene, scene.camera, scene.render, targets);
-            glFinish();
-            const double ms = millisecondsSince(start);
-            if (i < warmup) continue;
-            run.wall.push_back(ms);
-            const PassTimes times = renderer.lastPassTimes();
-            for (std::size_t p = 0; p < times.size(); ++p)
-                run.passes[p].push_back(times[p]);
-        }
-        const Pixels<float> steps = readMarchSteps(targets);
-        double total = 0.0;
-        for (float n : steps.data)
-            total += n;
-        run.stepsPerPixel = total / double(std::max<std::size_t>(steps.data.size(), 1));
-        runs.push_back(std::move(run));
-    }
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     const double peakMiB = double(usage.ru_maxrss) / 1024.0;
 
-    const char* passNames[] = {"raster", "march", "post", "shadow"};
+    const char* passNames[] = {"raster", "march", "post", "shadow", "shell"};
     const std::string name = scenePath.empty() ? "(built-in demo)" : scenePath;
     const HeadlessContext& context = *session.context;
     const double bakedMedian = stats(runs.front().wall).median;
@@ -177,10 +201,12 @@ int runBench(std::span<const std::string> args) {
             std::printf("%s{\"strategy\": \"%s\", \"shader_build_ms\": %.3f, "
                         "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
                         "\"ratio_to_first\": %.3f, \"march_steps_per_pixel\": %.2f, "
+                        "\"marched_fragments\": {\"fullscreen\": %llu, \"shells\": %llu}, "
                         "\"pass_gpu_ms\": {",
                         r ? ", " : "", run.name.c_str(), run.compileMs, wallStats.median,
                         wallStats.min, wallStats.max, wallStats.median / bakedMedian,
-                        run.stepsPerPixel);
+                        run.stepsPerPixel, (unsigned long long)run.marched.fullscreen,
+                        (unsigned long long)run.marched.shells);
             for (std::size_t p = 0; p < run.passes.size(); ++p) {
                 const Stats s = stats(run.passes[p]);
                 std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}",
@@ -197,8 +223,11 @@ int runBench(std::span<const std::string> args) {
     std::printf("memory    %.1f MiB peak resident\n", peakMiB);
     for (const StrategyRun& run : runs) {
         const Stats wallStats = stats(run.wall);
-        std::printf("\nstrategy  %s: shaders %.1f ms to build, %.1f march steps per pixel",
-                    run.name.c_str(), run.compileMs, run.stepsPerPixel);
+        std::printf("\nstrategy  %s: shaders %.1f ms to build, %.1f march steps per pixel, "
+                    "fragments marched: %llu fullscreen + %llu in shells",
+                    run.name.c_str(), run.compileMs, run.stepsPerPixel,
+                    (unsigned long long)run.marched.fullscreen,
+                    (unsigned long long)run.marched.shells);
         if (runs.size() > 1)
             std::printf(", %.2fx the %s frame time", wallStats.median / bakedMedian,
                         runs.front().name.c_str());

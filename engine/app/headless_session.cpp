@@ -28,13 +28,21 @@ bool readFrameOptions(const char* command, const ParsedArgs& args, FrameOptions&
                      command, strategy.c_str());
         return false;
     }
+    const std::string shells = args.get("--shells", "scene");
+    if (shells == "scene" || shells == "fullscreen") {
+        options.shells = shells == "scene" ? ShellMode::AsScene : ShellMode::Fullscreen;
+    } else if (shells != "both" || std::string(command) != "bench") {
+        std::fprintf(stderr, "rmsc %s: --shells: expected scene or fullscreen%s, got '%s'\n",
+                     command, std::string(command) == "bench" ? " or both" : "", shells.c_str());
+        return false;
+    }
     return true;
 }
 
 int openHeadlessSession(const char* command, const std::string& scenePath,
                         const FrameOptions& options, HeadlessSession& session) {
     Diagnostics diagnostics;
-    session.prepared = openScene(scenePath, diagnostics);
+    session.prepared = openScene(scenePath, diagnostics, options.shells);
     std::fputs(diagnostics.format().c_str(), stderr);
     if (!session.prepared) return kExitBadInput;
 

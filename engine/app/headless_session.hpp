@@ -19,9 +19,11 @@ struct FrameOptions {
     int height = 360;
     GlBackend backend = GlBackend::Auto;
     SdfStrategy strategy = SdfStrategy::Baked;
+    ShellMode shells = ShellMode::AsScene;
 };
 
-// Reads --size, --backend and --sdf-strategy; prints the problem and returns false on a bad value.
+// Reads --size, --backend, --sdf-strategy and --shells; prints the problem and returns false on a
+// bad value.
 bool readFrameOptions(const char* command, const ParsedArgs& args, FrameOptions& options);
 
 struct HeadlessSession {

@@ -16,6 +16,9 @@ const OptionSpec kOptions[] = {
     {"--backend", nullptr, "NAME", "auto | egl | osmesa (default auto: EGL, then OSMesa)"},
     {"--sdf-strategy", nullptr, "NAME",
      "how the SDF scene reaches the shader: baked (default), buffer or interpreter"},
+    {"--shells", nullptr, "MODE",
+     "scene (default): shells through their proxy meshes; fullscreen: every SDF node in the "
+     "fullscreen pass"},
     {"--aov", nullptr, "NAME",
      "color | depth | normal | id | steps (default color); depth is linear view depth"},
 };

@@ -18,7 +18,8 @@ enum SsboBinding : unsigned {
     kMaterialBinding = 1,
     kLightBinding = 2,
     kShadowViewBinding = 3,
-    kSdfDataBinding = 4, // SdfProgram::data (shaders/common/sdf_scene.glsl)
+    kSdfDataBinding = 4,         // SdfProgram::data (shaders/common/sdf_scene.glsl)
+    kMarchStatisticsBinding = 5, // fragments that marched (shaders/common/march_statistics.glsl)
 };
 
 // Texture units of the lighting inputs every shading pass samples (shaders/common/sky.glsl,

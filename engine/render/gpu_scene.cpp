@@ -54,16 +54,51 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     }
     gpu.materials = prepared.materials;
 
+    // The program buffer holds the scene's instructions, then each shell's; the data buffer the
+    // same, with the shells' profile instructions pointing at their data's new place.
+    std::vector<GpuSdfInstruction> instructions = prepared.sdf.instructions;
+    std::vector<glm::vec4> sdfData = prepared.sdf.data;
+    for (const PreparedShell& shell : prepared.shells) {
+        SdfProgram program = shell.compiled.program;
+        const float dataBase = float(sdfData.size());
+        for (GpuSdfInstruction& in : program.instructions)
+            if (SdfOpcode(in.opcode) == SdfOpcode::Profile) in.params[2].x += dataBase;
+        sdfData.insert(sdfData.end(), program.data.begin(), program.data.end());
+        GpuShell gpuShell;
+        gpuShell.map =
+            generateSdfMap(program, strategy, {"shell", std::size_t(instructions.size())});
+        instructions.insert(instructions.end(), program.instructions.begin(),
+                            program.instructions.end());
+        gpuShell.objectToWorld = shell.compiled.objectToWorld;
+        gpuShell.worldToObject = shell.compiled.worldToObject;
+        gpuShell.distanceScale = shell.compiled.distanceScale;
+        gpuShell.clipMin = shell.clipMin;
+        gpuShell.clipMax = shell.clipMax;
+        gpuShell.clipsContent = shell.clipsContent;
+        const ShellProxyMesh& proxy = shell.proxy;
+        gpuShell.vertices = gl::createBufferWithData(
+            GLsizeiptr(proxy.positions.size() * sizeof(glm::vec3)), proxy.positions.data());
+        gpuShell.indices = gl::createBufferWithData(
+            GLsizeiptr(proxy.indices.size() * sizeof(std::uint32_t)), proxy.indices.data());
+        gpuShell.indexCount = GLsizei(proxy.indices.size());
+        gpuShell.vertexArray = gl::createVertexArray();
+        const GLuint vao = gpuShell.vertexArray.id();
+        glVertexArrayVertexBuffer(vao, 0, gpuShell.vertices.id(), 0, sizeof(glm::vec3));
+        glVertexArrayElementBuffer(vao, gpuShell.indices.id());
+        glEnableVertexArrayAttrib(vao, 0);
+        glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao, 0, 0);
+        gpu.shells.push_back(std::move(gpuShell));
+    }
     GpuSdfHeader sdfHeader;
     sdfHeader.instructionCount = std::uint32_t(prepared.sdf.instructions.size());
     sdfHeader.stackDepth = std::uint32_t(prepared.sdf.stackDepth);
     sdfHeader.pointStackDepth = std::uint32_t(prepared.sdf.pointStackDepth);
-    sdfHeader.dataCount = std::uint32_t(prepared.sdf.data.size());
-    std::vector<glm::vec4> sdfData = prepared.sdf.data;
+    sdfHeader.dataCount = std::uint32_t(sdfData.size());
     if (sdfData.empty()) sdfData.emplace_back(0.0f); // a buffer is never empty
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
-    gpu.sdfProgram = createHeaderedBuffer(sdfHeader, prepared.sdf.instructions);
+    gpu.sdfProgram = createHeaderedBuffer(sdfHeader, instructions);
     gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
     gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());
 
@@ -90,6 +125,9 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
             casters.add(glm::vec3(instance.model * glm::vec4(corner, 1.0f)));
         }
     }
+    for (const PreparedShell& shell : prepared.shells)
+        for (const glm::vec3& corner : shell.proxy.positions)
+            casters.add(glm::vec3(shell.compiled.objectToWorld * glm::vec4(corner, 1.0f)));
     const ShadowViewPlan plan = planShadowViews(sceneLights, casters, shadows);
     std::vector<GpuLight> lights = packLights(sceneLights, shadows.enabled, shadows.softness);
     for (std::size_t i = 0; i < lights.size(); ++i)

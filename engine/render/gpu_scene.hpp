@@ -20,6 +20,24 @@ struct GpuMeshInstance {
     int materialOverride = -1; // index into PreparedScene::materials, or -1
 };
 
+// A shell (scene/prepared_scene.hpp) on the GPU: its proxy mesh (object space), its frame and
+// clip box, and the GLSL of its map ("generated/shell_map.glsl", functions shellSceneEmpty,
+// shellDistance and shellSurface reading the program buffer from where the shell's
+// instructions start).
+struct GpuShell {
+    gl::Buffer vertices; // vec3 positions
+    gl::Buffer indices;
+    gl::VertexArray vertexArray;
+    GLsizei indexCount = 0;
+    glm::mat4 objectToWorld{1.0f};
+    glm::mat4 worldToObject{1.0f};
+    float distanceScale = 1.0f;
+    glm::vec3 clipMin{0.0f}; // object space
+    glm::vec3 clipMax{0.0f};
+    bool clipsContent = false; // PreparedShell::clipsContent
+    std::string map;
+};
+
 struct GpuScene {
     std::vector<GpuMesh> meshes;
     std::vector<std::vector<MeshMaterial>> meshMaterials; // per mesh, from the glTF
@@ -33,7 +51,8 @@ struct GpuScene {
     // kSdfMaterialTextureFirstUnit + slot by bindBuffers.
     std::vector<gl::Texture> materialTextures;
     int sdfInstructionCount = 0;
-    std::string sdfMap; // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
+    std::string sdfMap;           // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
+    std::vector<GpuShell> shells; // their instructions follow the scene's in sdfProgram
 
     // Lighting: the shadow-map views planned from the lights and the mesh bounds, the
     // environment and its sky image (RGB16F with mipmaps; levels 0 without an image sky).

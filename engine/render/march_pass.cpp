@@ -30,7 +30,8 @@ void MarchPass::draw(const GBuffer& raster, const GBuffer& target) const {
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
-    for (GLuint unit = 0; unit < 5; ++unit) glBindTextureUnit(unit, 0);
+    for (GLuint unit = 0; unit < 5; ++unit)
+        glBindTextureUnit(unit, 0);
     glDepthFunc(GL_LESS);
 }
 

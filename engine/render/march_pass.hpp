@@ -12,12 +12,12 @@
 namespace rmsc {
 
 class MarchPass {
-public:
+  public:
     static std::optional<MarchPass> create(const ShaderFiles& files, std::string& error);
     // Reads `raster`, writes every pixel of `target`. Expects the frame UBO and SSBOs bound.
     void draw(const GBuffer& raster, const GBuffer& target) const;
 
-private:
+  private:
     gl::Program program_;
     gl::VertexArray emptyVertexArray_;
 };

@@ -20,11 +20,11 @@ struct DisplayTarget {
 DisplayTarget createDisplayTarget(int width, int height);
 
 class PostPass {
-public:
+  public:
     static std::optional<PostPass> create(const ShaderFiles& files, std::string& error);
     void draw(const GBuffer& source, const DisplayTarget& target) const;
 
-private:
+  private:
     gl::Program program_;
     gl::VertexArray emptyVertexArray_;
 };

@@ -14,6 +14,7 @@ FrameTargets createFrameTargets(int width, int height) {
 Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow)
     : files_(std::move(files)), post_(std::move(post)), shadow_(std::move(shadow)) {
     frameBuffer_ = gl::createBufferWithData(sizeof(GpuFrame), nullptr);
+    statistics_ = gl::createBufferWithData(2 * sizeof(std::uint32_t), nullptr);
     for (gl::Query& timer : timers_)
         timer = gl::createQuery(GL_TIME_ELAPSED);
 }
@@ -26,23 +27,48 @@ std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) 
     return Renderer(std::move(files), std::move(*post), std::move(*shadow));
 }
 
+namespace {
+
+// The key of a shell's programs: they include the scene's map and the shell's.
+std::string shellKey(const GpuScene& scene, const GpuShell& shell) {
+    return scene.sdfMap + '\0' + shell.map;
+}
+
+} // namespace
+
 bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     lastCompileMs_ = 0.0;
-    if (sdfPasses_.contains(scene.sdfMap)) return true;
     const auto start = std::chrono::steady_clock::now();
+    bool compiled = false;
+    // A small cache: an editing session alternates between a few structures at most.
+    constexpr std::size_t kMaxCached = 8;
     ShaderFiles files = files_;
     files.files["generated/sdf_map.glsl"] = scene.sdfMap;
-    std::optional<RasterPass> raster = RasterPass::create(files, error);
-    if (!raster) return false;
-    std::optional<MarchPass> march = MarchPass::create(files, error);
-    if (!march) return false;
-    glFinish(); // drivers may finish compiling lazily
-    lastCompileMs_ =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    // A small cache: an editing session alternates between a few structures at most.
-    constexpr std::size_t kMaxCachedMaps = 8;
-    if (sdfPasses_.size() >= kMaxCachedMaps) sdfPasses_.clear();
-    sdfPasses_.emplace(scene.sdfMap, SdfPasses{std::move(*raster), std::move(*march)});
+    if (!sdfPasses_.contains(scene.sdfMap)) {
+        std::optional<RasterPass> raster = RasterPass::create(files, error);
+        if (!raster) return false;
+        std::optional<MarchPass> march = MarchPass::create(files, error);
+        if (!march) return false;
+        if (sdfPasses_.size() >= kMaxCached) sdfPasses_.clear();
+        sdfPasses_.emplace(scene.sdfMap, SdfPasses{std::move(*raster), std::move(*march)});
+        compiled = true;
+    }
+    for (const GpuShell& shell : scene.shells) {
+        std::string key = shellKey(scene, shell);
+        if (shellPasses_.contains(key)) continue;
+        files.files["generated/shell_map.glsl"] = shell.map;
+        std::optional<ShellPass> pass = ShellPass::create(files, error);
+        if (!pass) return false;
+        if (shellPasses_.size() >= kMaxCached * 4) shellPasses_.clear();
+        shellPasses_.emplace(std::move(key), std::move(*pass));
+        compiled = true;
+    }
+    if (compiled) {
+        glFinish(); // drivers may finish compiling lazily
+        lastCompileMs_ =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+    }
     return true;
 }
 
@@ -66,16 +92,33 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
         draw();
         glEndQuery(GL_TIME_ELAPSED);
     };
-    timed(Pass::Shadow, [&] { shadow_.draw(scene); });
+    std::vector<const ShellPass*> shells;
+    for (const GpuShell& shell : scene.shells)
+        shells.push_back(&shellPasses_.find(shellKey(scene, shell))->second);
+    const std::uint32_t zeros[2] = {0, 0};
+    glNamedBufferSubData(statistics_.id(), 0, sizeof zeros, zeros);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchStatisticsBinding, statistics_.id());
+
+    timed(Pass::Shadow, [&] { shadow_.draw(scene, shells); });
     glBindTextureUnit(kShadowMapUnit, shadow_.maps().id());
     glBindTextureUnit(kSkyImageUnit, scene.skyImage.id());
     timed(Pass::Raster, [&] { sdf.raster.draw(scene, settings.background, targets.raster); });
+    timed(Pass::Shell, [&] {
+        for (std::size_t i = 0; i < shells.size(); ++i)
+            shells[i]->draw(scene.shells[i], frameCamera.viewProjection, targets.raster);
+    });
     timed(Pass::March, [&] { sdf.march.draw(targets.raster, targets.combined); });
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
     glBindTextureUnit(kShadowMapUnit, 0);
     glBindTextureUnit(kSkyImageUnit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
+}
+
+MarchStatistics Renderer::lastMarchStatistics() const {
+    std::uint32_t counts[2] = {0, 0};
+    glGetNamedBufferSubData(statistics_.id(), 0, sizeof counts, counts);
+    return {counts[0], counts[1]};
 }
 
 PassTimes Renderer::lastPassTimes() const {

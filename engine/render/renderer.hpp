@@ -9,8 +9,10 @@
 #include "render/post_pass.hpp"
 #include "render/raster_pass.hpp"
 #include "render/shadow_pass.hpp"
+#include "render/shell_pass.hpp"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -26,7 +28,13 @@ struct FrameTargets {
 
 FrameTargets createFrameTargets(int width, int height);
 
-enum class Pass { Raster, March, Post, Shadow, Count };
+enum class Pass { Raster, March, Post, Shadow, Shell, Count };
+
+// Fragments whose march took at least one step in the last frame, per pass.
+struct MarchStatistics {
+    std::uint64_t fullscreen = 0; // the march pass (every pixel may march)
+    std::uint64_t shells = 0;     // the shell pass (only the pixels the proxies cover)
+};
 
 // GPU milliseconds of each pass in the last frame (timer queries).
 using PassTimes = std::array<double, std::size_t(Pass::Count)>;
@@ -55,14 +63,18 @@ class Renderer {
                 FrameTargets& targets);
     // Waits for the last frame and returns its pass times.
     PassTimes lastPassTimes() const;
+    // Waits for the last frame and returns how many fragments marched.
+    MarchStatistics lastMarchStatistics() const;
 
   private:
     ShaderFiles files_;
-    std::map<std::string, SdfPasses, std::less<>> sdfPasses_; // by map text
+    std::map<std::string, SdfPasses, std::less<>> sdfPasses_;   // by map text
+    std::map<std::string, ShellPass, std::less<>> shellPasses_; // by scene map + shell map
     double lastCompileMs_ = 0.0;
     PostPass post_;
     ShadowPass shadow_;
     gl::Buffer frameBuffer_; // GpuFrame uniform block
+    gl::Buffer statistics_;  // two uints: MarchStatistics
     std::array<gl::Query, std::size_t(Pass::Count)> timers_;
 
     Renderer(ShaderFiles files, PostPass post, ShadowPass shadow);

@@ -45,7 +45,7 @@ void ShadowPass::allocate(int size, int layers) {
     }
 }
 
-void ShadowPass::draw(const GpuScene& scene) {
+void ShadowPass::draw(const GpuScene& scene, std::span<const ShellPass* const> shellPasses) {
     if (scene.shadowViews.empty() || scene.shadowMapSize <= 0) return;
     allocate(scene.shadowMapSize, int(scene.shadowViews.size()));
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
@@ -58,8 +58,8 @@ void ShadowPass::draw(const GpuScene& scene) {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(scene.shadowSlopeBias, 2.0f * scene.shadowSlopeBias);
-    glUseProgram(program_.id());
     for (std::size_t layer = 0; layer < scene.shadowViews.size(); ++layer) {
+        glUseProgram(program_.id());
         glNamedFramebufferTextureLayer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, maps_.id(), 0,
                                        GLint(layer));
         if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) !=
@@ -78,6 +78,9 @@ void ShadowPass::draw(const GpuScene& scene) {
                 glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
             }
         }
+        for (std::size_t i = 0; i < scene.shells.size() && i < shellPasses.size(); ++i)
+            shellPasses[i]->drawDepth(scene.shells[i], scene.shadowViews[layer],
+                                      scene.shadowSlopeBias);
     }
     glBindVertexArray(0);
     glDisable(GL_POLYGON_OFFSET_FILL);

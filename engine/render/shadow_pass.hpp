@@ -1,12 +1,14 @@
-// Shadow pass: renders the depth of every mesh instance into the layers of a shadow-map array,
-// one layer per GpuScene::shadowViews entry. SDF objects are not drawn: they cast shadows by
-// marching (shaders/common/shadows.glsl).
+// Shadow pass: renders the depth of every mesh instance and every shell into the layers of a
+// shadow-map array, one layer per GpuScene::shadowViews entry. The fullscreen SDF objects are
+// not drawn: they cast shadows by marching (shaders/common/shadows.glsl).
 #pragma once
 
 #include "gl/program.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/shell_pass.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
 
 namespace rmsc {
@@ -15,8 +17,9 @@ class ShadowPass {
   public:
     static std::optional<ShadowPass> create(const ShaderFiles& files, std::string& error);
     // Draws the scene's shadow views (the maps are reallocated when their size or count
-    // changes). Leaves the framebuffer binding and viewport changed.
-    void draw(const GpuScene& scene);
+    // changes); shellPasses[i] draws scene.shells[i]. Leaves the framebuffer binding and
+    // viewport changed.
+    void draw(const GpuScene& scene, std::span<const ShellPass* const> shellPasses);
     // The depth array (DEPTH_COMPONENT32F, compare mode on, linear filtering): always a
     // complete texture, 1x1x1 while no scene needs maps.
     const gl::Texture& maps() const { return maps_; }

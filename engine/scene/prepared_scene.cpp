@@ -5,6 +5,7 @@
 #include "scene/gltf_scene.hpp"
 #include "scene/material_textures.hpp"
 #include "scene/scene_json.hpp"
+#include "sdf/bounds.hpp"
 #include "sdf/compiler.hpp"
 
 #include <algorithm>
@@ -50,8 +51,81 @@ std::vector<Light> gatherLights(const Scene& scene, const std::vector<MeshAsset>
     return lights;
 }
 
+namespace {
+
+// The shell's clip box and proxy mesh (object space); errors at the shell's JSON pointer.
+std::optional<PreparedShell> prepareShell(SdfShellProgram compiled, const FileSource& files,
+                                          const std::string& sceneFile, Diagnostics& diagnostics) {
+    PreparedShell shell;
+    shell.settings = *compiled.node->shell;
+    const SdfShell& settings = shell.settings;
+    const SdfBounds bounds = sdfNodeLocalBounds(*compiled.node, compiled.parentFieldScale);
+    compiled.node = nullptr;
+    shell.compiled = std::move(compiled);
+
+    std::optional<ShellProxyMesh> mesh;
+    glm::vec3 meshMin(0.0f), meshMax(0.0f);
+    if (settings.proxy == ShellProxy::Mesh) {
+        Diagnostics meshDiagnostics;
+        std::optional<MeshAsset> asset = loadGltf(settings.meshPath, files, meshDiagnostics);
+        for (Diagnostic& d : meshDiagnostics.items)
+            diagnostics.items.push_back({d.severity, sceneFile,
+                                         settings.pointer + "/mesh (\"" + settings.meshFile + "\")",
+                                         d.format()});
+        if (!asset) return std::nullopt;
+        mesh = assetProxyMesh(*asset);
+        if (mesh->indices.empty()) {
+            diagnostics.error(sceneFile, settings.pointer + "/mesh",
+                              "\"" + settings.meshFile +
+                                  "\" has no triangles to use as the shell's proxy");
+            return std::nullopt;
+        }
+        meshMin = asset->boundsMin;
+        meshMax = asset->boundsMax;
+    }
+
+    if (settings.bound) {
+        shell.clipMin = -*settings.bound;
+        shell.clipMax = *settings.bound;
+        shell.clipsContent = true;
+    } else if (bounds.bounded && !bounds.box.empty()) {
+        // A margin, so the surface never touches the box (the box clips the distance, and the
+        // normals there must stay the surface's) and the proxy covers hits within epsilon.
+        const glm::vec3 half = bounds.box.halfSize();
+        const glm::vec3 margin(0.02f * std::max({half.x, half.y, half.z}) + 1e-3f);
+        shell.clipMin = bounds.box.min - margin;
+        shell.clipMax = bounds.box.max + margin;
+    } else if (mesh) {
+        shell.clipMin = meshMin; // the user's mesh is the bound
+        shell.clipMax = meshMax;
+        shell.clipsContent = true;
+    } else {
+        diagnostics.error(
+            sceneFile, settings.pointer,
+            "the shell's content reaches infinity (" +
+                (bounds.unboundedBy.empty() ? shell.compiled.pointer : bounds.unboundedBy) +
+                "), so it has no proxy box; give \"bound\": [x, y, z] (half "
+                "extents in the node's frame) to clip it, or a \"mesh\" proxy");
+        return std::nullopt;
+    }
+    switch (settings.proxy) {
+    case ShellProxy::Box:
+        shell.proxy = boxProxyMesh(shell.clipMin, shell.clipMax);
+        break;
+    case ShellProxy::Sphere:
+        shell.proxy = sphereProxyMesh(shell.clipMin, shell.clipMax);
+        break;
+    case ShellProxy::Mesh:
+        shell.proxy = std::move(*mesh);
+        break;
+    }
+    return shell;
+}
+
+} // namespace
+
 std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
-                                          Diagnostics& diagnostics) {
+                                          Diagnostics& diagnostics, ShellMode shellMode) {
     PreparedScene prepared;
     const int errorsBefore = diagnostics.errorCount();
     const std::string sceneFile = scene.file.string();
@@ -83,10 +157,21 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     prepared.materials = scene.materials;
     prepared.materials.push_back(defaultMaterial());
     loadMaterialTextures(prepared.materials, sceneFile, files, diagnostics, prepared.textures);
-    if (scene.sdf) {
+    if (scene.sdf && shellMode == ShellMode::Fullscreen) {
         std::optional<SdfProgram> program =
             compileSdf(*scene.sdf, std::uint32_t(scene.materials.size()), sceneFile, diagnostics);
         if (program) prepared.sdf = std::move(*program);
+    } else if (scene.sdf) {
+        std::optional<CompiledSdfScene> compiled = compileSdfScene(
+            *scene.sdf, std::uint32_t(scene.materials.size()), sceneFile, diagnostics);
+        if (compiled) {
+            prepared.sdf = std::move(compiled->main);
+            for (SdfShellProgram& shell : compiled->shells) {
+                std::optional<PreparedShell> ready =
+                    prepareShell(std::move(shell), files, sceneFile, diagnostics);
+                if (ready) prepared.shells.push_back(std::move(*ready));
+            }
+        }
     }
     prepared.lights = gatherLights(scene, prepared.assets, prepared.instanceAsset, diagnostics);
     if (scene.environment.sky == SkyType::Image && !scene.environment.imagePath.empty()) {
@@ -99,13 +184,13 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     return prepared;
 }
 
-std::optional<PreparedScene> openScene(const std::filesystem::path& path,
-                                       Diagnostics& diagnostics) {
+std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagnostics& diagnostics,
+                                       ShellMode shellMode) {
     if (path.empty()) {
         const FileSource embedded = embeddedFileSource();
         std::optional<Scene> scene = loadScene(kDemoScenePath, embedded, diagnostics);
         if (!scene) return std::nullopt;
-        return prepareScene(std::move(*scene), embedded, diagnostics);
+        return prepareScene(std::move(*scene), embedded, diagnostics, shellMode);
     }
     const FileSource disk = diskFileSource();
     std::string extension = path.extension().string();
@@ -126,7 +211,7 @@ std::optional<PreparedScene> openScene(const std::filesystem::path& path,
     }
     std::optional<Scene> scene = loadScene(path, disk, diagnostics);
     if (!scene) return std::nullopt;
-    return prepareScene(std::move(*scene), disk, diagnostics);
+    return prepareScene(std::move(*scene), disk, diagnostics, shellMode);
 }
 
 } // namespace rmsc

@@ -8,7 +8,9 @@
 #include "scene/material_textures.hpp"
 #include "scene/mesh_asset.hpp"
 #include "scene/scene.hpp"
+#include "scene/shell_proxy.hpp"
 #include "scene/sky_image.hpp"
+#include "sdf/compiler.hpp"
 #include "sdf/program.hpp"
 
 #include <filesystem>
@@ -17,12 +19,28 @@
 
 namespace rmsc {
 
+// A shell ready to draw: its program (object space), the box its rays are clipped to and the
+// proxy mesh, both in object space.
+struct PreparedShell {
+    SdfShellProgram compiled; // compiled.node is not kept (nullptr)
+    SdfShell settings;
+    glm::vec3 clipMin{0.0f}; // the content's bounds with a margin, or the user's "bound"
+    glm::vec3 clipMax{0.0f};
+    bool clipsContent = false; // the content may reach past the box (a "bound", or a mesh's
+                               // bounds around unbounded content): it is clipped to it
+    ShellProxyMesh proxy;
+};
+
+// How shells are drawn: as the scene says, or all in the fullscreen pass (for comparisons).
+enum class ShellMode { AsScene, Fullscreen };
+
 struct PreparedScene {
     Scene scene;
-    std::vector<MeshAsset> assets;   // distinct glTF files
-    std::vector<int> instanceAsset;  // per scene.meshes: index into assets
-    SdfProgram sdf;                  // empty when the scene has no SDF tree
-    std::vector<Material> materials; // scene.materials + the default material
+    std::vector<MeshAsset> assets;     // distinct glTF files
+    std::vector<int> instanceAsset;    // per scene.meshes: index into assets
+    SdfProgram sdf;                    // the fullscreen pass's: empty without an SDF tree
+    std::vector<PreparedShell> shells; // the subtrees drawn through proxy meshes
+    std::vector<Material> materials;   // scene.materials + the default material
     std::vector<TextureImage>
         textures;      // images of the materials' textures (MaterialTexture::image)
     SkyImage skyImage; // the image sky's pixels (empty unless it has one)
@@ -37,7 +55,8 @@ Material defaultMaterial();
 // Loads every mesh and compiles the SDF of an already parsed scene. Mesh files are read through
 // `files`; errors name the mesh instance's JSON pointer and the glTF element.
 std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
-                                          Diagnostics& diagnostics);
+                                          Diagnostics& diagnostics,
+                                          ShellMode shellMode = ShellMode::AsScene);
 
 // scene.lights followed by the lights of the glTF assets placed by their instances; errors at
 // the instance that goes over limits::kLights.
@@ -46,7 +65,8 @@ std::vector<Light> gatherLights(const Scene& scene, const std::vector<MeshAsset>
 
 // Opens what the user named: a scene file (.json), a glTF model (.gltf / .glb, opened as a
 // scene with a default light and a framing camera), or, for an empty path, the built-in demo.
-std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagnostics& diagnostics);
+std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagnostics& diagnostics,
+                                       ShellMode shellMode = ShellMode::AsScene);
 
 // Path of the built-in demo scene among the embedded sample files.
 inline constexpr const char* kDemoScenePath = "samples/scenes/demo.json";

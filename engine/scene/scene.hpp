@@ -205,6 +205,24 @@ struct SdfProfile {
     float offset = 0.0f;            // Revolution: distance of the profile's x = 0 from y
 };
 
+// What a shell's proxy is: the geometry rasterized so that only its pixels march the shell.
+enum class ShellProxy {
+    Box,    // the subtree's bounds (sdf/bounds.hpp), or `bound`
+    Sphere, // a polyhedron around the sphere that holds the box
+    Mesh,   // a glTF file the user names, in the node's frame
+};
+
+// Marks a subtree to render in "mesh-shell" mode (docs/scene-format.md, "Shells"): a proxy mesh
+// is rasterized and its fragments march only this subtree, in the node's own frame, writing
+// gl_FragDepth. It composites with everything else through the depth buffer.
+struct SdfShell {
+    ShellProxy proxy = ShellProxy::Box;
+    std::optional<glm::vec3> bound; // half extents in the node's frame: clamps the content
+    std::string meshFile;           // Mesh: as written in the scene file
+    std::filesystem::path meshPath; // Mesh: resolved against the scene file's folder
+    std::string pointer;            // JSON pointer of the "shell" value, for messages
+};
+
 // A node of the SDF tree: a group combining its children with an operation, or a shape.
 struct SdfNode {
     std::string name;
@@ -213,6 +231,7 @@ struct SdfNode {
     int material = -1;   // index into Scene::materials; -1 inherits the parent's (or default)
     std::vector<SdfModifier> modifiers; // applied as SdfModifierType says
     bool cut = false;                   // subtracted from the combination of its non-cut siblings
+    std::optional<SdfShell> shell;      // set: drawn through a proxy mesh, not the fullscreen pass
 
     bool isGroup = false;
     // group

@@ -27,11 +27,14 @@ const std::vector<std::string> kRenderKeys = {"max_steps",  "max_distance", "sur
 const std::vector<std::string> kMaterialKeys = {"base_color", "metallic", "roughness", "emissive"};
 const std::vector<std::string> kMeshKeys = {"name",       "file",  "position", "rotation",
                                             "quaternion", "scale", "material"};
-const std::vector<std::string> kGroupKeys = {"name",     "op",       "smoothness", "blend",
-                                             "children", "position", "rotation",   "quaternion",
-                                             "scale",    "material", "modifiers",  "cut"};
-const std::vector<std::string> kShapeCommonKeys = {
-    "name", "shape", "position", "rotation", "quaternion", "scale", "material", "modifiers", "cut"};
+const std::vector<std::string> kGroupKeys = {
+    "name",       "op",    "smoothness", "blend",     "children", "position", "rotation",
+    "quaternion", "scale", "material",   "modifiers", "cut",      "shell"};
+const std::vector<std::string> kShapeCommonKeys = {"name",       "shape", "position", "rotation",
+                                                   "quaternion", "scale", "material", "modifiers",
+                                                   "cut",        "shell"};
+const std::vector<std::string> kShellKeys = {"proxy", "bound", "mesh"};
+const std::vector<std::string> kShellProxies = {"box", "sphere", "mesh"};
 
 struct OpName {
     SdfOp op;
@@ -707,6 +710,62 @@ void readGroup(SceneReader& r, const Json& object, const std::string& pointer, i
     }
 }
 
+// "shell": true, or {"proxy": "box" | "sphere" | "mesh", "bound": [x, y, z], "mesh": "file"}.
+void readShell(const SceneReader& r, const Json& value, const std::string& pointer, SdfNode& node) {
+    SdfShell shell;
+    shell.pointer = pointer;
+    if (value.is_boolean()) {
+        if (value.get<bool>()) node.shell = shell;
+        return;
+    }
+    if (!value.is_object()) {
+        r.json.error(pointer, "expected true, false or an object with \"proxy\", \"bound\" and "
+                              "\"mesh\", got " +
+                                  jsonTypeName(value));
+        return;
+    }
+    warnUnknownKeys(r.json, value, pointer, kShellKeys);
+    if (const Json* proxy = findMember(value, "proxy")) {
+        const std::string proxyPointer = childPointer(pointer, "proxy");
+        if (const auto name = readString(r.json, *proxy, proxyPointer)) {
+            const auto it = std::find(kShellProxies.begin(), kShellProxies.end(), *name);
+            if (it == kShellProxies.end()) {
+                r.json.error(proxyPointer, "unknown proxy \"" + *name + "\"; expected one of " +
+                                               quotedList(kShellProxies));
+                return;
+            }
+            shell.proxy = ShellProxy(it - kShellProxies.begin());
+        }
+    }
+    if (const Json* bound = findMember(value, "bound")) {
+        if (auto half =
+                readVec3(r.json, *bound, childPointer(pointer, "bound"), NumberRange::above(0.0)))
+            shell.bound = *half;
+    }
+    const Json* mesh = findMember(value, "mesh");
+    if (shell.proxy == ShellProxy::Mesh) {
+        if (!mesh) {
+            r.json.error(pointer, "a \"mesh\" proxy needs \"mesh\": the path of a glTF file, "
+                                  "relative to the scene file");
+            return;
+        }
+        const std::string meshPointer = childPointer(pointer, "mesh");
+        if (const auto text = readString(r.json, *mesh, meshPointer)) {
+            if (text->empty()) {
+                r.json.error(meshPointer, "expected the path of a glTF file, got \"\"");
+                return;
+            }
+            shell.meshFile = *text;
+            shell.meshPath = resolveMeshPath(r.sceneFolder, *text);
+        }
+    } else if (mesh) {
+        r.json.error(childPointer(pointer, "mesh"),
+                     "\"mesh\" is read only with \"proxy\": \"mesh\"");
+        return;
+    }
+    node.shell = shell;
+}
+
 void readSdfNode(SceneReader& r, const Json& object, const std::string& pointer, int groupDepth,
                  SdfNode& node) {
     node.pointer = pointer;
@@ -729,6 +788,8 @@ void readSdfNode(SceneReader& r, const Json& object, const std::string& pointer,
                          "expected true or false, got " + jsonTypeName(*cut));
         }
     }
+    if (const Json* shell = findMember(object, "shell"))
+        readShell(r, *shell, childPointer(pointer, "shell"), node);
     const bool isShape = object.contains("shape");
     const bool isGroup = object.contains("children") || object.contains("op");
     if (isShape && isGroup) {

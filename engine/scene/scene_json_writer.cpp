@@ -195,6 +195,15 @@ Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& material
     writeTransform(node.transform, out);
     writeMaterialRef(node.material, materials, out);
     if (node.cut) out["cut"] = true;
+    if (node.shell) {
+        const SdfShell& shell = *node.shell;
+        static constexpr const char* kProxies[] = {"box", "sphere", "mesh"};
+        Json s = Json::object();
+        s["proxy"] = kProxies[std::size_t(shell.proxy)];
+        if (shell.bound) s["bound"] = vec3ToJson(*shell.bound);
+        if (shell.proxy == ShellProxy::Mesh) s["mesh"] = shell.meshFile;
+        out["shell"] = std::move(s);
+    }
     if (!node.modifiers.empty()) {
         Json modifiers = Json::array();
         for (const SdfModifier& m : node.modifiers)

@@ -118,6 +118,7 @@ std::vector<Key> nodeKeys() {
         {"material", described(string(), "the name of a material in \"materials\"")},
         {"modifiers", {{"type", "array"}, {"maxItems", 16}, {"items", ref("modifier")}}},
         {"cut", described(boolean(), "subtracts this node from its earlier siblings")},
+        {"shell", {{"oneOf", Json::array({boolean(), ref("shell")})}}},
     };
     for (Key& key : transformKeys())
         keys.push_back(std::move(key));
@@ -409,6 +410,17 @@ std::vector<ObjectDef> objectDefs() {
             {"maxItems", 256}}}},
          {"type", "points"},
          "a simple polygon enclosing some area"},
+        {"shell",
+         sdfShape,
+         "/sdf/shell",
+         {{"proxy", "box"}},
+         {{"proxy",
+           readerNames("the proxy mesh: the bounds' box, a sphere around them, or a glTF")},
+          {"bound", described(numbers(3, positiveLength),
+                              "half extents in the node's frame: the content is clipped to them")},
+          {"mesh", path("a glTF file, the proxy when \"proxy\" is \"mesh\"")}},
+         {},
+         "draws the node through a proxy mesh (mesh-shell mode)"},
         {"modifier_repeat",
          sdfShape,
          "/sdf/modifiers/0",

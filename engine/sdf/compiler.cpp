@@ -36,7 +36,16 @@ struct PlannedNode {
     int stackNeed = 0;            // entries the subtree needs on the stack
     int pointNeed = 0;            // entries the subtree needs on the point stack
     long instructionCount = 0;    // instructions the subtree compiles to
+    bool skipped = false;         // a shell, or a group of shells only: not in this program
     std::vector<PlannedNode> children;
+};
+
+// Where a shell sits in the tree, found while planning the scene's program.
+struct ShellSite {
+    const SdfNode* node = nullptr;
+    glm::dmat4 parentWorld{1.0}; // the parent's frame to world (shells sit in plain unions)
+    std::uint32_t parentMaterial = 0;
+    std::uint32_t idBase = 0; // pre-order index of the shell node in the whole tree
 };
 
 // Upper bound of the gradient length of the value noise of the Displace modifier (sdfValueNoise
@@ -199,6 +208,16 @@ class Planner {
             std::vector<std::string>& nodePointers)
         : file_(file), diagnostics_(diagnostics), nodePointers_(nodePointers) {}
 
+    // Leave shells out of the program and list them (shells()) instead.
+    void splitShells() { splitShells_ = true; }
+    // Plan `root` in its own frame (its transform not applied) with ids from `idBase` on: a
+    // shell's program, in object space.
+    void planInObjectSpace(const SdfNode& root, std::uint32_t idBase) {
+        objectSpaceRoot_ = &root;
+        idBase_ = idBase;
+    }
+    const std::vector<ShellSite>& shells() const { return shells_; }
+
     // Resolves `node` and its subtree. `parentWorld` maps the parent's frame to the current
     // point's frame, `spaceScale` is the world units per unit of the current point's frame,
     // `parentMaterial` the parent's resolved material. Object ids count every node in pre-order
@@ -207,10 +226,17 @@ class Planner {
                      std::uint32_t parentMaterial) {
         PlannedNode planned;
         planned.node = &node;
-        planned.objectId = kSdfIdBase + std::uint32_t(nodePointers_.size());
-        nodePointers_.push_back(node.pointer);
         planned.material = node.material >= 0 ? std::uint32_t(node.material) : parentMaterial;
-        planned.world = parentWorld * glm::dmat4(node.transform.matrix());
+        if (splitShells_ && node.shell) {
+            planShell(node, parentWorld, planned.material);
+            planned.skipped = true;
+            return planned;
+        }
+        planned.objectId = kSdfIdBase + idBase_ + std::uint32_t(nodePointers_.size());
+        nodePointers_.push_back(node.pointer);
+        planned.world =
+            parentWorld *
+            (&node == objectSpaceRoot_ ? glm::dmat4(1.0) : glm::dmat4(node.transform.matrix()));
         planned.cut = node.cut;
         planned.hasPointFrame = needsPointFrame(node);
 
@@ -247,9 +273,18 @@ class Planner {
             checkGroup(node);
             std::vector<PlannedNode> kept;
             std::vector<PlannedNode> cuts;
+            const std::string outerBlocker = shellBlocker_;
+            if (shellBlocker_.empty()) shellBlocker_ = shellBlocker(node);
+            bool skippedChild = false;
             for (const SdfNode& child : node.children) {
                 PlannedNode c = plan(child, childWorld, childScale, planned.material);
-                (c.cut ? cuts : kept).push_back(std::move(c));
+                skippedChild = skippedChild || c.skipped;
+                if (!c.skipped) (c.cut ? cuts : kept).push_back(std::move(c));
+            }
+            shellBlocker_ = outerBlocker;
+            if (skippedChild && kept.empty() && cuts.empty()) {
+                planned.skipped = true; // only shells below: nothing left for this program
+                return planned;
             }
             if (kept.empty() && !cuts.empty())
                 diagnostics_.error(file_, node.pointer,
@@ -300,6 +335,48 @@ class Planner {
     const std::string& firstPointOverflow() const { return firstPointOverflow_; }
 
   private:
+    // Why a shell cannot sit below `group` ("" if it can). A shell is composited with the rest
+    // of the scene through the depth buffer, which is a plain union.
+    static std::string shellBlocker(const SdfNode& group) {
+        const std::string lead = "a shell is drawn on its own and meets the rest of the scene "
+                                 "through the depth buffer (a plain union), so it can only sit "
+                                 "in plain union groups without modifiers; ";
+        if (group.op != SdfOp::Union)
+            return lead + "its group " + group.pointer + " is a " + opName(group.op);
+        if (!group.modifiers.empty())
+            return lead + "its group " + group.pointer +
+                   " has modifiers, which would not "
+                   "reach the shell";
+        for (const SdfNode& child : group.children)
+            if (child.cut)
+                return lead + "its group " + group.pointer + " has a \"cut\" child (" +
+                       child.pointer + "), which could not cut the shell";
+        return {};
+    }
+
+    // Records a shell found in the scene's program and counts its subtree's ids.
+    void planShell(const SdfNode& node, const glm::dmat4& parentWorld, std::uint32_t material) {
+        const std::string& where = node.shell->pointer;
+        if (!shellBlocker_.empty()) diagnostics_.error(file_, where, shellBlocker_);
+        if (node.cut)
+            diagnostics_.error(file_, where,
+                               "a shell cannot be \"cut\": it is drawn on its own and cannot "
+                               "cut its siblings");
+        shells_.push_back({&node, parentWorld, material, std::uint32_t(nodePointers_.size())});
+        countIds(node, true);
+    }
+
+    // Gives the subtree's nodes their pre-order ids; nested shells are an error.
+    void countIds(const SdfNode& node, bool isShellRoot) {
+        if (!isShellRoot && node.shell)
+            diagnostics_.error(file_, node.shell->pointer,
+                               "a shell inside a shell (" + shells_.back().node->pointer +
+                                   "); mark only one of them");
+        nodePointers_.push_back(node.pointer);
+        for (const SdfNode& child : node.children)
+            countIds(child, false);
+    }
+
     // Rows of m^-1 and the smallest scale factor of m; false if m cannot be inverted.
     static bool invertFrame(const glm::dmat4& m, glm::vec4 rows[3], double& scale) {
         scale = smallestScaleFactor(m);
@@ -365,6 +442,11 @@ class Planner {
     std::vector<std::string>& nodePointers_;
     std::string firstOverflow_;
     std::string firstPointOverflow_;
+    bool splitShells_ = false;
+    const SdfNode* objectSpaceRoot_ = nullptr;
+    std::uint32_t idBase_ = 0;
+    std::vector<ShellSite> shells_;
+    std::string shellBlocker_; // why a shell cannot sit here ("" if it can)
 
   public:
     std::vector<glm::vec4> data_; // SdfProgram::data, filled while planning
@@ -559,26 +641,14 @@ void emit(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out) {
 
 } // namespace
 
-double sdfFieldShrink(const std::vector<SdfModifier>& modifiers) {
-    double lipschitz = 1.0;
-    double displacement = 1.0;
-    for (const SdfModifier& m : modifiers) {
-        lipschitz *= pointModifierLipschitz(m);
-        if (m.type == SdfModifierType::Displace)
-            displacement +=
-                std::abs(double(m.amount)) * std::abs(double(m.frequency)) * kNoiseGradientBound;
-    }
-    return lipschitz * displacement;
-}
+namespace {
 
-std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,
-                                     const std::string& file, Diagnostics& diagnostics) {
-    const int errorsBefore = diagnostics.errorCount();
-    SdfProgram program;
-    Planner planner(file, diagnostics, program.nodePointers);
-    const PlannedNode planned = planner.plan(root, glm::dmat4(1.0), 1.0, defaultMaterial);
-
-    if (root.cut)
+// Checks the limits of a planned program and emits it (nullopt when there were errors).
+std::optional<SdfProgram> finishProgram(Planner& planner, const PlannedNode& planned,
+                                        const SdfNode& root, SdfProgram program,
+                                        const std::string& file, Diagnostics& diagnostics,
+                                        int errorsBefore) {
+    if (root.cut && !root.shell) // a cut shell is reported where the shell is found
         diagnostics.error(file, root.pointer,
                           "the root node cannot be \"cut\": it has no siblings to be cut from");
     if (planned.pointNeed > kSdfMaxPointStack) {
@@ -616,6 +686,7 @@ std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultM
                 std::to_string(planned.instructionCount - kSdfMaxInstructions) + " over)");
     }
     if (diagnostics.errorCount() > errorsBefore) return std::nullopt;
+    if (planned.skipped) return program; // everything is in shells
 
     program.instructions.reserve(std::size_t(planned.instructionCount));
     emit(planned, program.instructions);
@@ -623,6 +694,87 @@ std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultM
     program.pointStackDepth = planned.pointNeed;
     program.data = std::move(planner.data_);
     return program;
+}
+
+} // namespace
+
+double sdfFieldShrink(const std::vector<SdfModifier>& modifiers) {
+    double lipschitz = 1.0;
+    double displacement = 1.0;
+    for (const SdfModifier& m : modifiers) {
+        lipschitz *= pointModifierLipschitz(m);
+        if (m.type == SdfModifierType::Displace)
+            displacement +=
+                std::abs(double(m.amount)) * std::abs(double(m.frequency)) * kNoiseGradientBound;
+    }
+    return lipschitz * displacement;
+}
+
+std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,
+                                     const std::string& file, Diagnostics& diagnostics) {
+    const int errorsBefore = diagnostics.errorCount();
+    SdfProgram program;
+    Planner planner(file, diagnostics, program.nodePointers);
+    const PlannedNode planned = planner.plan(root, glm::dmat4(1.0), 1.0, defaultMaterial);
+    return finishProgram(planner, planned, root, std::move(program), file, diagnostics,
+                         errorsBefore);
+}
+
+std::optional<CompiledSdfScene> compileSdfScene(const SdfNode& root, std::uint32_t defaultMaterial,
+                                                const std::string& file, Diagnostics& diagnostics) {
+    const int errorsBefore = diagnostics.errorCount();
+    CompiledSdfScene compiled;
+    SdfProgram program;
+    Planner planner(file, diagnostics, program.nodePointers);
+    planner.splitShells();
+    const PlannedNode planned = planner.plan(root, glm::dmat4(1.0), 1.0, defaultMaterial);
+    std::optional<SdfProgram> main =
+        finishProgram(planner, planned, root, std::move(program), file, diagnostics, errorsBefore);
+    if (!main) return std::nullopt;
+    compiled.main = std::move(*main);
+
+    for (const ShellSite& site : planner.shells()) {
+        const int shellErrorsBefore = diagnostics.errorCount();
+        SdfShellProgram shell;
+        shell.node = site.node;
+        shell.pointer = site.node->pointer;
+        const glm::dmat4 objectToWorld =
+            site.parentWorld * glm::dmat4(site.node->transform.matrix());
+        shell.objectToWorld = glm::mat4(objectToWorld);
+        shell.worldToObject = glm::mat4(glm::inverse(objectToWorld));
+        shell.distanceScale = float(smallestScaleFactor(objectToWorld));
+        shell.parentFieldScale = float(smallestScaleFactor(site.parentWorld));
+        if (!(shell.distanceScale > 1e-12f) || !std::isfinite(shell.distanceScale))
+            diagnostics.error(file, site.node->pointer,
+                              "the shell's transform (with its groups') cannot be inverted; is "
+                              "a scale 0?");
+        SdfProgram shellProgram;
+        Planner shellPlanner(file, diagnostics, shellProgram.nodePointers);
+        shellPlanner.planInObjectSpace(*site.node, site.idBase);
+        // Distances in world units, as in the scene's program (the smoothness of operations and
+        // the lengths of modifiers are world units): object units times the frame's scale.
+        const PlannedNode plannedShell = shellPlanner.plan(
+            *site.node, glm::dmat4(1.0), double(shell.distanceScale), site.parentMaterial);
+        std::optional<SdfProgram> compiledShell =
+            finishProgram(shellPlanner, plannedShell, *site.node, std::move(shellProgram), file,
+                          diagnostics, shellErrorsBefore);
+        if (!compiledShell) continue;
+        int leaves = 0;
+        for (const GpuSdfInstruction& in : compiledShell->instructions)
+            leaves += SdfOpcode(in.opcode) == SdfOpcode::Shape ||
+                      SdfOpcode(in.opcode) == SdfOpcode::Profile;
+        if (leaves > kMaxShellShapes) {
+            diagnostics.error(file, site.node->shell->pointer,
+                              "a shell holds at most " + std::to_string(kMaxShellShapes) +
+                                  " shapes (its shader is generated), this one has " +
+                                  std::to_string(leaves) + "; split it into several shells");
+            continue;
+        }
+        shell.program = std::move(*compiledShell);
+        compiled.shells.push_back(std::move(shell));
+    }
+    if (diagnostics.errorCount() > errorsBefore) return std::nullopt;
+    return compiled;
 }
 
 } // namespace rmsc

@@ -429,4 +429,25 @@ std::optional<SdfHit> sdfCastRay(const SdfProgram& program, const RenderSettings
     return std::nullopt;
 }
 
+std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::mat4& worldToFrame,
+                                        const RenderSettings& settings, glm::vec3 origin,
+                                        glm::vec3 direction, float tMin, float tMax) {
+    if (program.instructions.empty()) return std::nullopt;
+    const float len = glm::length(direction);
+    if (!(len > 0.0f)) return std::nullopt;
+    const glm::vec3 rd = direction / len;
+    // The frame's ray keeps the world ray's t: its direction is mapped, not normalized.
+    const glm::vec3 o = glm::vec3(worldToFrame * glm::vec4(origin, 1.0f));
+    const glm::vec3 d = glm::mat3(worldToFrame) * rd;
+    float t = tMin;
+    for (int i = 0; i < settings.maxSteps; ++i) {
+        if (t > tMax) return std::nullopt;
+        const float h = sdfDistance(program, o + d * t);
+        if (h < settings.surfaceEpsilon * std::max(t, 1.0f))
+            return SdfHit{t, origin + rd * t, i + 1};
+        t += h;
+    }
+    return std::nullopt;
+}
+
 } // namespace rmsc

@@ -41,4 +41,12 @@ struct SdfHit {
 std::optional<SdfHit> sdfCastRay(const SdfProgram& program, const RenderSettings& settings,
                                  glm::vec3 origin, glm::vec3 direction, float tMin, float tMax);
 
+// The same for a program read in another frame, as the shell pass marches a shell
+// (sdf/compiler.hpp, SdfShellProgram): the world ray's points are evaluated at
+// worldToFrame * point, and the program's distances are world units. The hit's position is
+// in world space.
+std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::mat4& worldToFrame,
+                                        const RenderSettings& settings, glm::vec3 origin,
+                                        glm::vec3 direction, float tMin, float tMax);
+
 } // namespace rmsc

@@ -36,6 +36,15 @@ SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requeste
 // strategy's only on the program's structure (opcodes, kinds, operations), so parameter and
 // transform edits keep the same text and the renderer's compiled program; the Baked strategy's on
 // everything.
-std::string generateSdfMap(const SdfProgram& program, SdfStrategy strategy);
+//
+// `names` lets a second map live beside the scene's in one shader (a shell's, see
+// sdf/compiler.hpp): its functions are named prefix + "SceneEmpty", "Distance" and "Surface", and
+// the Buffer strategy reads its instructions from `instructionBase` on in the program buffer.
+struct SdfMapNames {
+    std::string prefix = "sdf";
+    std::size_t instructionBase = 0;
+};
+std::string generateSdfMap(const SdfProgram& program, SdfStrategy strategy,
+                           const SdfMapNames& names = {});
 
 } // namespace rmsc

@@ -15,17 +15,24 @@
 
 layout(binding = 15) uniform sampler2DArrayShadow uShadowMaps; // kShadowMapUnit
 
+// What casts SDF soft shadows and occludes ambient light: the scene's map, unless the including
+// pass defines more (the shell pass adds its shell) before including this file.
+#ifndef SDF_OCCLUDER_DISTANCE
+#define SDF_OCCLUDER_DISTANCE(p) sdfDistance(p)
+#define SDF_OCCLUDERS_EMPTY() sdfSceneEmpty()
+#endif
+
 // Visibility of the light from ro along rd, up to tMax, through the SDF objects: 0 = in shadow,
 // 1 = lit, in between = penumbra. w is the penumbra width factor (Quilez's 1 / k).
 float sdfSoftShadow(vec3 ro, vec3 rd, float tMax, float w) {
     int steps = int(frame.shadow.x);
-    if (steps <= 0 || w <= 0.0 || sdfSceneEmpty()) return 1.0;
+    if (steps <= 0 || w <= 0.0 || SDF_OCCLUDERS_EMPTY()) return 1.0;
     float result = 1.0;
     float previous = 1e10; // the distance at the previous step
     float t = frame.shadow.y;
     tMax = min(tMax, frame.shadow.z);
     for (int i = 0; i < steps && t < tMax; ++i) {
-        float h = sdfDistance(ro + rd * t);
+        float h = SDF_OCCLUDER_DISTANCE(ro + rd * t);
         if (h < 1e-4 * max(t, 1.0)) return 0.0;
         // The closest approach between this sample and the previous one: the spheres of radius
         // `previous` and h around the two samples meet at distance y back along the ray. When
@@ -100,13 +107,13 @@ float lightVisibility(GpuLight light, vec3 p, vec3 n, vec3 toLight, float lightD
 // the expected free distance that is missing, with weights falling off 0.85^i.
 float sdfAmbientOcclusion(vec3 p, vec3 n) {
     int samples = int(frame.ao.x);
-    if (samples <= 0 || sdfSceneEmpty()) return 1.0;
+    if (samples <= 0 || SDF_OCCLUDERS_EMPTY()) return 1.0;
     float occlusion = 0.0;
     float weight = 1.0;
     float weights = 0.0;
     for (int i = 1; i <= samples; ++i) {
         float h = frame.ao.y * float(i) / float(samples);
-        float d = sdfDistance(p + n * h);
+        float d = SDF_OCCLUDER_DISTANCE(p + n * h);
         occlusion += weight * clamp((h - d) / h, 0.0, 1.0);
         weights += weight;
         weight *= 0.85;

@@ -132,6 +132,41 @@ with tempfile.TemporaryDirectory() as tmp:
     broken = write(tmp, "broken_mesh.json", scene(meshes=[{"file": "broken.gltf"}]))
     expect("broken glTF", ["validate", broken], 1, stderr_has=["/meshes/0", "broken.gltf"])
 
+    # Shells: a broken proxy mesh and an unbounded shell are refused at their pointers; a scene
+    # with shells renders both ways, and bench runs both modes and counts marched fragments.
+    shell_broken = write(tmp, "shell_broken.json", scene(sdf={"shape": "sphere", "shell": {
+        "proxy": "mesh", "mesh": "broken.gltf"}}))
+    expect("broken shell proxy", ["render", shell_broken, "-o", out], 1,
+           stderr_has=["/sdf/shell/mesh", "broken.gltf"])
+    shell_missing = write(tmp, "shell_missing.json", scene(sdf={"shape": "sphere", "shell": {
+        "proxy": "mesh", "mesh": "nowhere.glb"}}))
+    expect("missing shell proxy", ["validate", shell_missing], 1,
+           stderr_has=["/sdf/shell/mesh", "nowhere.glb"])
+    shell_plane = write(tmp, "shell_plane.json", scene(sdf={"op": "union", "children": [
+        {"shape": "sphere"}, {"shape": "plane", "shell": True}]}))
+    expect("unbounded shell", ["render", shell_plane, "-o", out], 1,
+           stderr_has=["/sdf/children/1/shell", "reaches infinity", "\"bound\""])
+    shells = os.path.join(SAMPLES, "scenes", "shells.json")
+    for mode in ["scene", "fullscreen"]:
+        path = os.path.join(tmp, f"shells-{mode}.png")
+        expect(f"render shells {mode}", ["render", shells, "-o", path, "--size", "64x36",
+                                         "--shells", mode], 0)
+    expect("bad shells mode", ["render", shells, "-o", out, "--shells", "both"], 2,
+           stderr_has=["--shells"])
+    r = expect("bench shells", ["bench", shells, "--size", "64x36", "--frames", "1", "--warmup", "0",
+                                "--json"], 0)
+    try:
+        runs = json.loads(r.stdout)["strategies"]
+        names = [run["strategy"] for run in runs]
+        check("bench runs both shell modes", names == ["baked, shells", "baked, fullscreen"], str(names))
+        marched = [run["marched_fragments"] for run in runs]
+        check("bench counts shell fragments", marched[0]["shells"] > 0 and marched[1]["shells"] == 0,
+              str(marched))
+        check("bench: shells march fewer fullscreen fragments",
+              marched[0]["fullscreen"] <= marched[1]["fullscreen"], str(marched))
+    except (ValueError, KeyError, IndexError) as e:
+        check("bench shells json", False, f"{e}: {r.stdout[:400]}")
+
     # Material textures: a missing file and a file that is not an image, for validate and render.
     write(tmp, "not_an_image.png", "plain text, not a PNG")
     for label, file, words in [("missing texture", "no_such_texture.png", "cannot read texture"),

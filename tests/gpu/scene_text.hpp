@@ -10,13 +10,14 @@
 
 namespace rmsc::test {
 
-inline PreparedScene prepareSceneText(const std::string& json) {
+inline PreparedScene prepareSceneText(const std::string& json,
+                                      ShellMode shellMode = ShellMode::AsScene) {
     Diagnostics diagnostics;
     const std::filesystem::path path =
         std::filesystem::path(RMSC_TEST_SOURCE_DIR) / "samples" / "scenes" / "test-scene.json";
     std::optional<Scene> scene = parseScene(json, path, diagnostics);
     std::optional<PreparedScene> prepared;
-    if (scene) prepared = prepareScene(std::move(*scene), diskFileSource(), diagnostics);
+    if (scene) prepared = prepareScene(std::move(*scene), diskFileSource(), diagnostics, shellMode);
     EXPECT_TRUE(prepared.has_value()) << diagnostics.format();
     if (!prepared) throw std::runtime_error("cannot prepare the test scene");
     return std::move(*prepared);

@@ -1,12 +1,13 @@
 // Shadows land where the geometry says, both ways: an SDF box over a mesh floor (the SDF casts
-// by shadow marching) and a mesh box over an SDF floor (the mesh casts through a shadow map),
-// for a directional, a point and a spot light. The scene has no ambient light, so a shadowed
-// floor pixel is black. Each floor pixel's expected state comes from a CPU ray from the floor
-// point to the light: through the CPU SDF evaluator for the SDF box, by ray/box slab
-// intersection for the mesh box. Only pixels whose state is the same at four points 0.06 units
-// around them are used (no penumbra, no PCF edge). The GPU's shadow factor is the pixel's HDR
-// colour divided by the same render with shadows disabled: below 0.15 counts as shadowed,
-// above 0.85 as lit; at least 97% of each class must agree.
+// by shadow marching), a mesh box over an SDF floor (the mesh casts through a shadow map), and
+// an SDF box drawn as a shell over a mesh floor (the shell casts through the shadow map's
+// depth-only shell variant only), for a directional, a point and a spot light. The scene has no
+// ambient light, so a shadowed floor pixel is black. Each floor pixel's expected state comes from a
+// CPU ray from the floor point to the light: through the CPU SDF evaluator for the SDF box, by
+// ray/box slab intersection for the mesh box and the shell (an exact box). Only pixels whose state
+// is the same at four points 0.06 units around them are used (no penumbra, no PCF edge). The GPU's
+// shadow factor is the pixel's HDR colour divided by the same render with shadows disabled: below
+// 0.15 counts as shadowed, above 0.85 as lit; at least 97% of each class must agree.
 #include "gpu_test_support.hpp"
 #include "scene_text.hpp"
 
@@ -25,18 +26,20 @@ constexpr float kBoxHalf = 0.4f;
 const glm::vec3 kBoxCentre(0.0f, 1.0f, 0.0f);
 constexpr float kFloorHalf = 2.8f; // the floor is 3 units a side; keep off its edge
 
-enum class Caster { SdfBoxOverMeshFloor, MeshBoxOverSdfFloor };
+enum class Caster { SdfBoxOverMeshFloor, MeshBoxOverSdfFloor, ShellBoxOverMeshFloor };
 
 std::string sceneText(Caster caster, const std::string& light, bool shadows) {
     const std::string render =
         std::string(R"("render": {"ambient": [0, 0, 0], "shadows": {"enabled": )") +
         (shadows ? "true" : "false") + R"(, "softness": 0.01, "pcf_radius": 1, "map_size": 1024}})";
-    const std::string objects =
-        caster == Caster::SdfBoxOverMeshFloor
-            ? R"("meshes": [{"file": "../assets/plane.gltf", "scale": [3, 1, 3]}],
-                 "sdf": {"shape": "box", "half_extents": [0.4, 0.4, 0.4], "position": [0, 1, 0]})"
-            : R"("meshes": [{"file": "../assets/cube.gltf", "scale": 0.8, "position": [0, 1, 0]}],
-                 "sdf": {"shape": "plane", "normal": [0, 1, 0], "offset": 0})";
+    std::string objects =
+        caster == Caster::MeshBoxOverSdfFloor
+            ? R"("meshes": [{"file": "../assets/cube.gltf", "scale": 0.8, "position": [0, 1, 0]}],
+                 "sdf": {"shape": "plane", "normal": [0, 1, 0], "offset": 0})"
+            : R"("meshes": [{"file": "../assets/plane.gltf", "scale": [3, 1, 3]}],
+                 "sdf": {"shape": "box", "half_extents": [0.4, 0.4, 0.4], "position": [0, 1, 0]})";
+    if (caster == Caster::ShellBoxOverMeshFloor)
+        objects.insert(objects.rfind('}'), R"(, "shell": true)");
     return R"({"version": 1, "camera": {"position": [0.5, 6, 3.5], "target": [0, 0, 0], "fov": 50},
                )" +
            render + R"(, "lights": [)" + light + "], " + objects + "}";
@@ -77,7 +80,7 @@ bool expectShadow(Caster caster, const PreparedScene& prepared, const LightGeome
         distance = glm::length(light.vector - p);
     }
     const glm::vec3 origin = p + glm::vec3(0.0f, 1e-3f, 0.0f);
-    if (caster == Caster::MeshBoxOverSdfFloor) return segmentHitsBox(origin, toLight, distance);
+    if (caster != Caster::SdfBoxOverMeshFloor) return segmentHitsBox(origin, toLight, distance);
     // The SDF tree is only the box: a CPU sphere-traced ray to the light.
     return sdfCastRay(prepared.sdf, prepared.scene.render, origin, toLight, 0.0f, distance)
         .has_value();
@@ -167,4 +170,13 @@ TEST(ShadowPlacement, MeshBoxOnSdfFloorPoint) {
 }
 TEST(ShadowPlacement, MeshBoxOnSdfFloorSpot) {
     expectPlacement(Caster::MeshBoxOverSdfFloor, kSpot, kSpotGeometry);
+}
+TEST(ShadowPlacement, ShellBoxOnMeshFloorDirectional) {
+    expectPlacement(Caster::ShellBoxOverMeshFloor, kDirectional, kDirectionalGeometry);
+}
+TEST(ShadowPlacement, ShellBoxOnMeshFloorPoint) {
+    expectPlacement(Caster::ShellBoxOverMeshFloor, kPoint, kPointGeometry);
+}
+TEST(ShadowPlacement, ShellBoxOnMeshFloorSpot) {
+    expectPlacement(Caster::ShellBoxOverMeshFloor, kSpot, kSpotGeometry);
 }
