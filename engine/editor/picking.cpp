@@ -58,16 +58,36 @@ std::optional<PickHit> pickMesh(const PreparedScene& prepared, const PickRay& ra
 }
 
 std::optional<PickHit> pickSdf(const PreparedScene& prepared, const PickRay& ray) {
-    if (prepared.sdf.instructions.empty()) return std::nullopt;
     const RenderSettings& settings = prepared.scene.render;
-    const float tMax = std::min(ray.tMax, settings.maxDistance);
-    const std::optional<SdfHit> hit =
-        sdfCastRay(prepared.sdf, settings, ray.origin, ray.direction, ray.tMin, tMax);
-    if (!hit) return std::nullopt;
-    // The shape that dominates the distance at the hit point is the one the id AOV shows.
-    const SdfSurface surface = sdfSurface(prepared.sdf, {}, hit->position);
-    return PickHit{surface.objectId, hit->t,
-                   selectionForObjectId(prepared.scene, surface.objectId)};
+    float tMax = std::min(ray.tMax, settings.maxDistance);
+    std::optional<PickHit> best;
+    if (!prepared.sdf.instructions.empty()) {
+        if (const std::optional<SdfHit> hit =
+                sdfCastRay(prepared.sdf, settings, ray.origin, ray.direction, ray.tMin, tMax)) {
+            // The shape that dominates the distance at the hit point is the one the id AOV
+            // shows.
+            const std::uint32_t id = sdfSurface(prepared.sdf, {}, hit->position).objectId;
+            best = PickHit{id, hit->t, selectionForObjectId(prepared.scene, id)};
+            tMax = hit->t;
+        }
+    }
+    // Shells march on their own, in their own frames (scene/prepared_scene.hpp).
+    for (const PreparedShell& shell : prepared.shells) {
+        const SdfProgram& program = shell.compiled.program;
+        const std::optional<SdfHit> hit =
+            sdfCastRayInFrame(program, shell.compiled.worldToObject, settings, ray.origin,
+                              ray.direction, ray.tMin, tMax);
+        if (!hit) continue;
+        const glm::vec3 q =
+            glm::vec3(shell.compiled.worldToObject * glm::vec4(hit->position, 1.0f));
+        if (glm::any(glm::lessThan(q, shell.clipMin)) ||
+            glm::any(glm::greaterThan(q, shell.clipMax)))
+            continue; // beyond a shell's "bound": clipped away
+        const std::uint32_t id = sdfSurface(program, {}, q).objectId;
+        best = PickHit{id, hit->t, selectionForObjectId(prepared.scene, id)};
+        tMax = hit->t;
+    }
+    return best;
 }
 
 std::optional<PickHit> pick(const PreparedScene& prepared, const PickRay& ray) {

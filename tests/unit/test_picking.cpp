@@ -213,3 +213,35 @@ TEST(Picking, SecondInstanceOfTheSameAssetIsNamedByItsIndex) {
     EXPECT_EQ(hit->selection, Selection::mesh(1));
     EXPECT_EQ(hit->objectId, kMeshIdBase + 1);
 }
+
+// A shell marches on its own: picking finds its nodes through their own program and frame, in
+// front of and behind the fullscreen shapes.
+TEST(Picking, ShellsArePickedInTheirOwnFrame) {
+    PreparedScene prepared = makeScene(at({0, 0, -30}));
+    SdfNode& shifted = prepared.scene.sdf->children[2];
+    shifted.transform.scale = glm::vec3(2.0f); // the small sphere: radius 0.6 at x = 3
+    shifted.shell = SdfShell{};
+    Diagnostics diagnostics;
+    std::optional<CompiledSdfScene> split =
+        compileSdfScene(*prepared.scene.sdf, 0, "", diagnostics);
+    ASSERT_TRUE(split) << diagnostics.format();
+    ASSERT_EQ(split->shells.size(), 1u);
+    prepared.sdf = split->main;
+    PreparedShell shell;
+    shell.compiled = split->shells[0];
+    shell.clipMin = glm::vec3(-1.0f);
+    shell.clipMax = glm::vec3(1.0f);
+    prepared.shells.push_back(shell);
+
+    const std::optional<PickHit> small = pick(prepared, rayDownZ(3.0f, 0.0f));
+    ASSERT_TRUE(small);
+    EXPECT_EQ(small->selection, Selection::sdf({2, 0}));
+    EXPECT_NEAR(small->t, 4.4f, 0.01f);
+    // The ball is still the fullscreen pass's.
+    const std::optional<PickHit> ball = pick(prepared, rayDownZ(0.0f, 0.0f));
+    ASSERT_TRUE(ball);
+    EXPECT_EQ(ball->selection, Selection::sdf({0}));
+    // Clipped by the shell's bound: a box that cuts the sphere at y = 0.3 (object 0.15).
+    prepared.shells[0].clipMax.y = 0.15f;
+    EXPECT_FALSE(pick(prepared, rayDownZ(3.0f, 0.5f)));
+}
