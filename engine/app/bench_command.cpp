@@ -3,6 +3,7 @@
 #include "app/commands.hpp"
 #include "app/headless_session.hpp"
 #include "render/readback.hpp"
+#include "sdf/compiler.hpp"
 
 #include <sys/resource.h>
 
@@ -40,9 +41,11 @@ const CommandSpec kSpec = {
     "the median, minimum and maximum of the wall time per frame (glFinish after each) and of\n"
     "each pass's GPU time (timer queries), the time to compile the scene's shaders and the\n"
     "peak resident memory, the SDF march steps per pixel and how many fragments marched in the\n"
-    "fullscreen and the shell pass. With --sdf-strategy all, every strategy runs in turn in the\n"
-    "same process and the ratios of their median frame times to the first are reported; a scene\n"
-    "with shells also runs with every node in the fullscreen pass (--shells both).",
+    "fullscreen and the shell pass, and the primitives evaluated per pixel (one frame of an\n"
+    "instrumented march pass). With --sdf-strategy all, every strategy runs in turn in the same\n"
+    "process, the interpreter also without the bounding hierarchy, and the ratios of their\n"
+    "median frame times to the first are reported; a scene with shells also runs with every\n"
+    "node in the fullscreen pass (--shells both).",
     kOptions, 1};
 
 // Not a strategy: the run of the --sdf-map file.
@@ -52,8 +55,9 @@ constexpr SdfStrategy kHandWritten = SdfStrategy(-1);
 struct StrategyRun {
     std::string name;
     double compileMs = 0.0;
-    double stepsPerPixel = 0.0; // mean SDF march steps per pixel of the last frame
-    MarchStatistics marched;    // fragments that marched in the last frame
+    double stepsPerPixel = 0.0;       // mean SDF march steps per pixel of the last frame
+    MarchStatistics marched;          // fragments that marched in the last frame
+    double evaluationsPerPixel = 0.0; // primitives the march pass evaluated per pixel
     std::vector<double> wall;
     std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
 };
@@ -125,6 +129,7 @@ int runBench(std::span<const std::string> args) {
     }
 
     std::vector<StrategyRun> runs;
+    std::vector<std::pair<std::string, double>> evaluations; // per program: primitives / pixel
     const std::vector<SdfStrategy> strategies =
         all ? std::vector<SdfStrategy>{SdfStrategy::Baked, SdfStrategy::Buffer,
                                        SdfStrategy::Interpreter}
@@ -143,45 +148,98 @@ int runBench(std::span<const std::string> args) {
         handWrittenMap = "#line 1\n" + text.str();
         timed.push_back(kHandWritten);
     }
+    // With every strategy, the interpreter also runs without the bounding hierarchy
+    // (SdfCompileOptions::bounds): the baseline the hierarchy is measured against.
+    std::optional<PreparedScene> unbounded;
+    if (all && session.prepared->scene.sdf) {
+        unbounded = *session.prepared;
+        Diagnostics diagnostics;
+        const SdfNode& root = *unbounded->scene.sdf;
+        const auto materials = std::uint32_t(unbounded->scene.materials.size());
+        const std::string file = unbounded->scene.file.string();
+        std::optional<CompiledSdfScene> compiled =
+            compileSdfScene(root, materials, file, diagnostics, {.bounds = false});
+        if (compiled) unbounded->sdf = std::move(compiled->main);
+    }
+
+    // What runs: each shell mode with each strategy (and the hand-written map), then the
+    // unbounded interpreter. Runs of one program share its evaluation count.
+    struct Variant {
+        std::string name;
+        const PreparedScene* prepared;
+        SdfStrategy strategy;
+        std::string program; // runs with the same program evaluate the same primitives
+    };
+    std::vector<Variant> variants;
     for (const auto& [modeName, prepared] : modes)
         for (SdfStrategy strategy : timed) {
-            StrategyRun run;
-            run.name = (strategy == kHandWritten ? std::string("hand-written")
-                                                 : std::string(sdfStrategyName(effectiveSdfStrategy(
-                                                       prepared->sdf, strategy)))) +
-                       modeName;
-            if (std::any_of(runs.begin(), runs.end(),
-                            [&](const StrategyRun& r) { return r.name == run.name; }))
-                continue; // a scene too large for generated code runs the interpreter only once
-            GpuScene gpuScene = uploadScene(*prepared, strategy);
-            if (strategy == kHandWritten) gpuScene.sdfMap = handWrittenMap;
-            const auto compileStart = std::chrono::steady_clock::now();
+            const std::string base =
+                strategy == kHandWritten
+                    ? std::string("hand-written")
+                    : std::string(sdfStrategyName(effectiveSdfStrategy(prepared->sdf, strategy)));
+            variants.push_back({base + modeName, prepared, strategy,
+                                strategy == kHandWritten ? "hand-written" : modeName});
+        }
+    if (unbounded)
+        variants.push_back(
+            {"interpreter, no bounds", &*unbounded, SdfStrategy::Interpreter, "no bounds"});
+
+    for (const Variant& variant : variants) {
+        const PreparedScene* prepared = variant.prepared;
+        const SdfStrategy strategy = variant.strategy;
+        StrategyRun run;
+        run.name = variant.name;
+        if (std::any_of(runs.begin(), runs.end(),
+                        [&](const StrategyRun& r) { return r.name == run.name; }))
+            continue; // a scene too large for generated code runs the interpreter only once
+        GpuScene gpuScene = uploadScene(*prepared, strategy);
+        if (strategy == kHandWritten) gpuScene.sdfMap = handWrittenMap;
+        const auto compileStart = std::chrono::steady_clock::now();
+        if (!renderer.prepare(gpuScene, error)) {
+            std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
+            return kExitSystem;
+        }
+        run.compileMs = strategy == frame.strategy && runs.empty()
+                            ? session.shaderBuildMs
+                            : millisecondsSince(compileStart);
+        for (int i = 0; i < warmup + frames; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            renderer.render(gpuScene, scene.camera, scene.render, targets);
+            glFinish();
+            const double ms = millisecondsSince(start);
+            if (i < warmup) continue;
+            run.wall.push_back(ms);
+            const PassTimes times = renderer.lastPassTimes();
+            for (std::size_t p = 0; p < times.size(); ++p)
+                run.passes[p].push_back(times[p]);
+        }
+        run.marched = renderer.lastMarchStatistics();
+        const Pixels<float> steps = readMarchSteps(targets);
+        double total = 0.0;
+        for (float n : steps.data)
+            total += n;
+        const double pixels = double(std::max<std::size_t>(steps.data.size(), 1));
+        run.stepsPerPixel = total / pixels;
+        // Primitives evaluated per pixel: one frame of the instrumented march pass, once per
+        // program.
+        const auto counted =
+            std::find_if(evaluations.begin(), evaluations.end(),
+                         [&](const auto& e) { return e.first == variant.program; });
+        if (counted != evaluations.end()) {
+            run.evaluationsPerPixel = counted->second;
+        } else {
+            renderer.setCountEvaluations(true);
             if (!renderer.prepare(gpuScene, error)) {
                 std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
                 return kExitSystem;
             }
-            run.compileMs = strategy == frame.strategy && runs.empty()
-                                ? session.shaderBuildMs
-                                : millisecondsSince(compileStart);
-            for (int i = 0; i < warmup + frames; ++i) {
-                const auto start = std::chrono::steady_clock::now();
-                renderer.render(gpuScene, scene.camera, scene.render, targets);
-                glFinish();
-                const double ms = millisecondsSince(start);
-                if (i < warmup) continue;
-                run.wall.push_back(ms);
-                const PassTimes times = renderer.lastPassTimes();
-                for (std::size_t p = 0; p < times.size(); ++p)
-                    run.passes[p].push_back(times[p]);
-            }
-            run.marched = renderer.lastMarchStatistics();
-            const Pixels<float> steps = readMarchSteps(targets);
-            double total = 0.0;
-            for (float n : steps.data)
-                total += n;
-            run.stepsPerPixel = total / double(std::max<std::size_t>(steps.data.size(), 1));
-            runs.push_back(std::move(run));
+            renderer.render(gpuScene, scene.camera, scene.render, targets);
+            run.evaluationsPerPixel = double(renderer.lastMarchStatistics().evaluations) / pixels;
+            renderer.setCountEvaluations(false);
+            evaluations.emplace_back(variant.program, run.evaluationsPerPixel);
         }
+        runs.push_back(std::move(run));
+    }
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     const double peakMiB = double(usage.ru_maxrss) / 1024.0;
@@ -201,11 +259,13 @@ int runBench(std::span<const std::string> args) {
             std::printf("%s{\"strategy\": \"%s\", \"shader_build_ms\": %.3f, "
                         "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
                         "\"ratio_to_first\": %.3f, \"march_steps_per_pixel\": %.2f, "
+                        "\"evaluations_per_pixel\": %.1f, "
                         "\"marched_fragments\": {\"fullscreen\": %llu, \"shells\": %llu}, "
                         "\"pass_gpu_ms\": {",
                         r ? ", " : "", run.name.c_str(), run.compileMs, wallStats.median,
                         wallStats.min, wallStats.max, wallStats.median / bakedMedian,
-                        run.stepsPerPixel, (unsigned long long)run.marched.fullscreen,
+                        run.stepsPerPixel, run.evaluationsPerPixel,
+                        (unsigned long long)run.marched.fullscreen,
                         (unsigned long long)run.marched.shells);
             for (std::size_t p = 0; p < run.passes.size(); ++p) {
                 const Stats s = stats(run.passes[p]);
@@ -223,9 +283,10 @@ int runBench(std::span<const std::string> args) {
     std::printf("memory    %.1f MiB peak resident\n", peakMiB);
     for (const StrategyRun& run : runs) {
         const Stats wallStats = stats(run.wall);
-        std::printf("\nstrategy  %s: shaders %.1f ms to build, %.1f march steps per pixel, "
-                    "fragments marched: %llu fullscreen + %llu in shells",
-                    run.name.c_str(), run.compileMs, run.stepsPerPixel,
+        std::printf("\nstrategy  %s: shaders %.1f ms to build, %.1f march steps and %.1f "
+                    "primitive evaluations per pixel, fragments marched: %llu fullscreen + %llu "
+                    "in shells",
+                    run.name.c_str(), run.compileMs, run.stepsPerPixel, run.evaluationsPerPixel,
                     (unsigned long long)run.marched.fullscreen,
                     (unsigned long long)run.marched.shells);
         if (runs.size() > 1)

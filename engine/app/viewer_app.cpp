@@ -146,7 +146,10 @@ void Viewer::syncGpuScene() {
     uploadedRevision = document.revision();
     static const FileSource files = editorFileSource();
     Diagnostics diagnostics;
-    std::optional<PreparedScene> next = prepareScene(document.scene(), files, diagnostics);
+    // Without the bounding hierarchy: its order follows where things are, and a drag must
+    // never change the program's structure (the buffer strategy below would recompile).
+    std::optional<PreparedScene> next =
+        prepareScene(document.scene(), files, diagnostics, ShellMode::AsScene, false);
     if (!next) {
         sceneError =
             "The scene does not compile (showing the last one that did):\n" + diagnostics.format();

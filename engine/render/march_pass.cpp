@@ -3,9 +3,13 @@
 
 namespace rmsc {
 
-std::optional<MarchPass> MarchPass::create(const ShaderFiles& files, std::string& error) {
+std::optional<MarchPass> MarchPass::create(const ShaderFiles& files, std::string& error,
+                                           bool countEvaluations) {
     std::optional<gl::Program> program =
-        buildProgram(files, {"passes/fullscreen.vert", "passes/march.frag", ""}, error);
+        buildProgram(files,
+                     {"passes/fullscreen.vert", "passes/march.frag",
+                      countEvaluations ? "#define SDF_COUNT_EVALUATIONS 1\n" : ""},
+                     error);
     if (!program) return std::nullopt;
     MarchPass pass;
     pass.program_ = std::move(*program);

@@ -13,7 +13,10 @@ namespace rmsc {
 
 class MarchPass {
   public:
-    static std::optional<MarchPass> create(const ShaderFiles& files, std::string& error);
+    // `countEvaluations`: the instrumented variant, which adds the primitives each pixel
+    // evaluated to the march statistics (Renderer::lastMarchStatistics).
+    static std::optional<MarchPass> create(const ShaderFiles& files, std::string& error,
+                                           bool countEvaluations = false);
     // Reads `raster`, writes every pixel of `target`. Expects the frame UBO and SSBOs bound.
     void draw(const GBuffer& raster, const GBuffer& target) const;
 

@@ -14,7 +14,7 @@ FrameTargets createFrameTargets(int width, int height) {
 Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow)
     : files_(std::move(files)), post_(std::move(post)), shadow_(std::move(shadow)) {
     frameBuffer_ = gl::createBufferWithData(sizeof(GpuFrame), nullptr);
-    statistics_ = gl::createBufferWithData(2 * sizeof(std::uint32_t), nullptr);
+    statistics_ = gl::createBufferWithData(4 * sizeof(std::uint32_t), nullptr);
     for (gl::Query& timer : timers_)
         timer = gl::createQuery(GL_TIME_ELAPSED);
 }
@@ -50,7 +50,14 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
         std::optional<MarchPass> march = MarchPass::create(files, error);
         if (!march) return false;
         if (sdfPasses_.size() >= kMaxCached) sdfPasses_.clear();
-        sdfPasses_.emplace(scene.sdfMap, SdfPasses{std::move(*raster), std::move(*march)});
+        sdfPasses_.emplace(scene.sdfMap,
+                           SdfPasses{std::move(*raster), std::move(*march), std::nullopt});
+        compiled = true;
+    }
+    SdfPasses& passes = sdfPasses_.find(scene.sdfMap)->second;
+    if (countEvaluations_ && !passes.countingMarch) {
+        passes.countingMarch = MarchPass::create(files, error, true);
+        if (!passes.countingMarch) return false;
         compiled = true;
     }
     for (const GpuShell& shell : scene.shells) {
@@ -95,7 +102,7 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     std::vector<const ShellPass*> shells;
     for (const GpuShell& shell : scene.shells)
         shells.push_back(&shellPasses_.find(shellKey(scene, shell))->second);
-    const std::uint32_t zeros[2] = {0, 0};
+    const std::uint32_t zeros[4] = {0, 0, 0, 0};
     glNamedBufferSubData(statistics_.id(), 0, sizeof zeros, zeros);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchStatisticsBinding, statistics_.id());
 
@@ -107,7 +114,8 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
         for (std::size_t i = 0; i < shells.size(); ++i)
             shells[i]->draw(scene.shells[i], frameCamera.viewProjection, targets.raster);
     });
-    timed(Pass::March, [&] { sdf.march.draw(targets.raster, targets.combined); });
+    const MarchPass& march = countEvaluations_ ? *sdf.countingMarch : sdf.march;
+    timed(Pass::March, [&] { march.draw(targets.raster, targets.combined); });
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
     glBindTextureUnit(kShadowMapUnit, 0);
     glBindTextureUnit(kSkyImageUnit, 0);
@@ -116,9 +124,9 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
 }
 
 MarchStatistics Renderer::lastMarchStatistics() const {
-    std::uint32_t counts[2] = {0, 0};
+    std::uint32_t counts[4] = {0, 0, 0, 0};
     glGetNamedBufferSubData(statistics_.id(), 0, sizeof counts, counts);
-    return {counts[0], counts[1]};
+    return {counts[0], counts[1], counts[2] | (std::uint64_t(counts[3]) << 32)};
 }
 
 PassTimes Renderer::lastPassTimes() const {

@@ -34,6 +34,9 @@ enum class Pass { Raster, March, Post, Shadow, Shell, Count };
 struct MarchStatistics {
     std::uint64_t fullscreen = 0; // the march pass (every pixel may march)
     std::uint64_t shells = 0;     // the shell pass (only the pixels the proxies cover)
+    // Primitives evaluated by the march pass (marching, normal, shading, shadows, AO), when the
+    // renderer counts them (Renderer::setCountEvaluations), else 0.
+    std::uint64_t evaluations = 0;
 };
 
 // GPU milliseconds of each pass in the last frame (timer queries).
@@ -43,6 +46,7 @@ using PassTimes = std::array<double, std::size_t(Pass::Count)>;
 struct SdfPasses {
     RasterPass raster; // marches shadow rays and AO through the SDF
     MarchPass march;
+    std::optional<MarchPass> countingMarch; // the instrumented variant, built when asked for
 };
 
 class Renderer {
@@ -65,16 +69,20 @@ class Renderer {
     PassTimes lastPassTimes() const;
     // Waits for the last frame and returns how many fragments marched.
     MarchStatistics lastMarchStatistics() const;
+    // Draw with the instrumented march pass, which counts the primitives every pixel evaluates
+    // (slower; for benchmarks). Its programs are built and cached beside the normal ones.
+    void setCountEvaluations(bool on) { countEvaluations_ = on; }
 
   private:
     ShaderFiles files_;
     std::map<std::string, SdfPasses, std::less<>> sdfPasses_;   // by map text
     std::map<std::string, ShellPass, std::less<>> shellPasses_; // by scene map + shell map
     double lastCompileMs_ = 0.0;
+    bool countEvaluations_ = false;
     PostPass post_;
     ShadowPass shadow_;
     gl::Buffer frameBuffer_; // GpuFrame uniform block
-    gl::Buffer statistics_;  // two uints: MarchStatistics
+    gl::Buffer statistics_;  // four uints: MarchStatistics (evaluations in two words)
     std::array<gl::Query, std::size_t(Pass::Count)> timers_;
 
     Renderer(ShaderFiles files, PostPass post, ShadowPass shadow);

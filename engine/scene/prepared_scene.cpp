@@ -125,7 +125,8 @@ std::optional<PreparedShell> prepareShell(SdfShellProgram compiled, const FileSo
 } // namespace
 
 std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
-                                          Diagnostics& diagnostics, ShellMode shellMode) {
+                                          Diagnostics& diagnostics, ShellMode shellMode,
+                                          bool sdfBounds) {
     PreparedScene prepared;
     const int errorsBefore = diagnostics.errorCount();
     const std::string sceneFile = scene.file.string();
@@ -159,11 +160,13 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     loadMaterialTextures(prepared.materials, sceneFile, files, diagnostics, prepared.textures);
     if (scene.sdf && shellMode == ShellMode::Fullscreen) {
         std::optional<SdfProgram> program =
-            compileSdf(*scene.sdf, std::uint32_t(scene.materials.size()), sceneFile, diagnostics);
+            compileSdf(*scene.sdf, std::uint32_t(scene.materials.size()), sceneFile, diagnostics,
+                       {.bounds = sdfBounds});
         if (program) prepared.sdf = std::move(*program);
     } else if (scene.sdf) {
-        std::optional<CompiledSdfScene> compiled = compileSdfScene(
-            *scene.sdf, std::uint32_t(scene.materials.size()), sceneFile, diagnostics);
+        std::optional<CompiledSdfScene> compiled =
+            compileSdfScene(*scene.sdf, std::uint32_t(scene.materials.size()), sceneFile,
+                            diagnostics, {.bounds = sdfBounds});
         if (compiled) {
             prepared.sdf = std::move(compiled->main);
             for (SdfShellProgram& shell : compiled->shells) {

@@ -54,9 +54,13 @@ Material defaultMaterial();
 
 // Loads every mesh and compiles the SDF of an already parsed scene. Mesh files are read through
 // `files`; errors name the mesh instance's JSON pointer and the glTF element.
+// `sdfBounds`: compile the bounding hierarchy (SdfCompileOptions::bounds). The editor turns it
+// off: the hierarchy's order follows where parts are, so moving one could change the program's
+// structure and cost a shader compile in the middle of a drag.
 std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
                                           Diagnostics& diagnostics,
-                                          ShellMode shellMode = ShellMode::AsScene);
+                                          ShellMode shellMode = ShellMode::AsScene,
+                                          bool sdfBounds = true);
 
 // scene.lights followed by the lights of the glTF assets placed by their instances; errors at
 // the instance that goes over limits::kLights.

@@ -4,11 +4,14 @@
 // allows it (Sethi-Ullman order).
 #include "sdf/compiler.hpp"
 
+#include "sdf/bounds.hpp"
+
 #include <glm/gtc/matrix_access.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace rmsc {
 namespace {
@@ -21,6 +24,8 @@ struct PlannedNode {
     // The node's local frame to the frame of the current point: world space, or below a node
     // with its own point frame (hasPointFrame), that node's modified local frame.
     glm::dmat4 world{1.0};
+    glm::dmat4 parentWorld{1.0}; // the parent's frame to the frame of the current point
+    double spaceScale = 1.0;     // world units per unit of the current point's frame
     // Shapes: rows of world^-1 and the distance scale (see resolveShape).
     glm::vec4 worldToLocal[3]{};
     float distanceScale = 1.0f;
@@ -234,6 +239,8 @@ class Planner {
         }
         planned.objectId = kSdfIdBase + idBase_ + std::uint32_t(nodePointers_.size());
         nodePointers_.push_back(node.pointer);
+        planned.parentWorld = parentWorld;
+        planned.spaceScale = spaceScale;
         planned.world =
             parentWorld *
             (&node == objectSpaceRoot_ ? glm::dmat4(1.0) : glm::dmat4(node.transform.matrix()));
@@ -639,6 +646,150 @@ void emit(const PlannedNode& planned, std::vector<GpuSdfInstruction>& out) {
     if (planned.hasPointFrame) out.push_back(pointInstruction(SdfOpcode::PopPoint, planned));
 }
 
+// ---- Bounds: a bounding-volume hierarchy over the plain unions at the top of the tree ----
+
+// Fewer parts than this at the top are evaluated as they are: box tests would cost more than
+// they save.
+constexpr std::size_t kMinBoundedParts = 4;
+
+// A part of the top union: a subtree whose value is united into the program's running best.
+struct UnionPart {
+    const PlannedNode* node = nullptr;
+    Aabb box; // in the frame of the current point; empty when unbounded or not exact
+};
+
+// Does `m` scale every direction alike (a rotation times a uniform scale)?
+bool isUniformScale(const glm::dmat4& m) {
+    const glm::dmat3 l(m);
+    const glm::dmat3 a = glm::transpose(l) * l;
+    const double s = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
+    const double tolerance = 1e-6 * s;
+    return std::abs(a[0][0] - s) <= tolerance && std::abs(a[1][1] - s) <= tolerance &&
+           std::abs(a[2][2] - s) <= tolerance && std::abs(a[0][1]) <= tolerance &&
+           std::abs(a[0][2]) <= tolerance && std::abs(a[1][2]) <= tolerance;
+}
+
+// Is the part's value its exact distance outside its box? Then a box at least `best` away
+// proves the part's value is too, and skipping it leaves the result exactly as it was. Exact:
+// shapes with exact formulas (and every profile solid) under uniform scale, united by plain
+// unions; not: modifiers, other operations (their max() is a bound outside), bounds formulas.
+// Parts that are not exact are evaluated at every point, outside the hierarchy.
+bool isExactPart(const PlannedNode& planned) {
+    const SdfNode& node = *planned.node;
+    if (!node.modifiers.empty() || planned.cut) return false;
+    if (!node.isGroup)
+        return (node.profile || primitiveSpec(node.primitive).exact) &&
+               isUniformScale(planned.world);
+    if (node.op != SdfOp::Union) return false;
+    for (const PlannedNode& child : planned.children)
+        if (!isExactPart(child)) return false;
+    return true;
+}
+
+// A group whose children are simply united: every child's value ends up in the minimum.
+bool isPlainUnion(const PlannedNode& planned) {
+    const SdfNode& node = *planned.node;
+    if (!node.isGroup || node.op != SdfOp::Union || planned.hasPointFrame ||
+        !node.modifiers.empty())
+        return false;
+    for (const PlannedNode& child : planned.children)
+        if (child.cut) return false;
+    return true;
+}
+
+// The parts below the plain unions from `planned` down, with their boxes (sdf/bounds.hpp) in
+// the current point's frame.
+void collectParts(const PlannedNode& planned, std::vector<UnionPart>& parts) {
+    if (isPlainUnion(planned)) {
+        for (const PlannedNode& child : planned.children)
+            collectParts(child, parts);
+        return;
+    }
+    // Field units per unit of the parent's frame: the frame's scale to world units.
+    const float fieldScale = float(planned.spaceScale * smallestScaleFactor(planned.parentWorld));
+    const SdfBounds bounds = sdfNodeLocalBounds(*planned.node, fieldScale);
+    UnionPart part{&planned, {}};
+    if (bounds.bounded && !bounds.box.empty() && isExactPart(planned))
+        part.box = transformAabb(bounds.box, glm::mat4(planned.world));
+    parts.push_back(part);
+}
+
+GpuSdfInstruction boundSkip(const Aabb& box, double spaceScale, std::size_t skipped) {
+    GpuSdfInstruction instruction;
+    instruction.opcode = std::uint32_t(SdfOpcode::BoundSkip);
+    instruction.kind = std::uint32_t(skipped);
+    instruction.params[0] = glm::vec4(box.center(), 0.0f);
+    instruction.params[1] = glm::vec4(box.halfSize(), 0.0f);
+    instruction.misc.x = float(spaceScale);
+    return instruction;
+}
+
+GpuSdfInstruction accumulate() {
+    GpuSdfInstruction instruction;
+    instruction.opcode = std::uint32_t(SdfOpcode::Accumulate);
+    return instruction;
+}
+
+// Emits `parts` as a hierarchy: each node's box test skips its subtree when the box is no
+// nearer than the best so far. Split at the median of the boxes' centres along the axis where
+// they spread most (the classic median-split BVH build, e.g. Pharr, Jakob and Humphreys,
+// "Physically Based Rendering", 4th ed., section 7.3).
+void emitHierarchy(std::span<UnionPart> parts, double spaceScale,
+                   std::vector<GpuSdfInstruction>& out) {
+    if (parts.size() == 1) {
+        std::vector<GpuSdfInstruction> body;
+        emit(*parts[0].node, body);
+        body.push_back(accumulate());
+        // One primitive costs about what its box test would: test boxes of larger parts only.
+        if (body.size() > 2) out.push_back(boundSkip(parts[0].box, spaceScale, body.size()));
+        out.insert(out.end(), body.begin(), body.end());
+        return;
+    }
+    Aabb box, centres;
+    for (const UnionPart& part : parts) {
+        box.add(part.box);
+        centres.add(part.box.center());
+    }
+    const glm::vec3 spread = centres.max - centres.min;
+    const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0
+                     : spread.y >= spread.z                       ? 1
+                                                                  : 2;
+    const std::size_t half = parts.size() / 2;
+    std::nth_element(parts.begin(), parts.begin() + std::ptrdiff_t(half), parts.end(),
+                     [axis](const UnionPart& a, const UnionPart& b) {
+                         return a.box.center()[axis] < b.box.center()[axis];
+                     });
+    std::vector<GpuSdfInstruction> body;
+    emitHierarchy(parts.first(half), spaceScale, body);
+    emitHierarchy(parts.subspan(half), spaceScale, body);
+    out.push_back(boundSkip(box, spaceScale, body.size()));
+    out.insert(out.end(), body.begin(), body.end());
+}
+
+// The whole program: the top plain unions through the hierarchy when they have enough exact,
+// bounded parts (the others first, unconditionally: unbounded ones are usually floors, near
+// everything), else the tree as it is.
+void emitProgram(const PlannedNode& root, bool useBounds, std::vector<GpuSdfInstruction>& out) {
+    std::vector<UnionPart> parts;
+    if (useBounds) collectParts(root, parts);
+    const auto boxed = std::count_if(parts.begin(), parts.end(),
+                                     [](const UnionPart& part) { return !part.box.empty(); });
+    if (std::size_t(boxed) < kMinBoundedParts) {
+        emit(root, out);
+        return;
+    }
+    std::vector<UnionPart> bounded;
+    for (const UnionPart& part : parts) {
+        if (!part.box.empty()) {
+            bounded.push_back(part);
+            continue;
+        }
+        emit(*part.node, out);
+        out.push_back(accumulate());
+    }
+    if (!bounded.empty()) emitHierarchy(bounded, root.spaceScale, out);
+}
+
 } // namespace
 
 namespace {
@@ -647,7 +798,7 @@ namespace {
 std::optional<SdfProgram> finishProgram(Planner& planner, const PlannedNode& planned,
                                         const SdfNode& root, SdfProgram program,
                                         const std::string& file, Diagnostics& diagnostics,
-                                        int errorsBefore) {
+                                        int errorsBefore, const SdfCompileOptions& options) {
     if (root.cut && !root.shell) // a cut shell is reported where the shell is found
         diagnostics.error(file, root.pointer,
                           "the root node cannot be \"cut\": it has no siblings to be cut from");
@@ -689,7 +840,12 @@ std::optional<SdfProgram> finishProgram(Planner& planner, const PlannedNode& pla
     if (planned.skipped) return program; // everything is in shells
 
     program.instructions.reserve(std::size_t(planned.instructionCount));
-    emit(planned, program.instructions);
+    emitProgram(planned, options.bounds, program.instructions);
+    if (program.instructions.size() > std::size_t(kSdfMaxInstructions)) {
+        // The hierarchy's box tests do not fit beside the tree: the tree as it is does.
+        program.instructions.clear();
+        emit(planned, program.instructions);
+    }
     program.stackDepth = planned.stackNeed;
     program.pointStackDepth = planned.pointNeed;
     program.data = std::move(planner.data_);
@@ -711,25 +867,27 @@ double sdfFieldShrink(const std::vector<SdfModifier>& modifiers) {
 }
 
 std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,
-                                     const std::string& file, Diagnostics& diagnostics) {
+                                     const std::string& file, Diagnostics& diagnostics,
+                                     const SdfCompileOptions& options) {
     const int errorsBefore = diagnostics.errorCount();
     SdfProgram program;
     Planner planner(file, diagnostics, program.nodePointers);
     const PlannedNode planned = planner.plan(root, glm::dmat4(1.0), 1.0, defaultMaterial);
     return finishProgram(planner, planned, root, std::move(program), file, diagnostics,
-                         errorsBefore);
+                         errorsBefore, options);
 }
 
 std::optional<CompiledSdfScene> compileSdfScene(const SdfNode& root, std::uint32_t defaultMaterial,
-                                                const std::string& file, Diagnostics& diagnostics) {
+                                                const std::string& file, Diagnostics& diagnostics,
+                                                const SdfCompileOptions& options) {
     const int errorsBefore = diagnostics.errorCount();
     CompiledSdfScene compiled;
     SdfProgram program;
     Planner planner(file, diagnostics, program.nodePointers);
     planner.splitShells();
     const PlannedNode planned = planner.plan(root, glm::dmat4(1.0), 1.0, defaultMaterial);
-    std::optional<SdfProgram> main =
-        finishProgram(planner, planned, root, std::move(program), file, diagnostics, errorsBefore);
+    std::optional<SdfProgram> main = finishProgram(planner, planned, root, std::move(program), file,
+                                                   diagnostics, errorsBefore, options);
     if (!main) return std::nullopt;
     compiled.main = std::move(*main);
 
@@ -757,7 +915,7 @@ std::optional<CompiledSdfScene> compileSdfScene(const SdfNode& root, std::uint32
             *site.node, glm::dmat4(1.0), double(shell.distanceScale), site.parentMaterial);
         std::optional<SdfProgram> compiledShell =
             finishProgram(shellPlanner, plannedShell, *site.node, std::move(shellProgram), file,
-                          diagnostics, shellErrorsBefore);
+                          diagnostics, shellErrorsBefore, options);
         if (!compiledShell) continue;
         int leaves = 0;
         for (const GpuSdfInstruction& in : compiledShell->instructions)

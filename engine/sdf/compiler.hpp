@@ -24,10 +24,19 @@ namespace rmsc {
 // compiler converts the node's lengths (distance modifiers, its children's fields) with it.
 double sdfFieldShrink(const std::vector<SdfModifier>& modifiers);
 
+struct SdfCompileOptions {
+    // Bounds: the plain unions at the top of the tree (the root's, and those of groups nested in
+    // it) are emitted as a bounding-volume hierarchy of their exact parts' boxes
+    // (sdf/bounds.hpp), so a point far from a part skips it, and the value stays exactly what it
+    // would be without. Off: the tree as it is, for comparisons.
+    bool bounds = true;
+};
+
 // Shells (SdfNode::shell) are compiled like any other node: this is the program that draws the
 // whole tree in the fullscreen pass.
 std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,
-                                     const std::string& file, Diagnostics& diagnostics);
+                                     const std::string& file, Diagnostics& diagnostics,
+                                     const SdfCompileOptions& options = {});
 
 // The most shapes one shell may hold: its map is always generated code (kMaxGeneratedLeaves).
 constexpr int kMaxShellShapes = 160;
@@ -58,6 +67,7 @@ struct CompiledSdfScene {
     std::vector<SdfShellProgram> shells;
 };
 std::optional<CompiledSdfScene> compileSdfScene(const SdfNode& root, std::uint32_t defaultMaterial,
-                                                const std::string& file, Diagnostics& diagnostics);
+                                                const std::string& file, Diagnostics& diagnostics,
+                                                const SdfCompileOptions& options = {});
 
 } // namespace rmsc

@@ -327,17 +327,35 @@ SdfSurface shapeSurface(const SdfProgram& program, const GpuSdfInstruction& inst
     return s;
 }
 
+// The distance from p to a BoundSkip instruction's box, in world units (sdfBoxDistance in the
+// shader; Inigo Quilez, "Distance functions": sdBox).
+float boundDistance(const GpuSdfInstruction& instruction, glm::vec3 p) {
+    const glm::vec3 q =
+        glm::abs(p - glm::vec3(instruction.params[0])) - glm::vec3(instruction.params[1]);
+    return (glm::length(glm::max(q, 0.0f)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f)) *
+           instruction.misc.x;
+}
+
 } // namespace
 
-float sdfDistance(const SdfProgram& program, glm::vec3 p) {
+float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
     if (program.instructions.empty()) return kSdfFar;
     std::array<float, kSdfMaxStack> stack{};
     int top = 0; // number of entries on the stack
     std::array<glm::vec3, kSdfMaxPointStack> saved{};
     int savedTop = 0;
-    for (const GpuSdfInstruction& instruction : program.instructions) {
-        if (isLeaf(instruction)) {
+    float best = kSdfFar; // what Accumulate unites into
+    const std::vector<GpuSdfInstruction>& code = program.instructions;
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const GpuSdfInstruction& instruction = code[i];
+        if (instruction.opcode == std::uint32_t(SdfOpcode::BoundSkip)) {
+            if (boundDistance(instruction, p) >= best) i += instruction.kind;
+        } else if (instruction.opcode == std::uint32_t(SdfOpcode::Accumulate)) {
+            assert(top >= 1);
+            best = std::min(best, stack[--top]);
+        } else if (isLeaf(instruction)) {
             assert(top < kSdfMaxStack);
+            if (evaluations) ++*evaluations;
             stack[top] = leafDistance(program, instruction, p);
             ++top;
         } else if (pointStep(instruction, p, saved, savedTop)) {
@@ -353,7 +371,7 @@ float sdfDistance(const SdfProgram& program, glm::vec3 p) {
             --top;
         }
     }
-    return stack[0];
+    return top == 0 ? best : stack[0];
 }
 
 SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p) {
@@ -366,8 +384,18 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
     int top = 0;
     std::array<glm::vec3, kSdfMaxPointStack> saved{};
     int savedTop = 0;
-    for (const GpuSdfInstruction& instruction : program.instructions) {
-        if (isLeaf(instruction)) {
+    SdfSurface best; // what Accumulate unites into: the nearest so far
+    best.distance = kSdfFar;
+    const std::vector<GpuSdfInstruction>& code = program.instructions;
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const GpuSdfInstruction& instruction = code[i];
+        if (instruction.opcode == std::uint32_t(SdfOpcode::BoundSkip)) {
+            if (boundDistance(instruction, p) >= best.distance) i += instruction.kind;
+        } else if (instruction.opcode == std::uint32_t(SdfOpcode::Accumulate)) {
+            assert(top >= 1);
+            --top;
+            if (stack[top].distance < best.distance) best = stack[top];
+        } else if (isLeaf(instruction)) {
             assert(top < kSdfMaxStack);
             stack[top] = shapeSurface(program, instruction, materials, p);
             ++top;
@@ -394,7 +422,7 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
             --top;
         }
     }
-    return stack[0];
+    return top == 0 ? best : stack[0];
 }
 
 // Tetrahedron technique (Inigo Quilez, "Normals for an SDF",

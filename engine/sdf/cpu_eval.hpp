@@ -24,7 +24,9 @@ struct SdfSurface {
     glm::vec3 localPoint{0.0f}; // the point in the dominant shape's local frame (triplanar)
 };
 
-float sdfDistance(const SdfProgram& program, glm::vec3 p);
+// `evaluations`, when given, is increased by the number of primitives evaluated (parts a
+// program's bounds skip are not).
+float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations = nullptr);
 // `materials` is indexed by GpuSdfInstruction::material.
 SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p);
 // Normalized gradient by the tetrahedron technique (4 evaluations; Quilez, "normals for an SDF").

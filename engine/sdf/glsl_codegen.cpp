@@ -95,6 +95,15 @@ void emitBody(std::ostream& out, const Operands& ops, bool surface) {
     for (int slot = 0; slot < depth; ++slot)
         out << "    " << slotType << " s" << slot << ";\n";
     if (!surface) out << "    float w;\n";
+    // Programs with bounds unite their parts into `best` and skip parts whose box is no nearer
+    // (SdfOpcode::BoundSkip, Accumulate): each skip becomes an if block.
+    bool accumulates = false;
+    for (const GpuSdfInstruction& in : code)
+        accumulates = accumulates || SdfOpcode(in.opcode) == SdfOpcode::Accumulate;
+    if (accumulates)
+        out << (surface ? "    SdfSurface best = sdfEmptySurface(p0);\n"
+                        : "    float best = SDF_FAR;\n");
+    std::vector<std::size_t> blockEnds; // the last instruction of each open if block
     int top = 0;
     int nextPoint = 1;           // p0 is the argument
     std::vector<int> pointStack; // saved point variables
@@ -105,8 +114,27 @@ void emitBody(std::ostream& out, const Operands& ops, bool surface) {
         const std::string p = "p" + std::to_string(point);
         const std::string kind = std::to_string(in.kind) + "u";
         switch (SdfOpcode(in.opcode)) {
+        case SdfOpcode::BoundSkip:
+            // Read from the buffer, the box tests cost more than they save on llvmpipe
+            // (grid_10: 1.3-1.5x the frame time): the buffer strategy evaluates every part.
+            if (!ops.baked) break;
+            out << "    if (sdfBoxDistance(" << p << ", " << ops.params(i, 0) << ".xyz, "
+                << ops.params(i, 1) << ".xyz, " << ops.scale(i) << ") < best"
+                << (surface ? ".distance" : "") << ") {\n";
+            blockEnds.push_back(i + in.kind);
+            break;
+        case SdfOpcode::Accumulate:
+            if (surface) {
+                out << "    if (" << slot(top - 1)
+                    << ".distance < best.distance) best = " << slot(top - 1) << ";\n";
+            } else {
+                out << "    best = min(best, " << slot(top - 1) << ");\n";
+            }
+            --top;
+            break;
         case SdfOpcode::Shape:
         case SdfOpcode::Profile: {
+            out << "    SDF_COUNT_EVALUATION;\n";
             const std::string q = "q" + std::to_string(i);
             out << "    vec3 " << q << " = " << ops.local(i, p) << ";\n";
             std::string distance;
@@ -161,8 +189,12 @@ void emitBody(std::ostream& out, const Operands& ops, bool surface) {
             --top;
             break;
         }
+        while (!blockEnds.empty() && blockEnds.back() == i) {
+            out << "    }\n";
+            blockEnds.pop_back();
+        }
     }
-    out << "    return s0;\n";
+    out << (accumulates ? "    return best;\n" : "    return s0;\n");
 }
 
 } // namespace

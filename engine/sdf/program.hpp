@@ -32,6 +32,13 @@ enum class SdfOpcode : std::uint32_t {
     PopPoint = 4,         // p = the saved point on top of the point stack (popped)
     DistanceModifier = 5, // top of the value stack changed by `kind` (SdfDistanceModifierKind)
     Profile = 6,          // push the distance of a 2D profile solid (`kind`: SdfProfileType)
+    // Bounds (the compiler's bounding-volume hierarchy over the plain unions at the top of the
+    // tree): the program keeps the union of the finished parts in a running value `best`.
+    BoundSkip = 7,  // skip the next `kind` instructions when the box params[0].xyz (centre),
+                    // params[1].xyz (half extents), in the current point's frame, is at least
+                    // `best` away (box distance times misc.x, world units per unit of the frame)
+    Accumulate = 8, // pop a value and unite it into `best`; a program that accumulates returns
+                    // `best` (its stack ends empty)
 };
 
 // PointModifier parameters:

@@ -16,6 +16,17 @@
 #define SDF_OPCODE_POP_POINT 4u
 #define SDF_OPCODE_DISTANCE_MODIFIER 5u
 #define SDF_OPCODE_PROFILE 6u
+#define SDF_OPCODE_BOUND_SKIP 7u
+#define SDF_OPCODE_ACCUMULATE 8u
+
+// The instrumented variant of the shaders (SDF_COUNT_EVALUATIONS defined, for `rmsc bench`)
+// counts the primitives evaluated by this invocation; otherwise the count compiles to nothing.
+#ifdef SDF_COUNT_EVALUATIONS
+uint sdfEvaluations = 0u;
+#define SDF_COUNT_EVALUATION sdfEvaluations += 1u
+#else
+#define SDF_COUNT_EVALUATION
+#endif
 
 // Must equal kSdfMaxPointStack in engine/sdf/program.hpp; the compiler refuses deeper programs.
 #define SDF_MAX_POINT_STACK 16
@@ -189,6 +200,13 @@ SdfSurface sdfMaterialSurface(float d, uint objectId, uint m, vec3 localPoint) {
         s.roughness = 0.5;
     }
     return s;
+}
+
+// Distance from p to the box around `center` with `halfSize` (Inigo Quilez, "Distance
+// functions": sdBox), times `scale`: a BoundSkip instruction's test.
+float sdfBoxDistance(vec3 p, vec3 center, vec3 halfSize, float scale) {
+    vec3 q = abs(p - center) - halfSize;
+    return (length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0)) * scale;
 }
 
 // The surface where nothing is: no object, default material, infinitely far.

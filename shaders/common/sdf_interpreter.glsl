@@ -20,6 +20,7 @@ vec3 sdfInstructionPoint(uint i, vec3 p) {
 // Distance of the shape or profile instruction i at world point p: the primitive evaluated at
 // the local point, scaled back to world units.
 float sdfLeafDistance(uint i, vec3 p) {
+    SDF_COUNT_EVALUATION;
     vec3 q = sdfInstructionPoint(i, p);
     vec4 a = sdfInstructions[i].params[0];
     vec4 b = sdfInstructions[i].params[1];
@@ -28,6 +29,12 @@ float sdfLeafDistance(uint i, vec3 p) {
     float d = sdfInstructions[i].opcode == SDF_OPCODE_PROFILE ? sdfProfile(kind, q, a, b, c)
                                                              : sdfPrimitive(kind, q, a, b, c);
     return d * sdfInstructions[i].misc.x;
+}
+
+// A BoundSkip instruction's box distance at p.
+float sdfBoundDistance(uint i, vec3 p) {
+    return sdfBoxDistance(p, sdfInstructions[i].params[0].xyz, sdfInstructions[i].params[1].xyz,
+                          sdfInstructions[i].misc.x);
 }
 
 vec3 sdfInstructionPointModifier(uint i, vec3 p) {
@@ -39,7 +46,12 @@ vec3 sdfInstructionPointModifier(uint i, vec3 p) {
 // is handled inline (an array passed to a function would be copied in and out on every call).
 #define SDF_DISTANCE_STEP \
     if (i < count) { \
-        if (sdfIsLeaf(i)) { \
+        if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) { \
+            if (sdfBoundDistance(i, p) >= best) i += sdfInstructions[i].kind; \
+        } else if (sdfInstructions[i].opcode == SDF_OPCODE_ACCUMULATE) { \
+            --top; \
+            best = min(best, stack[top]); \
+        } else if (sdfIsLeaf(i)) { \
             stack[top] = sdfLeafDistance(i, p); \
             ++top; \
         } else if (sdfInstructions[i].opcode == SDF_OPCODE_PUSH_POINT) { \
@@ -73,6 +85,8 @@ float sdfDistance(vec3 p) {
     int top = 0; // number of entries on the stack
     vec3 saved[SDF_MAX_POINT_STACK];
     int savedTop = 0;
+    float best = SDF_FAR; // what SDF_OPCODE_ACCUMULATE unites into
+    stack[0] = SDF_FAR;   // (read only if the program pushes nothing)
     // Eight instructions per loop iteration: Mesa's llvmpipe ends a shader invocation's loops
     // after a budget of iterations shared by every loop (LP_MAX_TGSI_LOOP_ITERATIONS), which
     // large programs would exhaust within a few march steps; unrolling stretches it 8 times.
@@ -80,7 +94,7 @@ float sdfDistance(vec3 p) {
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP
     }
-    return stack[0];
+    return top == 0 ? best : stack[0];
 }
 
 // The same program as sdfDistance, carrying the material and object id (see
@@ -92,8 +106,15 @@ SdfSurface sdfSurface(vec3 p) {
     int top = 0;
     vec3 saved[SDF_MAX_POINT_STACK];
     int savedTop = 0;
+    SdfSurface best = sdfEmptySurface(p); // what SDF_OPCODE_ACCUMULATE unites into
+    stack[0] = best;                      // (read only if the program pushes nothing)
     for (uint i = 0u; i < count; ++i) {
-        if (sdfIsLeaf(i)) {
+        if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) {
+            if (sdfBoundDistance(i, p) >= best.distance) i += sdfInstructions[i].kind;
+        } else if (sdfInstructions[i].opcode == SDF_OPCODE_ACCUMULATE) {
+            --top;
+            if (stack[top].distance < best.distance) best = stack[top];
+        } else if (sdfIsLeaf(i)) {
             stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), sdfInstructions[i].objectId,
                                             sdfInstructions[i].material,
                                             sdfInstructionPoint(i, p));
@@ -116,5 +137,5 @@ SdfSurface sdfSurface(vec3 p) {
             --top;
         }
     }
-    return stack[0];
+    return top == 0 ? best : stack[0];
 }

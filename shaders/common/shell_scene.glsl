@@ -18,11 +18,10 @@ vec3 shellObjectPoint(vec3 worldPoint) {
     return (uWorldToObject * vec4(worldPoint, 1.0)).xyz;
 }
 
-// Distance to the box (Inigo Quilez, "Distance functions": sdBox).
+// Distance to the box, object units.
 float shellClipDistance(vec3 q) {
-    vec3 center = 0.5 * (uShellClipMin + uShellClipMax);
-    vec3 d = abs(q - center) - 0.5 * (uShellClipMax - uShellClipMin);
-    return length(max(d, 0.0)) + min(max(d.x, max(d.y, d.z)), 0.0);
+    return sdfBoxDistance(q, 0.5 * (uShellClipMin + uShellClipMax),
+                          0.5 * (uShellClipMax - uShellClipMin), 1.0);
 }
 
 // The shell's distance at object point q, in world units: its content, intersected with the box

@@ -4,6 +4,9 @@
 #include "gpu_test_support.hpp"
 
 #include "render/readback.hpp"
+#include "sdf/compiler.hpp"
+
+#include <algorithm>
 
 using namespace rmsc;
 using namespace rmsc::test;
@@ -92,4 +95,41 @@ TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
     ASSERT_TRUE(renderer.prepare(restructured, error)) << error;
     EXPECT_EQ(renderer.lastCompileMs(), 0.0);
     expectNoGlErrors();
+}
+
+// The compiler's bounding hierarchy skips far parts without changing the picture: with and
+// without it, the 10-shape bench grid in baked code and the shapes sample (a plane, exact
+// shapes and an ellipsoid, whose bound formula keeps it out of the hierarchy) through the
+// interpreter.
+TEST(SdfStrategies, BoundsDoNotChangeTheImage) {
+    const std::pair<const char*, SdfStrategy> cases[] = {
+        {"samples/bench/grid_10.json", SdfStrategy::Baked},
+        {"samples/scenes/shapes.json", SdfStrategy::Interpreter}};
+    for (const auto& [path, strategy] : cases) {
+        SCOPED_TRACE(path);
+        const PreparedScene bounded = openRepositoryScene(path);
+        ASSERT_TRUE(std::any_of(bounded.sdf.instructions.begin(), bounded.sdf.instructions.end(),
+                                [](const GpuSdfInstruction& in) {
+                                    return SdfOpcode(in.opcode) == SdfOpcode::BoundSkip;
+                                }))
+            << "the scene should compile with box tests";
+        PreparedScene plain = bounded;
+        Diagnostics diagnostics;
+        std::optional<SdfProgram> program =
+            compileSdf(*plain.scene.sdf, std::uint32_t(plain.scene.materials.size()), path,
+                       diagnostics, {.bounds = false});
+        ASSERT_TRUE(program) << diagnostics.format();
+        plain.sdf = std::move(*program);
+        const int width = 160, height = 96;
+        const FrameTargets a = renderPrepared(bounded, width, height, nullptr, strategy);
+        const FrameTargets b = renderPrepared(plain, width, height, nullptr, strategy);
+        const std::string name = std::filesystem::path(path).stem().string();
+        EXPECT_TRUE(
+            imagesMatch(readDisplayColor(a), readDisplayColor(b), "bounds_" + name, {2, 0.002}));
+        const Pixels<std::uint32_t> idsA = readObjectIds(a), idsB = readObjectIds(b);
+        int differing = 0;
+        for (std::size_t i = 0; i < idsA.data.size(); ++i)
+            differing += idsA.data[i] != idsB.data[i];
+        EXPECT_LE(differing, int(idsA.data.size() / 200));
+    }
 }

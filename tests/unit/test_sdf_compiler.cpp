@@ -37,9 +37,12 @@ SdfNode group(SdfOp op, std::vector<SdfNode> children, float smoothness = 0.0f,
     return node;
 }
 
+// The tree as it is, without the bounding hierarchy (tested in test_sdf_bounds_program.cpp), so
+// the tests can check its exact layout.
 SdfProgram compileOrFail(const SdfNode& root, std::uint32_t defaultMaterial = 0) {
     Diagnostics diagnostics;
-    std::optional<SdfProgram> program = compileSdf(root, defaultMaterial, "test.json", diagnostics);
+    std::optional<SdfProgram> program =
+        compileSdf(root, defaultMaterial, "test.json", diagnostics, {.bounds = false});
     EXPECT_TRUE(program.has_value()) << diagnostics.format();
     return program ? *program : SdfProgram{};
 }
