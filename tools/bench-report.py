@@ -64,16 +64,32 @@ def main():
         results[scene] = by_name
         first = result["strategies"][0]["frame_ms"]["median"]
         for s in result["strategies"]:
-            rows.append("| %s | %s | %.1f | %.1f | %.1f | %.0f | %.2fx |" % (
+            rows.append("| %s | %s | %.1f | %.1f | %.1f | %.0f | %.0f | %.2fx |" % (
                 label, s["strategy"], s["frame_ms"]["median"],
                 s["pass_gpu_ms"]["march"]["median"], s["march_steps_per_pixel"],
-                s["shader_build_ms"], s["frame_ms"]["median"] / first))
+                s.get("evaluations_per_pixel", 0.0), s["shader_build_ms"],
+                s["frame_ms"]["median"] / first))
 
-    def ratio(scene, a, b):
+    def ratio(scene, a, b, key="frame_ms"):
         runs = results.get(scene, {})
         if a in runs and b in runs:
-            return "%.2fx" % (runs[a]["frame_ms"]["median"] / runs[b]["frame_ms"]["median"])
+            value = lambda run: run[key]["median"] if key == "frame_ms" else run[key]
+            return "%.2fx" % (value(runs[a]) / value(runs[b]))
         return "not measured"
+
+    def evaluations(scene):
+        runs = results.get(scene, {})
+        return runs["baked"]["evaluations_per_pixel"] if "baked" in runs else None
+
+    growth = "not measured"
+    e10, e1000 = evaluations("samples/bench/grid_10.json"), evaluations(
+        "samples/bench/grid_1000.json")
+    if "samples/bench/grid_1000.json" in results:
+        e1000 = results["samples/bench/grid_1000.json"].get("interpreter", {}).get(
+            "evaluations_per_pixel", e1000)
+    if e10 and e1000:
+        growth = "%.0f -> %.0f per pixel: %.1fx for 100x the primitives (logarithmic would be 3x)" % (
+            e10, e1000, e1000 / e10)
 
     lines = [
         "# Performance",
@@ -92,9 +108,14 @@ def main():
         "interpreter: generated code costs compile time in proportion to the scene on llvmpipe. "
         "`hand-written` is a shader in `bench/` written for that one scene, the yardstick.",
         "",
-        "| scene | strategy | ms / frame | march pass, GPU ms | march steps / pixel | shader build ms "
-        "| vs. first row |",
-        "|---|---|---|---|---|---|---|",
+        "`interpreter, no bounds` is the interpreter on the tree without the bounding hierarchy "
+        "(the baseline for bounds). Primitive evaluations per pixel come from one frame of an "
+        "instrumented march pass: every primitive evaluated for the pixel's march, normal, "
+        "shading, soft shadows and AO.",
+        "",
+        "| scene | strategy | ms / frame | march pass, GPU ms | march steps / pixel "
+        "| primitive evaluations / pixel | shader build ms | vs. first row |",
+        "|---|---|---|---|---|---|---|---|",
     ] + rows + [
         "",
         "## Targets",
@@ -111,10 +132,12 @@ def main():
         % ratio("samples/scenes/pawn.json", "baked", "hand-written"),
         "| interpreter vs. baked (100 primitives) | %s |"
         % ratio("samples/bench/grid_100.json", "interpreter", "baked"),
-        "",
-        "Not measured yet: SDF evaluations per pixel beyond the march steps (normals, shadows and "
-        "AO add to them) and bounding volumes per subtree for large unions (the 1,000-primitive scene "
-        "runs the interpreter without them).",
+        "| 1,000 primitives: interpreter without bounds vs. with (target: at least 20x) | %s |"
+        % ratio("samples/bench/grid_1000.json", "interpreter, no bounds", "interpreter"),
+        "| 1,000 primitives: evaluations without bounds vs. with | %s |"
+        % ratio("samples/bench/grid_1000.json", "interpreter, no bounds", "interpreter",
+                "evaluations_per_pixel"),
+        "| evaluations per pixel from 10 to 1,000 primitives | %s |" % growth,
         "",
     ]
     with open(args.output, "w") as out:
