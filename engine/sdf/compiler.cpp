@@ -724,6 +724,17 @@ GpuSdfInstruction boundSkip(const Aabb& box, double spaceScale, std::size_t skip
     return instruction;
 }
 
+GpuSdfInstruction seedBest(const Aabb& a, const Aabb& b, double spaceScale) {
+    GpuSdfInstruction instruction;
+    instruction.opcode = std::uint32_t(SdfOpcode::SeedBest);
+    const glm::vec3 ca = a.center(), ha = a.halfSize(), cb = b.center(), hb = b.halfSize();
+    instruction.params[0] = glm::vec4(ca, ha.x);
+    instruction.params[1] = glm::vec4(ha.y, ha.z, cb.x, cb.y);
+    instruction.params[2] = glm::vec4(cb.z, hb);
+    instruction.misc.x = float(spaceScale);
+    return instruction;
+}
+
 GpuSdfInstruction accumulate() {
     GpuSdfInstruction instruction;
     instruction.opcode = std::uint32_t(SdfOpcode::Accumulate);
@@ -759,7 +770,13 @@ void emitHierarchy(std::span<UnionPart> parts, double spaceScale,
                      [axis](const UnionPart& a, const UnionPart& b) {
                          return a.box.center()[axis] < b.box.center()[axis];
                      });
+    Aabb first, second;
+    for (const UnionPart& part : parts.first(half))
+        first.add(part.box);
+    for (const UnionPart& part : parts.subspan(half))
+        second.add(part.box);
     std::vector<GpuSdfInstruction> body;
+    body.push_back(seedBest(first, second, spaceScale));
     emitHierarchy(parts.first(half), spaceScale, body);
     emitHierarchy(parts.subspan(half), spaceScale, body);
     out.push_back(boundSkip(box, spaceScale, body.size()));
@@ -906,6 +923,10 @@ std::optional<CompiledSdfScene> compileSdfScene(const SdfNode& root, std::uint32
             diagnostics.error(file, site.node->pointer,
                               "the shell's transform (with its groups') cannot be inverted; is "
                               "a scale 0?");
+        // The hierarchy's exactness needs the world distance to be the object distance times
+        // one scale: a shell stretched unevenly gets none.
+        SdfCompileOptions shellOptions = options;
+        shellOptions.bounds = options.bounds && isUniformScale(objectToWorld);
         SdfProgram shellProgram;
         Planner shellPlanner(file, diagnostics, shellProgram.nodePointers);
         shellPlanner.planInObjectSpace(*site.node, site.idBase);
@@ -915,7 +936,7 @@ std::optional<CompiledSdfScene> compileSdfScene(const SdfNode& root, std::uint32
             *site.node, glm::dmat4(1.0), double(shell.distanceScale), site.parentMaterial);
         std::optional<SdfProgram> compiledShell =
             finishProgram(shellPlanner, plannedShell, *site.node, std::move(shellProgram), file,
-                          diagnostics, shellErrorsBefore, options);
+                          diagnostics, shellErrorsBefore, shellOptions);
         if (!compiledShell) continue;
         int leaves = 0;
         for (const GpuSdfInstruction& in : compiledShell->instructions)

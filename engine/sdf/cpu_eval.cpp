@@ -336,6 +336,14 @@ float boundDistance(const GpuSdfInstruction& instruction, glm::vec3 p) {
            instruction.misc.x;
 }
 
+// SeedBest: the nearer of the two boxes' farthest points (sdfSeedDistance in the shader).
+float seedDistance(const GpuSdfInstruction& in, glm::vec3 p) {
+    const glm::vec3 ca(in.params[0]), ha(in.params[0].w, in.params[1].x, in.params[1].y);
+    const glm::vec3 cb(in.params[1].z, in.params[1].w, in.params[2].x), hb(in.params[2]);
+    return std::min(glm::length(glm::abs(p - ca) + ha), glm::length(glm::abs(p - cb) + hb)) *
+           in.misc.x;
+}
+
 } // namespace
 
 float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
@@ -349,7 +357,12 @@ float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
     for (std::size_t i = 0; i < code.size(); ++i) {
         const GpuSdfInstruction& instruction = code[i];
         if (instruction.opcode == std::uint32_t(SdfOpcode::BoundSkip)) {
+            // A box no nearer than the best so far cannot hold a nearer part; one that is
+            // nearer bounds the result from above by its farthest point, which lets its
+            // siblings be skipped sooner (the value stays exact: see SdfCompileOptions).
             if (boundDistance(instruction, p) >= best) i += instruction.kind;
+        } else if (instruction.opcode == std::uint32_t(SdfOpcode::SeedBest)) {
+            best = std::min(best, seedDistance(instruction, p));
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::Accumulate)) {
             assert(top >= 1);
             best = std::min(best, stack[--top]);
@@ -391,6 +404,8 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
         const GpuSdfInstruction& instruction = code[i];
         if (instruction.opcode == std::uint32_t(SdfOpcode::BoundSkip)) {
             if (boundDistance(instruction, p) >= best.distance) i += instruction.kind;
+        } else if (instruction.opcode == std::uint32_t(SdfOpcode::SeedBest)) {
+            // Surfaces are not seeded: `best` must be a part's surface.
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::Accumulate)) {
             assert(top >= 1);
             --top;

@@ -123,6 +123,12 @@ void emitBody(std::ostream& out, const Operands& ops, bool surface) {
                 << (surface ? ".distance" : "") << ") {\n";
             blockEnds.push_back(i + in.kind);
             break;
+        case SdfOpcode::SeedBest:
+            // Distances only (a surface must come from a part), and only with the box tests.
+            if (surface || !ops.baked) break;
+            out << "    best = min(best, sdfSeedDistance(" << p << ", " << ops.params(i, 0) << ", "
+                << ops.params(i, 1) << ", " << ops.params(i, 2) << ", " << ops.scale(i) << "));\n";
+            break;
         case SdfOpcode::Accumulate:
             if (surface) {
                 out << "    if (" << slot(top - 1)

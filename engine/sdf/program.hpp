@@ -39,6 +39,12 @@ enum class SdfOpcode : std::uint32_t {
                     // `best` away (box distance times misc.x, world units per unit of the frame)
     Accumulate = 8, // pop a value and unite it into `best`; a program that accumulates returns
                     // `best` (its stack ends empty)
+    // Distances only: best = min(best, the distance to the farthest point of either of two
+    // boxes), each holding surface of the parts it bounds, so the result is at most that. Boxes
+    // packed (centre a, half a, centre b, half b) in params[0..2], scale in misc.x. Emitted
+    // before a hierarchy node's two children, so the nearer child tightens `best` before the
+    // farther one is tested (a static stand-in for visiting the nearer child first).
+    SeedBest = 9,
 };
 
 // PointModifier parameters:

@@ -18,6 +18,7 @@
 #define SDF_OPCODE_PROFILE 6u
 #define SDF_OPCODE_BOUND_SKIP 7u
 #define SDF_OPCODE_ACCUMULATE 8u
+#define SDF_OPCODE_SEED_BEST 9u
 
 // The instrumented variant of the shaders (SDF_COUNT_EVALUATIONS defined, for `rmsc bench`)
 // counts the primitives evaluated by this invocation; otherwise the count compiles to nothing.
@@ -207,6 +208,14 @@ SdfSurface sdfMaterialSurface(float d, uint objectId, uint m, vec3 localPoint) {
 float sdfBoxDistance(vec3 p, vec3 center, vec3 halfSize, float scale) {
     vec3 q = abs(p - center) - halfSize;
     return (length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0)) * scale;
+}
+
+// SeedBest's bound: the distance to the farthest point of the nearer of two boxes (centre a,
+// half a, centre b, half b packed in a, b, c), times `scale`.
+float sdfSeedDistance(vec3 p, vec4 a, vec4 b, vec4 c, float scale) {
+    float toA = length(abs(p - a.xyz) + vec3(a.w, b.xy));
+    float toB = length(abs(p - vec3(b.zw, c.x)) + c.yzw);
+    return min(toA, toB) * scale;
 }
 
 // The surface where nothing is: no object, default material, infinitely far.

@@ -48,6 +48,11 @@ vec3 sdfInstructionPointModifier(uint i, vec3 p) {
     if (i < count) { \
         if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) { \
             if (sdfBoundDistance(i, p) >= best) i += sdfInstructions[i].kind; \
+        } else if (sdfInstructions[i].opcode == SDF_OPCODE_SEED_BEST) { \
+            best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
+                                             sdfInstructions[i].params[1], \
+                                             sdfInstructions[i].params[2], \
+                                             sdfInstructions[i].misc.x)); \
         } else if (sdfInstructions[i].opcode == SDF_OPCODE_ACCUMULATE) { \
             --top; \
             best = min(best, stack[top]); \
@@ -111,6 +116,8 @@ SdfSurface sdfSurface(vec3 p) {
     for (uint i = 0u; i < count; ++i) {
         if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) {
             if (sdfBoundDistance(i, p) >= best.distance) i += sdfInstructions[i].kind;
+        } else if (sdfInstructions[i].opcode == SDF_OPCODE_SEED_BEST) {
+            // Surfaces are not seeded: `best` must be a part's surface.
         } else if (sdfInstructions[i].opcode == SDF_OPCODE_ACCUMULATE) {
             --top;
             if (stack[top].distance < best.distance) best = stack[top];

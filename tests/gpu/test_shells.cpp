@@ -230,6 +230,7 @@ TEST(Shells, LitSideOfAShellIsNotDarkenedByItsOwnShadows) {
         }
     EXPECT_GT(shellPixels, width * height / 4) << "the column should fill much of the view";
     EXPECT_LE(differing, shellPixels / 250) << differing << " of " << shellPixels;
-    if (differing > shellPixels / 250)
+    if (differing > shellPixels / 250) {
         EXPECT_TRUE(imagesMatch(colourA, colourB, "shells_self_shadow", {12, 0.004}));
+    }
 }

@@ -111,8 +111,7 @@ TEST(SdfBoundsProgram, LowerBoundPartsStaySafeAndRaysHitTheSameSurfaces) {
 
 // The point of the hierarchy: far parts are not evaluated. In a 1,000-shape grid a point
 // evaluates a few tens of shapes, not 1,000, and 37 times the shapes of a 27-shape grid cost
-// far fewer than 37 times the evaluations (measured: about 6 times; the first path down the
-// hierarchy is taken before any distance is known, which keeps it from logarithmic).
+// a few times the evaluations (measured: 26.5 against 8.2; without SeedBest, 48 against 8.2).
 TEST(SdfBoundsProgram, FarPartsAreSkipped) {
     const Programs big = compileBoth(grid(10));
     const Programs small = compileBoth(grid(3));
@@ -129,8 +128,8 @@ TEST(SdfBoundsProgram, FarPartsAreSkipped) {
     const double bigPlain = averageEvaluations(big.plain, 5.0f);
     const double smallBounded = averageEvaluations(small.bounded, 1.5f);
     EXPECT_EQ(bigPlain, 1000.0);
-    EXPECT_LT(bigBounded, 60.0) << "the hierarchy should skip almost every shape";
-    EXPECT_LT(bigBounded, 8.0 * smallBounded) << "37x the shapes, evaluations grow slowly";
+    EXPECT_LT(bigBounded, 35.0) << "the hierarchy should skip almost every shape";
+    EXPECT_LT(bigBounded, 4.5 * smallBounded) << "37x the shapes, evaluations grow slowly";
 }
 
 TEST(SdfBoundsProgram, FewPartsAndNonUnionRootsCompileAsTheyAre) {
