@@ -1,6 +1,8 @@
 // Camera matrices and the frustum-corner matrix.
 #include "render/frame.hpp"
 
+#include "sdf/cpu_eval.hpp"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -48,8 +50,8 @@ GpuFrame packFrame(const FrameCamera& camera, const RenderSettings& settings, in
     frame.cameraForward = glm::vec4(camera.forward, camera.farPlane);
     frame.background = glm::vec4(settings.background, settings.exposure);
     frame.ambient = glm::vec4(settings.ambient, 0.0f);
-    frame.march =
-        glm::vec4(float(settings.maxSteps), settings.maxDistance, settings.surfaceEpsilon, 0.0f);
+    frame.march = glm::vec4(float(settings.maxSteps), settings.maxDistance, settings.surfaceEpsilon,
+                            kSdfMarchRelaxation);
     frame.viewport = glm::vec4(float(width), float(height), 0.0f, 0.0f);
     const ShadowSettings& shadows = settings.shadows;
     frame.shadow =

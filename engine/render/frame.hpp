@@ -38,7 +38,8 @@ struct GpuFrame {
     glm::vec4 cameraForward;  // xyz, w = far plane
     glm::vec4 background;     // rgb = background colour, a = exposure
     glm::vec4 ambient;        // rgb = ambient light
-    glm::vec4 march;          // x = max steps, y = max distance, z = surface epsilon
+    glm::vec4 march;          // x = max steps, y = max distance, z = surface epsilon,
+                              // w = march relaxation (kSdfMarchRelaxation)
     glm::vec4 viewport;       // x = width, y = height
     glm::vec4 sky;            // x = SkyType, y = intensity, z = image's top mip level, w = rotation
     glm::vec4 skyZenith;      // rgb = constant colour or gradient zenith

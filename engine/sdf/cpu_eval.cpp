@@ -454,27 +454,84 @@ glm::vec3 sdfNormal(const SdfProgram& program, glm::vec3 p, float h) {
     return len > 0.0f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-// Sphere tracing (Hart 1996, "Sphere tracing"), as sdfMarch in the shader.
-std::optional<SdfHit> sdfCastRay(const SdfProgram& program, const RenderSettings& settings,
-                                 glm::vec3 origin, glm::vec3 direction, float tMin, float tMax) {
-    if (program.instructions.empty()) return std::nullopt;
-    const float len = glm::length(direction);
-    if (!(len > 0.0f)) return std::nullopt;
-    const glm::vec3 rd = direction / len;
+namespace {
+
+// Over-relaxed sphere tracing (Keinert, Schäfer, Korndörfer, Ganse and Stamminger, "Enhanced
+// Sphere Tracing", Eurographics 2014 short papers, section 3.1) on top of sphere tracing (Hart
+// 1996, "Sphere tracing"), as sdfMarch in shaders/common/sdf_scene.glsl: `distanceAt(t)` is
+// the distance at the ray's point t. Steps by relaxation * d. A point's distance d is the
+// radius of a ball that holds no surface, so a relaxed step is safe while the balls of the
+// previous point and of the new one overlap (previous d + d >= step). When they do not, the
+// march goes back to the previous point and takes the plain step from there (the paper's
+// fallback). The paper then stays at relaxation 1 for the rest of the ray; here it relaxes
+// again once the distance grows, the ray moving away from what stopped it (more rays pass
+// near a shape than end on it: that measured fewer steps on the benchmark scenes). d is signed
+// and the previous one positive, so a step that ended inside a surface fails too. Hits are
+// only taken at points reached safely. A relaxed step that would pass tMax is taken plain, so
+// no surface before tMax is skipped.
+struct MarchResult {
+    bool hit = false;
+    float t = 0.0f;
+    int steps = 0; // evaluations, hit or not
+};
+
+template <typename DistanceAt>
+MarchResult relaxedMarch(DistanceAt distanceAt, int maxSteps, float epsilon, float relaxation,
+                         float tMin, float tMax) {
     float t = tMin;
-    for (int i = 0; i < settings.maxSteps; ++i) {
-        if (t > tMax) return std::nullopt;
-        const glm::vec3 position = origin + rd * t;
-        const float d = sdfDistance(program, position);
-        if (d < settings.surfaceEpsilon * std::max(t, 1.0f)) return SdfHit{t, position, i + 1};
-        t += d;
+    float previousT = tMin;
+    float previousDistance = 0.0f; // at previousT
+    float stepLength = 0.0f;       // from previousT to t
+    float omega = relaxation;      // 1 after a fallback, until the distance grows again
+    for (int i = 0; i < maxSteps; ++i) {
+        if (t > tMax) return {false, t, i};
+        const float d = distanceAt(t);
+        if (stepLength > previousDistance && previousDistance + d < stepLength) {
+            t = previousT + previousDistance; // back, then the plain step from there
+            stepLength = previousDistance;
+            omega = 1.0f;
+            continue;
+        }
+        if (d < epsilon * std::max(t, 1.0f)) return {true, t, i + 1};
+        if (d > previousDistance) omega = relaxation; // moving away from what stopped it
+        stepLength = t + omega * d > tMax ? d : omega * d;
+        previousT = t;
+        previousDistance = d;
+        t += stepLength;
     }
-    return std::nullopt;
+    return {false, t, maxSteps};
+}
+
+// The march of sdfCastRay along the normalized direction.
+MarchResult castRay(const SdfProgram& program, const RenderSettings& settings, glm::vec3 origin,
+                    glm::vec3 direction, float tMin, float tMax, float relaxation) {
+    if (program.instructions.empty()) return {};
+    const float len = glm::length(direction);
+    if (!(len > 0.0f)) return {};
+    const glm::vec3 rd = direction / len;
+    return relaxedMarch([&](float t) { return sdfDistance(program, origin + rd * t); },
+                        settings.maxSteps, settings.surfaceEpsilon, relaxation, tMin, tMax);
+}
+
+} // namespace
+
+std::optional<SdfHit> sdfCastRay(const SdfProgram& program, const RenderSettings& settings,
+                                 glm::vec3 origin, glm::vec3 direction, float tMin, float tMax,
+                                 float relaxation) {
+    const MarchResult march = castRay(program, settings, origin, direction, tMin, tMax, relaxation);
+    if (!march.hit) return std::nullopt;
+    return SdfHit{march.t, origin + glm::normalize(direction) * march.t, march.steps};
+}
+
+int sdfMarchSteps(const SdfProgram& program, const RenderSettings& settings, glm::vec3 origin,
+                  glm::vec3 direction, float tMin, float tMax, float relaxation) {
+    return castRay(program, settings, origin, direction, tMin, tMax, relaxation).steps;
 }
 
 std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::mat4& worldToFrame,
                                         const RenderSettings& settings, glm::vec3 origin,
-                                        glm::vec3 direction, float tMin, float tMax) {
+                                        glm::vec3 direction, float tMin, float tMax,
+                                        float relaxation) {
     if (program.instructions.empty()) return std::nullopt;
     const float len = glm::length(direction);
     if (!(len > 0.0f)) return std::nullopt;
@@ -482,15 +539,11 @@ std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::ma
     // The frame's ray keeps the world ray's t: its direction is mapped, not normalized.
     const glm::vec3 o = glm::vec3(worldToFrame * glm::vec4(origin, 1.0f));
     const glm::vec3 d = glm::mat3(worldToFrame) * rd;
-    float t = tMin;
-    for (int i = 0; i < settings.maxSteps; ++i) {
-        if (t > tMax) return std::nullopt;
-        const float h = sdfDistance(program, o + d * t);
-        if (h < settings.surfaceEpsilon * std::max(t, 1.0f))
-            return SdfHit{t, origin + rd * t, i + 1};
-        t += h;
-    }
-    return std::nullopt;
+    const MarchResult march =
+        relaxedMarch([&](float t) { return sdfDistance(program, o + d * t); }, settings.maxSteps,
+                     settings.surfaceEpsilon, relaxation, tMin, tMax);
+    if (!march.hit) return std::nullopt;
+    return SdfHit{march.t, origin + rd * march.t, march.steps};
 }
 
 } // namespace rmsc

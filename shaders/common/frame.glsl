@@ -7,7 +7,8 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec4 cameraForward;  // xyz, w = far plane
     vec4 background;     // rgb = background, a = exposure
     vec4 ambient;        // rgb = ambient light
-    vec4 march;          // x = max steps, y = max distance, z = surface epsilon
+    vec4 march;          // x = max steps, y = max distance, z = surface epsilon,
+                         // w = over-relaxation of the march steps
     vec4 viewport;       // x = width, y = height
     vec4 sky;            // x = sky type (0 none, 1 constant, 2 gradient, 3 image), y = intensity,
                          // z = image sky's highest mip level, w = image rotation (radians)

@@ -26,20 +26,44 @@ vec3 sdfNormal(vec3 p, float h) {
     return len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
 }
 
-// Sphere tracing (Hart 1996, "Sphere tracing"): from t = tMin along the normalized rd, step by
-// the distance; a hit when the distance falls below epsilon * max(t, 1). Gives up after
-// maxSteps steps or when t passes tMax. An empty program never hits.
-bool sdfMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float epsilon, out float t,
-              out int steps) {
+// Over-relaxed sphere tracing (Keinert, Schäfer, Korndörfer, Ganse and Stamminger, "Enhanced
+// Sphere Tracing", Eurographics 2014 short papers, section 3.1) on top of sphere tracing (Hart
+// 1996, "Sphere tracing"): from t = tMin along the normalized rd, step by relaxation * d. A
+// point's distance d is the radius of a ball holding no surface, so a relaxed step is safe
+// while the balls of the previous and the new point overlap (previous d + d >= step); when they
+// do not, go back to the previous point and take the plain step from there (the paper's
+// fallback). The paper then stays at relaxation 1 for the rest of the ray; here it relaxes again
+// once the distance grows, the ray moving away from what stopped it (more rays pass near a shape
+// than end on it: that measured fewer steps on the benchmark scenes). d is signed and the
+// previous one positive, so a step that ended inside a surface fails too. A hit is a point
+// reached safely where d < epsilon * max(t, 1). A relaxed step that would pass tMax is taken
+// plain. Gives up after maxSteps evaluations or when t passes tMax. An empty program never hits.
+// engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU.
+bool sdfMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float epsilon,
+              float relaxation, out float t, out int steps) {
     t = tMin;
     steps = 0;
     if (sdfSceneEmpty()) return false;
+    float previousT = tMin;
+    float previousDistance = 0.0; // at previousT
+    float stepLength = 0.0;       // from previousT to t
+    float omega = relaxation; // 1 after a fallback, until the distance grows again
     for (int i = 0; i < maxSteps; ++i) {
         if (t > tMax) return false;
         float d = sdfDistance(ro + rd * t);
         steps = i + 1;
+        if (stepLength > previousDistance && previousDistance + d < stepLength) {
+            t = previousT + previousDistance; // back, then the plain step from there
+            stepLength = previousDistance;
+            omega = 1.0;
+            continue;
+        }
         if (d < epsilon * max(t, 1.0)) return true;
-        t += d;
+        if (d > previousDistance) omega = relaxation; // moving away from what stopped it
+        stepLength = t + omega * d > tMax ? d : omega * d;
+        previousT = t;
+        previousDistance = d;
+        t += stepLength;
     }
     return false;
 }

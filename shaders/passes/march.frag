@@ -35,7 +35,7 @@ void main() {
     float t;
     int steps = 0;
     if (tMin < tMax &&
-        sdfMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, t, steps)) {
+        sdfMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, frame.march.w, t, steps)) {
         countMarchedFragment(steps, 0);
         vec3 p = ro + rd * t;
         SdfSurface surface = sdfSurface(p);

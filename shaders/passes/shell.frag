@@ -30,8 +30,8 @@ void main() {
     float tMax = min(tExit, frame.march.y);
     float t;
     int steps = 0;
-    bool hit = tMin < tMax &&
-               shellMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, t, steps);
+    bool hit = tMin < tMax && shellMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z,
+                                         frame.march.w, t, steps);
     countMarchedFragment(steps, 1);
     if (!hit) discard;
 

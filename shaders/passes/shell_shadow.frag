@@ -24,7 +24,8 @@ void main() {
     if (!shellClipRange(ro, rd, tEnter, tExit)) discard;
     float t;
     int steps;
-    if (!shellMarch(ro, rd, max(tEnter, 0.0), tExit, int(frame.march.x), frame.march.z, t, steps))
+    if (!shellMarch(ro, rd, max(tEnter, 0.0), tExit, int(frame.march.x), frame.march.z,
+                    frame.march.w, t, steps))
         discard;
     // The march stops within epsilon * t of the surface, which from a light far away is more
     // than a shadow-map texel: a few more (safe) sphere-tracing steps close the gap, so the

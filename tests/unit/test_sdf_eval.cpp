@@ -156,13 +156,14 @@ TEST(SdfEval, CastRayMisses) {
     EXPECT_FALSE(sdfCastRay(ball, settings, {0, 0, 0}, {0, 0, 1}, 0.0f, 100.0f));
 }
 
-// A plane hit head-on takes exactly two steps: the first evaluation returns the full distance,
-// the second lands on the surface.
+// Plain sphere tracing (relaxation 1) hits a plane head-on in exactly two steps: the first
+// evaluation returns the full distance, the second lands on the surface. (The relaxed march
+// takes one more: test_sdf_relaxed_march.cpp.)
 TEST(SdfEval, CastRayStepsOntoAPlane) {
     SdfProgram plane;
     plane.instructions = {shapeAt(PrimitiveId::Plane, {0, 1, 0, 0}, {0, 0, 0})};
     const std::optional<SdfHit> hit =
-        sdfCastRay(plane, RenderSettings{}, {0, 2, 0}, {0, -1, 0}, 0.0f, 100.0f);
+        sdfCastRay(plane, RenderSettings{}, {0, 2, 0}, {0, -1, 0}, 0.0f, 100.0f, 1.0f);
     ASSERT_TRUE(hit);
     EXPECT_NEAR(hit->t, 2.0f, kTol);
     EXPECT_EQ(hit->steps, 2);
