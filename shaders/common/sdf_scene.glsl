@@ -39,31 +39,39 @@ vec3 sdfNormal(vec3 p, float h) {
 // reached safely where d < epsilon * max(t, 1). A relaxed step that would pass tMax is taken
 // plain. Gives up after maxSteps evaluations or when t passes tMax. An empty program never hits.
 // engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU.
+//
+// The loop is a macro so that the shell pass (common/shell_scene.glsl, shellMarch) runs the very
+// same steps on its own map: DISTANCE_AT_T is the distance at the ray parameter `t`; the
+// enclosing function has tMin, tMax, maxSteps, epsilon, relaxation and the out values t and
+// steps.
+#define SDF_RELAXED_MARCH(DISTANCE_AT_T) \
+    float previousT = tMin; \
+    float previousDistance = 0.0; /* at previousT */ \
+    float stepLength = 0.0;       /* from previousT to t */ \
+    float omega = relaxation;     /* 1 after a fallback, until the distance grows again */ \
+    for (int i = 0; i < maxSteps; ++i) { \
+        if (t > tMax) return false; \
+        float h = (DISTANCE_AT_T); \
+        steps = i + 1; \
+        if (stepLength > previousDistance && previousDistance + h < stepLength) { \
+            t = previousT + previousDistance; /* back, then the plain step from there */ \
+            stepLength = previousDistance; \
+            omega = 1.0; \
+            continue; \
+        } \
+        if (h < epsilon * max(t, 1.0)) return true; \
+        if (h > previousDistance) omega = relaxation; /* moving away from what stopped it */ \
+        stepLength = t + omega * h > tMax ? h : omega * h; \
+        previousT = t; \
+        previousDistance = h; \
+        t += stepLength; \
+    } \
+    return false;
+
 bool sdfMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float epsilon,
               float relaxation, out float t, out int steps) {
     t = tMin;
     steps = 0;
     if (sdfSceneEmpty()) return false;
-    float previousT = tMin;
-    float previousDistance = 0.0; // at previousT
-    float stepLength = 0.0;       // from previousT to t
-    float omega = relaxation; // 1 after a fallback, until the distance grows again
-    for (int i = 0; i < maxSteps; ++i) {
-        if (t > tMax) return false;
-        float d = sdfDistance(ro + rd * t);
-        steps = i + 1;
-        if (stepLength > previousDistance && previousDistance + d < stepLength) {
-            t = previousT + previousDistance; // back, then the plain step from there
-            stepLength = previousDistance;
-            omega = 1.0;
-            continue;
-        }
-        if (d < epsilon * max(t, 1.0)) return true;
-        if (d > previousDistance) omega = relaxation; // moving away from what stopped it
-        stepLength = t + omega * d > tMax ? d : omega * d;
-        previousT = t;
-        previousDistance = d;
-        t += stepLength;
-    }
-    return false;
+    SDF_RELAXED_MARCH(sdfDistance(ro + rd * t))
 }

@@ -53,8 +53,8 @@ bool shellClipRange(vec3 ro, vec3 rd, out float tEnter, out float tExit) {
     return tEnter <= tExit && tExit > 0.0;
 }
 
-// Over-relaxed sphere tracing of the shell exactly as sdfMarch does it for the scene (same
-// steps, fallback and hit test; engine/sdf/cpu_eval.cpp, sdfCastRayInFrame), in object space.
+// Over-relaxed sphere tracing of the shell with sdfMarch's loop (SDF_RELAXED_MARCH; the CPU's is
+// engine/sdf/cpu_eval.cpp, sdfCastRayInFrame), the ray's points taken to object space.
 bool shellMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float epsilon,
                 float relaxation, out float t, out int steps) {
     t = tMin;
@@ -62,28 +62,7 @@ bool shellMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float ep
     if (shellSceneEmpty()) return false;
     vec3 o = shellObjectPoint(ro);
     vec3 d = mat3(uWorldToObject) * rd;
-    float previousT = tMin;
-    float previousDistance = 0.0; // at previousT
-    float stepLength = 0.0;       // from previousT to t
-    float omega = relaxation; // 1 after a fallback, until the distance grows again
-    for (int i = 0; i < maxSteps; ++i) {
-        if (t > tMax) return false;
-        float h = shellObjectDistance(o + d * t);
-        steps = i + 1;
-        if (stepLength > previousDistance && previousDistance + h < stepLength) {
-            t = previousT + previousDistance; // back, then the plain step from there
-            stepLength = previousDistance;
-            omega = 1.0;
-            continue;
-        }
-        if (h < epsilon * max(t, 1.0)) return true;
-        if (h > previousDistance) omega = relaxation; // moving away from what stopped it
-        stepLength = t + omega * h > tMax ? h : omega * h;
-        previousT = t;
-        previousDistance = h;
-        t += stepLength;
-    }
-    return false;
+    SDF_RELAXED_MARCH(shellObjectDistance(o + d * t))
 }
 
 // World-space unit normal at world point p: the tetrahedron gradient (as sdfNormal) in object
