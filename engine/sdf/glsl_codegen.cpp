@@ -50,23 +50,27 @@ std::string vec4Literal(const glm::vec4& v) {
 // Where the generated code takes instruction i's numbers from: literals or the buffer.
 struct Operands {
     const SdfProgram& program;
-    bool baked;
-    std::size_t base; // where the program starts in the program buffer
+    bool baked;        // the Baked strategy (box tests and seeds of the hierarchy are emitted)
+    SdfLiveRange live; // under Baked, objects whose numbers still come from the buffer
+    std::size_t base;  // where the program starts in the program buffer
 
+    bool literal(std::size_t i) const {
+        return baked && !live.contains(program.instructions[i].objectId);
+    }
     std::string instruction(std::size_t i) const {
         return "sdfInstructions[" + std::to_string(base + i) + "]";
     }
     std::string params(std::size_t i, int row) const {
-        return baked ? vec4Literal(program.instructions[i].params[row])
-                     : instruction(i) + ".params[" + std::to_string(row) + "]";
+        return literal(i) ? vec4Literal(program.instructions[i].params[row])
+                          : instruction(i) + ".params[" + std::to_string(row) + "]";
     }
     std::string param(std::size_t i, int k) const {
-        return baked ? floatLiteral(program.instructions[i].params[k / 4][k % 4])
-                     : instruction(i) + ".params[" + std::to_string(k / 4) + "][" +
-                           std::to_string(k % 4) + "]";
+        return literal(i) ? floatLiteral(program.instructions[i].params[k / 4][k % 4])
+                          : instruction(i) + ".params[" + std::to_string(k / 4) + "][" +
+                                std::to_string(k % 4) + "]";
     }
     std::string local(std::size_t i, const std::string& point) const {
-        if (!baked)
+        if (!literal(i))
             return "sdfAffine(" + instruction(i) + ".worldToLocal[0], " + instruction(i) +
                    ".worldToLocal[1], " + instruction(i) + ".worldToLocal[2], " + point + ")";
         const GpuSdfInstruction& in = program.instructions[i];
@@ -75,15 +79,16 @@ struct Operands {
                point + ")";
     }
     std::string scale(std::size_t i) const {
-        return baked ? floatLiteral(program.instructions[i].misc.x) : instruction(i) + ".misc.x";
+        return literal(i) ? floatLiteral(program.instructions[i].misc.x)
+                          : instruction(i) + ".misc.x";
     }
     std::string material(std::size_t i) const {
-        return baked ? std::to_string(program.instructions[i].material) + "u"
-                     : instruction(i) + ".material";
+        return literal(i) ? std::to_string(program.instructions[i].material) + "u"
+                          : instruction(i) + ".material";
     }
     std::string objectId(std::size_t i) const {
-        return baked ? std::to_string(program.instructions[i].objectId) + "u"
-                     : instruction(i) + ".objectId";
+        return literal(i) ? std::to_string(program.instructions[i].objectId) + "u"
+                          : instruction(i) + ".objectId";
     }
 };
 
@@ -215,7 +220,7 @@ SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requeste
 }
 
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
-                           const SdfMapNames& names) {
+                           const SdfMapNames& names, const SdfLiveRange& live) {
     const std::string& prefix = names.prefix;
     SdfStrategy strategy = effectiveSdfStrategy(program, requested);
     // The interpreter runs the scene's own map only (it reads the program from its start);
@@ -239,7 +244,10 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
             << "SdfSurface " << prefix << "Surface(vec3 p0) { return sdfEmptySurface(p0); }\n";
         return out.str();
     }
-    const Operands ops{program, strategy == SdfStrategy::Baked, names.instructionBase};
+    const bool baked = strategy == SdfStrategy::Baked;
+    const Operands ops{program, baked, baked ? live : SdfLiveRange{}, names.instructionBase};
+    if (baked && live.first <= live.last)
+        out << "// Objects " << live.first << " to " << live.last << " read the buffer.\n";
     out << "bool " << prefix << "SceneEmpty() { return false; }\n\nfloat " << prefix
         << "Distance(vec3 p0) {\n";
     emitBody(out, ops, false);

@@ -6,6 +6,7 @@
 
 #include "sdf/program.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -31,11 +32,24 @@ constexpr int kMaxGeneratedLeaves = 160;
 // The strategy used for `program` when `requested` is asked for (see kMaxGeneratedLeaves).
 SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requested);
 
+// The objects whose numbers stay in the buffer when the rest of the map is baked: ids `first` to
+// `last` (GpuSdfInstruction::objectId), which is one node and its subtree in pre-order, what the
+// editor has selected. Empty when last < first.
+struct SdfLiveRange {
+    std::uint32_t first = 1;
+    std::uint32_t last = 0;
+    bool contains(std::uint32_t id) const { return id >= first && id <= last; }
+};
+
 // GLSL of "generated/sdf_map.glsl" for `program` with effectiveSdfStrategy(program, strategy). The
 // Interpreter strategy's text depends only on the set of primitive kinds used; the Buffer
 // strategy's only on the program's structure (opcodes, kinds, operations), so parameter and
 // transform edits keep the same text and the renderer's compiled program; the Baked strategy's on
-// everything.
+// everything but the numbers of the `live` objects' instructions, which it reads from the buffer
+// like the Buffer strategy: while the user edits those objects the text, and so the compiled
+// program, stays the same, and the rest of the scene runs at the baked speed. (The bounding
+// hierarchy's instructions stay baked: a program compiled with bounds changes its text when a
+// live object moves.)
 //
 // `names` lets a second map live beside the scene's in one shader (a shell's, see
 // sdf/compiler.hpp): its functions are named prefix + "SceneEmpty", "Distance" and "Surface", and
@@ -45,6 +59,6 @@ struct SdfMapNames {
     std::size_t instructionBase = 0;
 };
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy strategy,
-                           const SdfMapNames& names = {});
+                           const SdfMapNames& names = {}, const SdfLiveRange& live = {});
 
 } // namespace rmsc

@@ -105,3 +105,50 @@ TEST(GlslCodegen, VeryLargeScenesFallBackToTheInterpreter) {
     EXPECT_EQ(effectiveSdfStrategy(compileText(kTwoShapes), SdfStrategy::Baked),
               SdfStrategy::Baked);
 }
+
+// The editing map: baked, but the objects being edited read the buffer. Their edits keep the
+// text; an edit anywhere else changes it.
+TEST(GlslCodegen, LiveObjectsReadTheBufferAndKeepTheTextUnderTheirEdits) {
+    const char* scene = R"({"op": "smooth_union", "smoothness": 0.3, "children": [
+        {"shape": "sphere", "radius": 0.5, "position": [1, 0, 0]},
+        {"op": "union", "position": [0, 1, 0], "children": [
+            {"shape": "box", "size": [0.2, 0.3, 0.4]},
+            {"shape": "torus", "major_radius": 0.6, "minor_radius": 0.1}]}]})";
+    const SdfProgram program = compileText(scene);
+    // Pre-order: root 0, sphere 1, group 2, box 3, torus 4; the group's subtree is 2..4.
+    const SdfLiveRange group{kSdfIdBase + 2, kSdfIdBase + 4};
+    const std::string map = generateSdfMap(program, SdfStrategy::Baked, {}, group);
+    EXPECT_EQ(count(map, "sdBox(q"), 2u);
+    EXPECT_NE(map.find(", 0.5)"), std::string::npos) << "the sphere stays baked:\n" << map;
+    std::size_t liveInstructions = 0;
+    for (std::size_t i = 0; i < program.instructions.size(); ++i) {
+        const bool live = group.contains(program.instructions[i].objectId);
+        liveInstructions += live;
+        const std::string read = "sdfInstructions[" + std::to_string(i) + "]";
+        EXPECT_EQ(map.find(read) != std::string::npos, live)
+            << "instruction " << i << " (object " << program.instructions[i].objectId << ")";
+    }
+    EXPECT_EQ(liveInstructions, 3u) << "box, torus and the group's union";
+
+    // Moving the group and resizing the box (its subtree) keeps the text.
+    const SdfProgram editedInside = compileText(R"({"op": "smooth_union", "smoothness": 0.3,
+        "children": [{"shape": "sphere", "radius": 0.5, "position": [1, 0, 0]},
+        {"op": "union", "position": [2, 1, 0], "rotation": [0, 30, 0], "children": [
+            {"shape": "box", "size": [0.7, 0.3, 0.4]},
+            {"shape": "torus", "major_radius": 0.6, "minor_radius": 0.1}]}]})");
+    EXPECT_EQ(generateSdfMap(editedInside, SdfStrategy::Baked, {}, group), map);
+    // The sphere is outside it: editing the sphere is new code.
+    const SdfProgram editedOutside = compileText(R"({"op": "smooth_union", "smoothness": 0.3,
+        "children": [{"shape": "sphere", "radius": 0.6, "position": [1, 0, 0]},
+        {"op": "union", "position": [0, 1, 0], "children": [
+            {"shape": "box", "size": [0.2, 0.3, 0.4]},
+            {"shape": "torus", "major_radius": 0.6, "minor_radius": 0.1}]}]})");
+    EXPECT_NE(generateSdfMap(editedOutside, SdfStrategy::Baked, {}, group), map);
+    // The smooth union is the root's, outside the range: its k is a literal.
+    EXPECT_NE(map.find("vec4(0.300000012"), std::string::npos) << map;
+
+    // Without a range, the map is the plain baked one; the buffer strategy ignores the range.
+    EXPECT_EQ(count(generateSdfMap(program, SdfStrategy::Baked, {}, {}), "sdfInstructions["), 0u);
+    EXPECT_EQ(generateSdfMap(program, SdfStrategy::Buffer, {}, group),
+              generateSdfMap(program, SdfStrategy::Buffer));
+}
