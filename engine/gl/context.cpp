@@ -25,8 +25,8 @@ void GLAPIENTRY onGlDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, G
     debugErrors += std::string("GL error: ") + message + "\n";
 }
 
-bool loadGl(GLADloadfunc load, bool debug, std::string& error) {
-    if (!gladLoadGL(load)) {
+bool loadGl(GLADloadfunc load, bool debug, bool secondary, std::string& error) {
+    if (!secondary && !gladLoadGL(load)) {
         error = "could not load the OpenGL functions";
         return false;
     }
@@ -43,16 +43,18 @@ bool loadGl(GLADloadfunc load, bool debug, std::string& error) {
 }
 
 class EglContext final : public HeadlessContext {
-public:
+  public:
     ~EglContext() override {
         if (display_ == EGL_NO_DISPLAY) return;
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-        eglTerminate(display_);
+        // One display per process: a secondary context leaves it to the first.
+        if (!secondary_) eglTerminate(display_);
     }
     std::string_view backendName() const override { return "egl"; }
 
-    bool create(bool debug, std::string& error) {
+    bool create(bool debug, bool secondary, std::string& error) {
+        secondary_ = secondary;
         auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
             eglGetProcAddress("eglGetPlatformDisplayEXT"));
         if (!getPlatformDisplay) {
@@ -88,22 +90,23 @@ public:
             error = "EGL could not make the context current without a surface";
             return false;
         }
-        return loadGl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress), debug, error);
+        return loadGl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress), debug, secondary, error);
     }
 
-private:
+  private:
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
+    bool secondary_ = false;
 };
 
 class OsMesaContext final : public HeadlessContext {
-public:
+  public:
     ~OsMesaContext() override {
         if (context_) OSMesaDestroyContext(context_);
     }
     std::string_view backendName() const override { return "osmesa"; }
 
-    bool create(bool debug, std::string& error) {
+    bool create(bool debug, bool secondary, std::string& error) {
         const int attributes[] = {OSMESA_FORMAT,
                                   OSMESA_RGBA,
                                   OSMESA_DEPTH_BITS,
@@ -125,28 +128,33 @@ public:
             error = "OSMesa could not make the context current";
             return false;
         }
-        return loadGl(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress), debug, error);
+        return loadGl(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress), debug, secondary,
+                      error);
     }
 
-private:
+  private:
     OSMesaContext context_ = nullptr;
     unsigned char pixel_[4] = {};
 };
 
 template <class Context>
-std::unique_ptr<HeadlessContext> tryCreate(bool debug, std::string& error) {
+std::unique_ptr<HeadlessContext> tryCreate(bool debug, bool secondary, std::string& error) {
     auto context = std::make_unique<Context>();
-    if (!context->create(debug, error)) return nullptr;
+    if (!context->create(debug, secondary, error)) return nullptr;
     return context;
 }
 
 } // namespace
 
 bool parseGlBackend(std::string_view name, GlBackend& backend) {
-    if (name == "auto") backend = GlBackend::Auto;
-    else if (name == "egl") backend = GlBackend::Egl;
-    else if (name == "osmesa") backend = GlBackend::OsMesa;
-    else return false;
+    if (name == "auto")
+        backend = GlBackend::Auto;
+    else if (name == "egl")
+        backend = GlBackend::Egl;
+    else if (name == "osmesa")
+        backend = GlBackend::OsMesa;
+    else
+        return false;
     return true;
 }
 
@@ -159,16 +167,16 @@ std::string HeadlessContext::renderer() const {
 }
 
 std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend backend, bool debug,
-                                                       std::string& error) {
+                                                       std::string& error, bool secondary) {
     std::string eglError, osMesaError;
     if (backend == GlBackend::Egl || backend == GlBackend::Auto) {
-        if (auto context = tryCreate<EglContext>(debug, eglError)) return context;
+        if (auto context = tryCreate<EglContext>(debug, secondary, eglError)) return context;
         if (backend == GlBackend::Egl) {
             error = "no OpenGL context: EGL: " + eglError;
             return nullptr;
         }
     }
-    if (auto context = tryCreate<OsMesaContext>(debug, osMesaError)) return context;
+    if (auto context = tryCreate<OsMesaContext>(debug, secondary, osMesaError)) return context;
     error = backend == GlBackend::Auto
                 ? "no OpenGL 4.5 context: EGL: " + eglError + "; OSMesa: " + osMesaError
                 : "no OpenGL context: OSMesa: " + osMesaError;

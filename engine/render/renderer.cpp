@@ -1,6 +1,7 @@
 // Frame orchestration.
 #include "render/renderer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -40,7 +41,8 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     lastCompileMs_ = 0.0;
     const auto start = std::chrono::steady_clock::now();
     bool compiled = false;
-    // A small cache: an editing session alternates between a few structures at most.
+    // A small cache, the least recently used map goes first: an editing session uses the
+    // buffer map of its structure and baked maps of the last few selections.
     constexpr std::size_t kMaxCached = 8;
     ShaderFiles files = files_;
     files.files["generated/sdf_map.glsl"] = scene.sdfMap;
@@ -49,12 +51,16 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
         if (!raster) return false;
         std::optional<MarchPass> march = MarchPass::create(files, error);
         if (!march) return false;
-        if (sdfPasses_.size() >= kMaxCached) sdfPasses_.clear();
+        if (sdfPasses_.size() >= kMaxCached)
+            sdfPasses_.erase(std::min_element(
+                sdfPasses_.begin(), sdfPasses_.end(),
+                [](const auto& a, const auto& b) { return a.second.lastUse < b.second.lastUse; }));
         sdfPasses_.emplace(scene.sdfMap,
                            SdfPasses{std::move(*raster), std::move(*march), std::nullopt});
         compiled = true;
     }
     SdfPasses& passes = sdfPasses_.find(scene.sdfMap)->second;
+    passes.lastUse = ++useClock_;
     if (countEvaluations_ && !passes.countingMarch) {
         passes.countingMarch = MarchPass::create(files, error, true);
         if (!passes.countingMarch) return false;

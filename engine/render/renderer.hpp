@@ -47,6 +47,7 @@ struct SdfPasses {
     RasterPass raster; // marches shadow rays and AO through the SDF
     MarchPass march;
     std::optional<MarchPass> countingMarch; // the instrumented variant, built when asked for
+    std::uint64_t lastUse = 0;              // Renderer::useClock_ when last prepared
 };
 
 class Renderer {
@@ -58,6 +59,9 @@ class Renderer {
     // text, so scenes of one structure share them) or compiled now. False with the compile
     // log in `error` when the shaders do not build.
     bool prepare(const GpuScene& scene, std::string& error);
+    // Are the programs of this SDF map (GpuScene::sdfMap) built, so prepare() compiles nothing
+    // for it (shells aside)?
+    bool hasPrograms(const std::string& sdfMap) const { return sdfPasses_.contains(sdfMap); }
     // Milliseconds the last prepare() spent compiling and linking (0 on a cache hit).
     double lastCompileMs() const { return lastCompileMs_; }
 
@@ -77,6 +81,7 @@ class Renderer {
     ShaderFiles files_;
     std::map<std::string, SdfPasses, std::less<>> sdfPasses_;   // by map text
     std::map<std::string, ShellPass, std::less<>> shellPasses_; // by scene map + shell map
+    std::uint64_t useClock_ = 0;
     double lastCompileMs_ = 0.0;
     bool countEvaluations_ = false;
     PostPass post_;

@@ -1,0 +1,75 @@
+// Builds a scene's shader programs in the background, on a second GL context on a thread of its
+// own, so the thread that draws never waits for a compile it can do without.
+//
+// The warmer draws one small frame of the scene with the requested SDF map through its own
+// Renderer. That is the whole compile: drivers finish programs at their first draw (llvmpipe
+// generates its machine code there), and keep what they built in their shader cache (Mesa's on
+// disk), so when the main context then builds the same program it takes tens of milliseconds
+// instead of seconds. The editor uses it for the map that bakes everything but the selection
+// (sdf/glsl_codegen.hpp): until that map is warm it draws with the buffer map it already has.
+//
+// Requests replace each other: only the newest waits, and the one being built finishes. A
+// driver without a shader cache still works, the main context then compiles as it always did.
+#pragma once
+
+#include "render/renderer.hpp"
+#include "scene/prepared_scene.hpp"
+
+#include <condition_variable>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <thread>
+
+namespace rmsc {
+
+class ShaderWarmer {
+  public:
+    // Makes a GL 4.5 context current on the calling thread (the warmer's) and returns what
+    // releases it when the thread ends, or nullptr with `error` set when there is none.
+    using ContextBinder = std::function<std::function<void()>(std::string& error)>;
+
+    ShaderWarmer(ContextBinder bindContext, ShaderFiles files);
+    ~ShaderWarmer(); // finishes the program being built, drops the rest
+    ShaderWarmer(const ShaderWarmer&) = delete;
+    ShaderWarmer& operator=(const ShaderWarmer&) = delete;
+
+    // Builds the programs of `scene` uploaded with its maps replaced by `sdfMap` (the shells'
+    // maps are the buffer strategy's, as the editor draws them), unless that map is warm or
+    // already being built.
+    void request(const PreparedScene& scene, const std::string& sdfMap);
+    // Has a request for this map finished building?
+    bool isWarm(const std::string& sdfMap) const;
+    // Started (or failed to), nothing waiting and nothing being built.
+    bool idle() const;
+    // Waits until idle (for scripted runs and tests).
+    void waitUntilIdle() const;
+    // Why the warmer stopped (no context, or a map that did not build), once; empty if it runs.
+    std::string takeError();
+    // Milliseconds the last finished request took, from its start.
+    double lastWarmMs() const;
+
+  private:
+    struct Request {
+        PreparedScene scene;
+        std::string sdfMap;
+    };
+    void run(ContextBinder bindContext, ShaderFiles files);
+
+    mutable std::mutex mutex_;
+    mutable std::condition_variable changed_;
+    std::optional<Request> pending_;
+    std::string building_; // the map being built, "" when none
+    std::set<std::string> warm_;
+    std::set<std::string> failed_;
+    std::string error_;
+    double lastWarmMs_ = 0.0;
+    bool starting_ = true; // the thread is making its context current and its renderer
+    bool stopping_ = false;
+    std::thread thread_; // last: starts once the rest is initialised
+};
+
+} // namespace rmsc

@@ -1,0 +1,130 @@
+// What the editor draws while the user edits (editor/editing_map.hpp, render/shader_warmer.hpp):
+// the baked map with the selection read from the buffer draws the baked image and follows
+// buffer edits of the selection without a compile; the warmer builds maps on a second context
+// of its own thread, the newest request replacing older ones, and reports maps that fail.
+#include "gpu_test_support.hpp"
+
+#include "render/readback.hpp"
+#include "render/shader_warmer.hpp"
+
+#include <cstdlib>
+#include <memory>
+
+using namespace rmsc;
+using namespace rmsc::test;
+
+namespace {
+
+FrameTargets renderMap(const PreparedScene& prepared, const std::string& map) {
+    Renderer& renderer = sharedRenderer(); // the context first
+    GpuScene gpu = uploadScene(prepared, SdfStrategy::Baked);
+    gpu.sdfMap = map;
+    FrameTargets targets = createFrameTargets(160, 96);
+    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, targets);
+    expectNoGlErrors();
+    return targets;
+}
+
+// A second context like the tests' own (same back end), made on the warmer's thread.
+ShaderWarmer::ContextBinder secondaryContext() {
+    return [](std::string& error) -> std::function<void()> {
+        GlBackend backend = GlBackend::Auto;
+        if (const char* name = std::getenv("RMSC_TEST_BACKEND")) parseGlBackend(name, backend);
+        std::shared_ptr<HeadlessContext> context =
+            createHeadlessContext(backend, false, error, true);
+        if (!context) return nullptr;
+        return [context]() mutable { context.reset(); };
+    };
+}
+
+} // namespace
+
+TEST(EditingMaps, TheSelectionLiveDrawsTheBakedImageAndFollowsTheBuffer) {
+    PreparedScene prepared = openRepositoryScene("samples/scenes/csg.json");
+    // The live range: the first shape and everything after it in pre-order up to half the tree.
+    std::uint32_t firstShape = 0;
+    for (const GpuSdfInstruction& in : prepared.sdf.instructions)
+        if (SdfOpcode(in.opcode) == SdfOpcode::Shape && !firstShape) firstShape = in.objectId;
+    ASSERT_NE(firstShape, 0u);
+    const SdfLiveRange live{firstShape,
+                            firstShape + std::uint32_t(prepared.sdf.nodePointers.size() / 2)};
+    const std::string editing = generateSdfMap(prepared.sdf, SdfStrategy::Baked, {}, live);
+    ASSERT_NE(editing.find("sdfInstructions["), std::string::npos);
+
+    const FrameTargets baked =
+        renderMap(prepared, generateSdfMap(prepared.sdf, SdfStrategy::Baked));
+    const FrameTargets mixed = renderMap(prepared, editing);
+    EXPECT_TRUE(imagesMatch(readDisplayColor(mixed), readDisplayColor(baked), "editing_map_csg",
+                            {2, 0.002}));
+
+    // Grow the first shape in the buffer: the map's text stays, nothing compiles, the picture
+    // changes as the baked map of the edited program draws it.
+    for (GpuSdfInstruction& in : prepared.sdf.instructions)
+        if (in.objectId == firstShape && SdfOpcode(in.opcode) == SdfOpcode::Shape)
+            in.params[0] *= 1.3f;
+    EXPECT_EQ(generateSdfMap(prepared.sdf, SdfStrategy::Baked, {}, live), editing);
+    const FrameTargets edited = renderMap(prepared, editing);
+    EXPECT_EQ(sharedRenderer().lastCompileMs(), 0.0) << "an edit of a live shape compiled";
+    EXPECT_FALSE(imagesMatch(readDisplayColor(edited), readDisplayColor(mixed),
+                             "editing_map_unchanged", {2, 0.002}))
+        << "the edit should show";
+    const FrameTargets bakedEdited =
+        renderMap(prepared, generateSdfMap(prepared.sdf, SdfStrategy::Baked));
+    EXPECT_TRUE(imagesMatch(readDisplayColor(edited), readDisplayColor(bakedEdited),
+                            "editing_map_edited", {2, 0.002}));
+}
+
+TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
+    sharedRenderer(); // the tests' context first: the warmer's is the second
+    const PreparedScene prepared = openRepositoryScene("samples/bench/grid_10.json");
+    auto mapFor = [&](std::uint32_t id) {
+        return generateSdfMap(prepared.sdf, SdfStrategy::Baked, {}, SdfLiveRange{id, id});
+    };
+    const std::string a = mapFor(kSdfIdBase + 1), b = mapFor(kSdfIdBase + 2),
+                      c = mapFor(kSdfIdBase + 3);
+    ShaderWarmer warmer(secondaryContext(), ShaderFiles::embedded());
+    warmer.request(prepared, a);
+    warmer.request(prepared, b);
+    warmer.request(prepared, c);
+    warmer.waitUntilIdle();
+    EXPECT_TRUE(warmer.idle());
+    EXPECT_EQ(warmer.takeError(), "");
+    EXPECT_TRUE(warmer.isWarm(c)) << "the newest request is built";
+    EXPECT_FALSE(warmer.isWarm(a) && warmer.isWarm(b)) << "b replaced a, or c replaced b";
+    EXPECT_GT(warmer.lastWarmMs(), 0.0);
+
+    // The map the warmer built is one the tests' context builds and draws.
+    GpuScene gpu = uploadScene(prepared, SdfStrategy::Baked);
+    gpu.sdfMap = c;
+    std::string error;
+    EXPECT_TRUE(sharedRenderer().prepare(gpu, error)) << error;
+
+    // A map that does not build is reported, not retried, and the warmer goes on.
+    const std::string broken = c + "\nthis is not GLSL\n";
+    warmer.request(prepared, broken);
+    warmer.waitUntilIdle();
+    EXPECT_FALSE(warmer.isWarm(broken));
+    EXPECT_NE(warmer.takeError().find("background shader build failed"), std::string::npos);
+    warmer.request(prepared, broken);
+    EXPECT_TRUE(warmer.idle()) << "a failed map is not asked for again";
+    warmer.request(prepared, a);
+    warmer.waitUntilIdle();
+    EXPECT_TRUE(warmer.isWarm(a));
+    expectNoGlErrors();
+}
+
+TEST(ShaderWarmer, WithoutAContextItSaysSoAndIgnoresRequests) {
+    const PreparedScene prepared = openRepositoryScene("samples/bench/grid_1.json");
+    ShaderWarmer warmer(
+        [](std::string& error) -> std::function<void()> {
+            error = "no context for this test";
+            return nullptr;
+        },
+        ShaderFiles::embedded());
+    warmer.waitUntilIdle();
+    EXPECT_NE(warmer.takeError().find("no context for this test"), std::string::npos);
+    const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Baked);
+    warmer.request(prepared, map);
+    EXPECT_TRUE(warmer.idle());
+    EXPECT_FALSE(warmer.isWarm(map));
+}
