@@ -14,6 +14,7 @@
 #include "editor/transform_gesture.hpp"
 #include "gl/window.hpp"
 #include "render/renderer.hpp"
+#include "render/shader_warmer.hpp"
 
 #include <array>
 #include <chrono>
@@ -70,6 +71,14 @@ class Viewer {
     std::optional<GpuScene> gpuScene;
     std::optional<PreparedScene> prepared; // last scene that compiled
     std::uint64_t uploadedRevision = 0;
+    // The SDF map drawn (editor/editing_map.hpp): baked with the selection live once the
+    // warmer has built it on its hidden window's context, the buffer map until then.
+    std::unique_ptr<Window> warmerWindow;
+    std::unique_ptr<ShaderWarmer> warmer; // after warmerWindow: goes first
+    std::string mapBeingBuilt;            // the baked map asked of the warmer ("" = none)
+    bool drawingBakedMap = false;
+    std::uint64_t choiceRevision = 0; // what the map choice was made for
+    SdfLiveRange choiceLive;
     std::optional<FrameTargets> targets;
     float lastRenderMilliseconds = 0.0f;
     float lastRenderScale = 1.0f;
@@ -141,6 +150,8 @@ class Viewer {
     // viewer_app.cpp
     bool loadShaders(bool initial);
     void syncGpuScene();
+    void startWarmer();
+    void chooseSdfMap(bool waitForBuilds); // after syncGpuScene
     void renderView();
     void pick(glm::vec2 windowPixel);
     bool writeScreenshot(const std::string& path, std::string& error);

@@ -5,6 +5,7 @@
 
 #include "app/commands.hpp"
 #include "core/image_io.hpp"
+#include "editor/editing_map.hpp"
 #include "editor/picking.hpp"
 #include "editor/scene_edits.hpp"
 #include "render/frame.hpp"
@@ -120,6 +121,7 @@ bool Viewer::loadShaders(bool initial) {
         renderer = std::move(newRenderer);
         display = std::move(newDisplay);
         shaderFiles = std::move(files);
+        startWarmer();
         if (!initial) notice("shaders reloaded");
         shaderError.clear();
         lastRenderedRevision = 0; // render again
@@ -135,6 +137,8 @@ bool Viewer::loadShaders(bool initial) {
         if (newRenderer && newDisplay) {
             renderer = std::move(newRenderer);
             display = std::move(newDisplay);
+            shaderFiles = std::move(files);
+            startWarmer();
             return true;
         }
     }
@@ -164,9 +168,76 @@ void Viewer::syncGpuScene() {
             "The scene's shaders do not build (showing the last scene that did):\n" + error;
         return;
     }
+    if (renderer && renderer->lastCompileMs() > 0.0)
+        std::fprintf(stderr, "rmsc view: frame %d: built the buffer map's shaders in %.0f ms\n",
+                     frameNumber, renderer->lastCompileMs());
     sceneError.clear();
     gpuScene = std::move(candidate);
     prepared = std::move(next);
+}
+
+void Viewer::startWarmer() {
+    warmer.reset(); // waits for the build it is doing
+    mapBeingBuilt.clear();
+    choiceRevision = 0; // choose the map again
+    std::string error;
+    if (!warmerWindow) warmerWindow = Window::openHidden(error);
+    if (!warmerWindow) {
+        std::fprintf(stderr, "rmsc view: shaders are not built in the background (%s)\n",
+                     error.c_str());
+        return;
+    }
+    Window* context = warmerWindow.get();
+    warmer = std::make_unique<ShaderWarmer>(
+        [context](std::string&) -> std::function<void()> {
+            context->makeCurrent();
+            return [] { Window::releaseCurrent(); };
+        },
+        shaderFiles);
+}
+
+void Viewer::chooseSdfMap(bool waitForBuilds) {
+    if (!renderer || !gpuScene || !prepared) return;
+    if (warmer) {
+        if (waitForBuilds) warmer->waitUntilIdle();
+        const std::string error = warmer->takeError();
+        if (!error.empty()) std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
+    }
+    const editor::IdRange ids = editor::objectIdRange(document.scene(), document.selection);
+    const SdfLiveRange live{ids.first, ids.last};
+    const bool built = !mapBeingBuilt.empty() && warmer && warmer->isWarm(mapBeingBuilt);
+    if (choiceRevision == uploadedRevision && choiceLive.first == live.first &&
+        choiceLive.last == live.last && !built)
+        return;
+    choiceRevision = uploadedRevision;
+    choiceLive = live;
+    const editor::EditingMaps maps =
+        editor::chooseEditingMaps(prepared->sdf, live, [this](const std::string& map) {
+            return renderer->hasPrograms(map) || (warmer && warmer->isWarm(map));
+        });
+    mapBeingBuilt = maps.build;
+    if (warmer && !maps.build.empty()) {
+        warmer->request(*prepared, maps.build);
+        if (waitForBuilds) {
+            choiceRevision = 0;
+            chooseSdfMap(true);
+            return;
+        }
+    }
+    if (maps.draw != gpuScene->sdfMap) {
+        std::string previous = std::exchange(gpuScene->sdfMap, maps.draw);
+        std::string error;
+        if (!renderer->prepare(*gpuScene, error)) { // not expected: the warmer built it
+            gpuScene->sdfMap = std::move(previous);
+            std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
+            return;
+        }
+        if (maps.baked != drawingBakedMap)
+            std::fprintf(stderr,
+                         "rmsc view: frame %d: drawing with the %s map (%.0f ms to switch)\n",
+                         frameNumber, maps.baked ? "baked" : "buffer", renderer->lastCompileMs());
+    }
+    drawingBakedMap = maps.baked;
 }
 
 void Viewer::renderView() {
@@ -469,6 +540,7 @@ int Viewer::run() {
             document.selection = editor::Selection::none();
         pollFiles();
         syncGpuScene();
+        chooseSdfMap(actions.waitShaders);
         renderView();
 
         ImGui::Render();

@@ -124,8 +124,9 @@ std::optional<Script> parseScript(const std::string& text, const std::string& fi
                            : verb == "screenshot" ? K::Screenshot
                                                   : K::WindowShot;
             script.events.push_back({frame, kind, 0, {}, rest, lineNumber});
-        } else if (verb == "quit") {
-            script.events.push_back({frame, K::Quit, 0, {}, {}, lineNumber});
+        } else if (verb == "quit" || verb == "wait-shaders") {
+            script.events.push_back(
+                {frame, verb == "quit" ? K::Quit : K::WaitShaders, 0, {}, {}, lineNumber});
         } else {
             return fail("unknown event '" + verb + "'");
         }
@@ -179,6 +180,9 @@ ScriptActions playScriptFrame(const Script& script, int frame, InputState& input
             break;
         case K::WindowShot:
             actions.windowShots.push_back(e.text);
+            break;
+        case K::WaitShaders:
+            actions.waitShaders = true;
             break;
         case K::Quit:
             actions.quit = true;

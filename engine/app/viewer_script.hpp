@@ -12,6 +12,8 @@
 //   FRAME text STRING         typed characters (the rest of the line)
 //   FRAME screenshot PATH     the rendered view at full resolution, as PNG
 //   FRAME window-shot PATH    the whole window with the editor panels, as PNG
+//   FRAME wait-shaders        wait until the shaders being built in the background are built
+//                             and in use (the view is drawn with them from this frame on)
 //   FRAME quit                close the window (asks when there are unsaved changes)
 //
 // Frames count from 0; events of one frame run in file order before the frame is drawn.
@@ -38,6 +40,7 @@ struct ScriptEvent {
         Text,
         Screenshot,
         WindowShot,
+        WaitShaders,
         Quit
     } kind = Kind::Quit;
     int code = 0; // key or button
@@ -60,6 +63,7 @@ std::optional<Script> loadScript(const std::filesystem::path& path, std::string&
 struct ScriptActions {
     std::vector<std::string> screenshots;
     std::vector<std::string> windowShots;
+    bool waitShaders = false;
     bool quit = false;
 };
 

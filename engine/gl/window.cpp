@@ -51,6 +51,30 @@ std::unique_ptr<Window> Window::open(int width, int height, const std::string& t
     return std::unique_ptr<Window>(new Window(window));
 }
 
+std::unique_ptr<Window> Window::openHidden(std::string& error) {
+    if (openWindows == 0) {
+        error = "open a window first";
+        return nullptr;
+    }
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    GLFWwindow* window = glfwCreateWindow(1, 1, "rmsc (hidden)", nullptr, nullptr);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_TRUE);
+    if (!window) {
+        error = "cannot create a second OpenGL 4.5 core context: " + lastGlfwError();
+        return nullptr;
+    }
+    ++openWindows;
+    return std::unique_ptr<Window>(new Window(window));
+}
+
+void Window::makeCurrent() {
+    glfwMakeContextCurrent(window_);
+}
+
+void Window::releaseCurrent() {
+    glfwMakeContextCurrent(nullptr);
+}
+
 Window::~Window() {
     glfwDestroyWindow(window_);
     if (--openWindows == 0) glfwTerminate();

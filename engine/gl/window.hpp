@@ -15,6 +15,13 @@ class Window {
     // nullptr with `error` saying why (no display, no GL 4.5 core) on failure.
     static std::unique_ptr<Window> open(int width, int height, const std::string& title,
                                         std::string& error);
+    // A hidden window whose GL 4.5 core context can be made current on another thread (for
+    // background work such as render/shader_warmer.hpp); open() a window first. The context
+    // stays current on no thread.
+    static std::unique_ptr<Window> openHidden(std::string& error);
+    // Makes this window's context current on the calling thread; releaseCurrent() lets go.
+    void makeCurrent();
+    static void releaseCurrent();
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;

@@ -2,9 +2,11 @@
 """End-to-end test of `rmsc view` under Xvfb: a replay script flies the camera, selects the
 ball by clicking, moves it along X (G, X), undoes and redoes, rotates it a quarter turn about Z
 (R, Z), scales it to twice its size (S), saves. Checks the saved scene
-(parsed), the backup, and that screenshots differ where the edit and the flight say they should.
+(parsed), the backup, that screenshots differ where the edit and the flight say they should, and
+from the viewer's log that once the ball is selected the view is drawn with the map baked but
+for the ball, and that none of the edits to the ball compiles a shader.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
-import json, math, os, shutil, struct, subprocess, sys, tempfile, zlib
+import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
 SKIP = 77
 
@@ -89,6 +91,17 @@ def main():
             print("SKIP: Xvfb could not start")
             return SKIP
         check("viewer exits 0", run.returncode == 0, run.returncode)
+
+        # "rmsc view: frame N: ..." lines: which map is drawn, which shaders were built.
+        log = [(int(m.group(1)), m.group(2)) for m in
+               re.finditer(r"rmsc view: frame (\d+): (.*)", run.stderr)]
+        selected = 11  # the script's wait-shaders frame
+        switches = [(f, what) for f, what in log if "drawing with the" in what]
+        check("the baked map with the ball live is drawn from the selection on",
+              any(f == selected and "baked map" in what for f, what in switches), log)
+        check("and no other map after it", not any(f > selected for f, _ in switches), log)
+        check("no shader built for an edit of the ball",
+              not any(f >= selected and "built" in what for f, what in log), log)
 
         saved = json.load(open(scene))
         ball = saved["sdf"]["children"][0]
