@@ -47,9 +47,9 @@ struct SdfLiveRange {
 // transform edits keep the same text and the renderer's compiled program; the Baked strategy's on
 // everything but the numbers of the `live` objects' instructions, which it reads from the buffer
 // like the Buffer strategy: while the user edits those objects the text, and so the compiled
-// program, stays the same, and the rest of the scene runs at the baked speed. (The bounding
-// hierarchy's instructions stay baked: a program compiled with bounds changes its text when a
-// live object moves.)
+// program, stays the same, and the rest of the scene runs at the baked speed. (Generated code
+// evaluates every part of a program compiled with bounds and skips none, but in the
+// hierarchy's order, which follows where the parts are: the editor compiles without bounds.)
 //
 // `names` lets a second map live beside the scene's in one shader (a shell's, see
 // sdf/compiler.hpp): its functions are named prefix + "SceneEmpty", "Distance" and "Surface", and

@@ -98,8 +98,9 @@ TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
 }
 
 // The compiler's bounding hierarchy skips far parts without changing the picture: with and
-// without it, the 10-shape bench grid in baked code and the shapes sample (a plane, exact
-// shapes and an ellipsoid, whose bound formula keeps it out of the hierarchy) through the
+// without it, the 10-shape bench grid in baked code (which unites the hierarchy's parts without
+// skipping) and the shapes sample (a plane, exact shapes and an ellipsoid, whose bound formula
+// keeps it out of the hierarchy) through the
 // interpreter.
 TEST(SdfStrategies, BoundsDoNotChangeTheImage) {
     const std::pair<const char*, SdfStrategy> cases[] = {
