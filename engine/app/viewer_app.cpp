@@ -215,15 +215,19 @@ void Viewer::chooseSdfMap(bool waitForBuilds) {
         editor::chooseEditingMaps(prepared->sdf, live, [this](const std::string& map) {
             return renderer->hasPrograms(map) || (warmer && warmer->isWarm(map));
         });
-    mapBeingBuilt = maps.build;
-    if (warmer && !maps.build.empty()) {
+    mapBeingBuilt = warmer ? maps.build : std::string();
+    if (!mapBeingBuilt.empty()) {
         warmer->request(*prepared, maps.build);
         if (waitForBuilds) {
-            choiceRevision = 0;
-            chooseSdfMap(true);
-            return;
+            warmer->waitUntilIdle();
+            if (warmer->isWarm(maps.build)) { // else it failed: the buffer map stays
+                choiceRevision = 0;
+                chooseSdfMap(false);
+                return;
+            }
         }
     }
+    double switchMs = 0.0; // the main context's build of what the warmer built
     if (maps.draw != gpuScene->sdfMap) {
         std::string previous = std::exchange(gpuScene->sdfMap, maps.draw);
         std::string error;
@@ -232,11 +236,15 @@ void Viewer::chooseSdfMap(bool waitForBuilds) {
             std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
             return;
         }
-        if (maps.baked != drawingBakedMap)
-            std::fprintf(stderr,
-                         "rmsc view: frame %d: drawing with the %s map (%.0f ms to switch)\n",
-                         frameNumber, maps.baked ? "baked" : "buffer", renderer->lastCompileMs());
+        switchMs = renderer->lastCompileMs();
     }
+    if (maps.baked && !drawingBakedMap)
+        std::fprintf(stderr,
+                     "rmsc view: frame %d: drawing with the baked map (%.0f ms to switch, "
+                     "built in the background in %.0f ms)\n",
+                     frameNumber, switchMs, warmer ? warmer->lastWarmMs() : 0.0);
+    else if (!maps.baked && drawingBakedMap)
+        std::fprintf(stderr, "rmsc view: frame %d: drawing with the buffer map\n", frameNumber);
     drawingBakedMap = maps.baked;
 }
 

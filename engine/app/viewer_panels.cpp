@@ -884,6 +884,9 @@ void Viewer::drawOverlay() {
         ImGui::Text("frame %.1f ms   render %.1f ms", frameMilliseconds, lastRenderMilliseconds);
         ImGui::Text("render scale %.0f%% (%dx%d)%s", lastRenderScale * 100.0f, w, h,
                     adaptive.enabled ? "" : "  adaptive off");
+        ImGui::Text("SDF map: %s", drawingBakedMap             ? "baked, selection live"
+                                   : warmer && !warmer->idle() ? "buffer (building the baked one)"
+                                                               : "buffer");
         const char* names[] = {"colour", "normals", "depth", "object id"};
         ImGui::Text("view: %s   speed %.2f m/s", names[int(viewMode)], camera.speed);
         if (gesture.active) {
