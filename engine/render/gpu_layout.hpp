@@ -22,6 +22,10 @@ enum SsboBinding : unsigned {
     kMarchStatisticsBinding = 5, // fragments that marched (shaders/common/march_statistics.glsl)
 };
 
+// Uniform block binding points: the frame (shaders/common/frame.glsl) and the program buffer's
+// uniform window (kSdfUniformInstructions, shaders/common/sdf_functions.glsl).
+enum UboBinding : unsigned { kFrameBinding = 0, kSdfProgramUniformBinding = 1 };
+
 // Texture units of the lighting inputs every shading pass samples (shaders/common/sky.glsl,
 // shadows.glsl); passes keep their own textures on lower units.
 enum LightingTextureUnit : unsigned { kSkyImageUnit = 14, kShadowMapUnit = 15 };

@@ -15,9 +15,11 @@ namespace {
 
 // A buffer holding `header` followed by `items` (std430: the header is 16 bytes).
 template <class Header, class Item>
-gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& items) {
+gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& items,
+                                std::size_t minimumBytes = 0) {
     static_assert(sizeof(Header) == 16);
-    std::vector<unsigned char> bytes(sizeof(Header) + items.size() * sizeof(Item));
+    std::vector<unsigned char> bytes(
+        std::max(sizeof(Header) + items.size() * sizeof(Item), minimumBytes));
     std::memcpy(bytes.data(), &header, sizeof(Header));
     if (!items.empty())
         std::memcpy(bytes.data() + sizeof(Header), items.data(), items.size() * sizeof(Item));
@@ -28,6 +30,8 @@ gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& i
 
 void GpuScene::bindBuffers() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfProgramBinding, sdfProgram.id());
+    glBindBufferRange(GL_UNIFORM_BUFFER, kSdfProgramUniformBinding, sdfProgram.id(), 0,
+                      kSdfUniformBlockBytes);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer.id());
     for (std::size_t i = 0; i < materialTextures.size(); ++i)
@@ -98,7 +102,8 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     if (sdfData.empty()) sdfData.emplace_back(0.0f); // a buffer is never empty
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
-    gpu.sdfProgram = createHeaderedBuffer(sdfHeader, instructions);
+    // At least as long as its uniform window.
+    gpu.sdfProgram = createHeaderedBuffer(sdfHeader, instructions, kSdfUniformBlockBytes);
     gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
     gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());
 

@@ -21,6 +21,13 @@ Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow)
 }
 
 std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) {
+    GLint uniformBlockBytes = 0;
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &uniformBlockBytes);
+    if (uniformBlockBytes < kSdfUniformBlockBytes) {
+        error = "the OpenGL driver's uniform blocks hold " + std::to_string(uniformBlockBytes) +
+                " bytes; rmsc needs " + std::to_string(kSdfUniformBlockBytes);
+        return std::nullopt;
+    }
     std::optional<PostPass> post = PostPass::create(files, error);
     if (!post) return std::nullopt;
     std::optional<ShadowPass> shadow = ShadowPass::create(files, error);
@@ -97,7 +104,7 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     packEnvironment(scene.environment, scene.skyLevels, frame);
     frame.shadowMap.x = settings.shadows.enabled ? float(scene.shadowMapSize) : 0.0f;
     glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(GpuFrame), &frame);
-    glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameBuffer_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frameBuffer_.id());
     scene.bindBuffers();
 
     auto timed = [this](Pass pass, auto&& draw) {

@@ -57,8 +57,12 @@ struct Operands {
     bool literal(std::size_t i) const {
         return baked && !live.contains(program.instructions[i].objectId);
     }
+    // From the uniform window of the buffer where it reaches (kSdfUniformInstructions).
     std::string instruction(std::size_t i) const {
-        return "sdfInstructions[" + std::to_string(base + i) + "]";
+        const std::size_t index = base + i;
+        return (index < std::size_t(kSdfUniformInstructions) ? "sdfUniformInstructions["
+                                                             : "sdfInstructions[") +
+               std::to_string(index) + "]";
     }
     std::string params(std::size_t i, int row) const {
         return literal(i) ? vec4Literal(program.instructions[i].params[row])

@@ -83,6 +83,14 @@ layout(std430, binding = 0) readonly buffer SdfProgramBuffer {
 };
 
 // Data the instructions index into: polygon points (xy), GpuSdfHeader::dataCount entries.
+// The header and first SDF_UNIFORM_INSTRUCTIONS instructions of the same buffer as a uniform
+// block (kSdfUniformInstructions in engine/sdf/program.hpp): what generated code reads.
+#define SDF_UNIFORM_INSTRUCTIONS 511
+layout(std140, binding = 1) uniform SdfProgramUniforms { // kSdfProgramUniformBinding
+    uvec4 sdfUniformHeader;
+    SdfInstruction sdfUniformInstructions[SDF_UNIFORM_INSTRUCTIONS];
+};
+
 layout(std430, binding = 4) readonly buffer SdfData { // kSdfDataBinding
     vec4 sdfData[];
 };

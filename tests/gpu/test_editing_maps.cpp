@@ -49,7 +49,7 @@ TEST(EditingMaps, TheSelectionLiveDrawsTheBakedImageAndFollowsTheBuffer) {
     const SdfLiveRange live{firstShape,
                             firstShape + std::uint32_t(prepared.sdf.nodePointers.size() / 2)};
     const std::string editing = generateSdfMap(prepared.sdf, SdfStrategy::Baked, {}, live);
-    ASSERT_NE(editing.find("sdfInstructions["), std::string::npos);
+    ASSERT_NE(editing.find("sdfUniformInstructions["), std::string::npos);
 
     const FrameTargets baked =
         renderMap(prepared, generateSdfMap(prepared.sdf, SdfStrategy::Baked));

@@ -22,7 +22,9 @@ gl::Program buildLayoutProbe() {
 out vec4 color;
 void main() {
     SdfInstruction i = sdfInstructions[int(gl_FragCoord.x)];
-    color = i.params[0] + i.params[1] + i.worldToLocal[2] + i.misc + vec4(i.opcode + i.kind +
+    SdfInstruction u = sdfUniformInstructions[int(gl_FragCoord.y)];
+    color = u.params[0] + u.params[2] + u.worldToLocal[2] + u.misc +
+            vec4(u.opcode + u.kind + u.material + u.objectId + sdfUniformHeader.x) + i.params[0] + i.params[1] + i.worldToLocal[2] + i.misc + vec4(i.opcode + i.kind +
             i.material + i.objectId + sdfHeader.x) + materials[1].emissiveRoughness +
             vec4(float(materials[1].baseColorTexture.slot) + materials[1].baseColorTexture.scale +
                  materials[1].normalTexture.strength + materials[1].roughnessTexture.sharpness) +
@@ -69,6 +71,39 @@ TEST(GpuLayout, SdfInstructionMatchesTheShader) {
               base + GLint(offsetof(GpuSdfInstruction, worldToLocal)));
     EXPECT_EQ(offsetOf(p, "sdfInstructions[0].misc"),
               base + GLint(offsetof(GpuSdfInstruction, misc)));
+    expectNoGlErrors();
+}
+
+// The uniform window of the program buffer (std140) reads the same bytes as the storage view
+// (std430), and fits the size the C++ side binds.
+TEST(GpuLayout, SdfUniformInstructionsMatchTheStorageLayout) {
+    const gl::Program p = buildLayoutProbe();
+    auto uniformOffset = [&](const char* name) {
+        return resourceProperty(p, GL_UNIFORM, name, GL_OFFSET);
+    };
+    const GLint base = GLint(sizeof(GpuSdfHeader));
+    EXPECT_EQ(uniformOffset("sdfUniformHeader"), 0);
+    EXPECT_EQ(uniformOffset("sdfUniformInstructions[0].opcode"), base);
+    EXPECT_EQ(uniformOffset("sdfUniformInstructions[0].objectId"),
+              base + GLint(offsetof(GpuSdfInstruction, objectId)));
+    EXPECT_EQ(uniformOffset("sdfUniformInstructions[0].params[0]"),
+              base + GLint(offsetof(GpuSdfInstruction, params)));
+    EXPECT_EQ(
+        resourceProperty(p, GL_UNIFORM, "sdfUniformInstructions[0].params[0]", GL_ARRAY_STRIDE),
+        16);
+    EXPECT_EQ(uniformOffset("sdfUniformInstructions[0].worldToLocal[0]"),
+              base + GLint(offsetof(GpuSdfInstruction, worldToLocal)));
+    EXPECT_EQ(uniformOffset("sdfUniformInstructions[0].misc"),
+              base + GLint(offsetof(GpuSdfInstruction, misc)));
+    EXPECT_EQ(uniformOffset("sdfUniformInstructions[1].opcode"),
+              base + GLint(sizeof(GpuSdfInstruction)));
+    const GLuint block = glGetProgramResourceIndex(p.id(), GL_UNIFORM_BLOCK, "SdfProgramUniforms");
+    ASSERT_NE(block, GL_INVALID_INDEX);
+    const GLenum properties[] = {GL_BUFFER_DATA_SIZE, GL_BUFFER_BINDING};
+    GLint values[2] = {-1, -1};
+    glGetProgramResourceiv(p.id(), GL_UNIFORM_BLOCK, block, 2, properties, 2, nullptr, values);
+    EXPECT_EQ(values[0], kSdfUniformBlockBytes);
+    EXPECT_EQ(values[1], GLint(kSdfProgramUniformBinding));
     expectNoGlErrors();
 }
 

@@ -44,7 +44,7 @@ TEST(GlslCodegen, BakedCodeCallsOnlyTheUsedPrimitivesWithLiterals) {
     EXPECT_EQ(count(map, "sdSphere("), 2u); // once in sdfDistance, once in sdfSurface
     EXPECT_EQ(count(map, "sdTorus("), 2u);
     EXPECT_EQ(count(map, "sdBox("), 0u);
-    EXPECT_EQ(count(map, "sdfInstructions["), 0u) << "baked code reads no buffer";
+    EXPECT_EQ(count(map, "Instructions["), 0u) << "baked code reads no buffer";
     EXPECT_NE(map.find("sdSphere(q"), std::string::npos);
     EXPECT_NE(map.find(", 0.5)"), std::string::npos) << map; // the radius as a literal
     EXPECT_NE(map.find("sdfPointModifier("), std::string::npos) << "the twist";
@@ -124,7 +124,7 @@ TEST(GlslCodegen, LiveObjectsReadTheBufferAndKeepTheTextUnderTheirEdits) {
     for (std::size_t i = 0; i < program.instructions.size(); ++i) {
         const bool live = group.contains(program.instructions[i].objectId);
         liveInstructions += live;
-        const std::string read = "sdfInstructions[" + std::to_string(i) + "]";
+        const std::string read = "sdfUniformInstructions[" + std::to_string(i) + "]";
         EXPECT_EQ(map.find(read) != std::string::npos, live)
             << "instruction " << i << " (object " << program.instructions[i].objectId << ")";
     }
@@ -148,7 +148,22 @@ TEST(GlslCodegen, LiveObjectsReadTheBufferAndKeepTheTextUnderTheirEdits) {
     EXPECT_NE(map.find("vec4(0.300000012"), std::string::npos) << map;
 
     // Without a range, the map is the plain baked one; the buffer strategy ignores the range.
-    EXPECT_EQ(count(generateSdfMap(program, SdfStrategy::Baked, {}, {}), "sdfInstructions["), 0u);
+    EXPECT_EQ(count(generateSdfMap(program, SdfStrategy::Baked, {}, {}), "Instructions["), 0u);
     EXPECT_EQ(generateSdfMap(program, SdfStrategy::Buffer, {}, group),
               generateSdfMap(program, SdfStrategy::Buffer));
+}
+
+// Generated code reads the buffer's uniform window where it reaches (kSdfUniformInstructions),
+// the storage buffer past it (a shell's map starting far into the buffer).
+TEST(GlslCodegen, BufferReadsUseTheUniformWindowWhereItReaches) {
+    const SdfProgram program = compileText(kTwoShapes);
+    const std::string near = generateSdfMap(program, SdfStrategy::Buffer);
+    EXPECT_NE(near.find("sdfUniformInstructions[0]."), std::string::npos) << near;
+    EXPECT_EQ(count(near, "sdfInstructions["), 0u);
+    const std::size_t base = std::size_t(kSdfUniformInstructions) - 1;
+    const std::string far = generateSdfMap(program, SdfStrategy::Buffer, {"shell", base});
+    EXPECT_NE(far.find("sdfUniformInstructions[" + std::to_string(base) + "]"), std::string::npos);
+    EXPECT_NE(far.find("sdfInstructions[" + std::to_string(base + 1) + "]"), std::string::npos)
+        << far;
+    EXPECT_EQ(count(far, "Instructions[" + std::to_string(base - 1) + "]"), 0u);
 }
