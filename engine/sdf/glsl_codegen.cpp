@@ -197,6 +197,20 @@ void emitBody(std::ostream& out, const Operands& ops, bool surface) {
     out << (accumulates ? "    return best;\n" : "    return s0;\n");
 }
 
+// Is the program the bounding hierarchy's instructions only (common/sdf_parts_loop.glsl)?
+bool isPartsOnly(const SdfProgram& program) {
+    const std::vector<GpuSdfInstruction>& code = program.instructions;
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const SdfOpcode opcode = SdfOpcode(code[i].opcode);
+        if (opcode == SdfOpcode::BoundSkip || opcode == SdfOpcode::SeedBest) continue;
+        const bool leaf = opcode == SdfOpcode::Shape || opcode == SdfOpcode::Profile;
+        if (!leaf || i + 1 == code.size() || SdfOpcode(code[i + 1].opcode) != SdfOpcode::Accumulate)
+            return false;
+        ++i; // its Accumulate
+    }
+    return !code.empty();
+}
+
 } // namespace
 
 SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requested) {
@@ -224,7 +238,8 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
         for (const GpuSdfInstruction& in : program.instructions)
             if (SdfOpcode(in.opcode) == SdfOpcode::Shape) used[in.kind] = true;
         out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; })
-            << "#include \"common/sdf_interpreter.glsl\"\n";
+            << (isPartsOnly(program) ? "#include \"common/sdf_parts_loop.glsl\"\n"
+                                     : "#include \"common/sdf_interpreter.glsl\"\n");
         return out.str();
     }
     if (program.instructions.empty()) {

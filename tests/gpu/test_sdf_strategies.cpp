@@ -55,6 +55,16 @@ TEST(SdfStrategies, InterpreterAndBakedDrawTheSameImage) {
                      "strategy_interpreter_csg");
 }
 
+// A program of box tests and one-shape parts runs through the lean interpreter
+// (common/sdf_parts_loop.glsl), which must draw what generated code draws.
+TEST(SdfStrategies, PartsLoopAndBakedDrawTheSameImage) {
+    const PreparedScene prepared = openRepositoryScene("samples/bench/grid_10.json");
+    ASSERT_NE(generateSdfMap(prepared.sdf, SdfStrategy::Interpreter).find("sdf_parts_loop.glsl"),
+              std::string::npos);
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Interpreter,
+                     "strategy_parts_loop_grid_10");
+}
+
 TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
     PreparedScene prepared = openRepositoryScene("samples/scenes/csg.json");
     Renderer& renderer = sharedRenderer();

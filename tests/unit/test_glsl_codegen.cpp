@@ -98,7 +98,8 @@ TEST(GlslCodegen, VeryLargeScenesFallBackToTheInterpreter) {
     const SdfProgram large = compileText(R"({"children": [)" + children + "]}");
     EXPECT_EQ(effectiveSdfStrategy(large, SdfStrategy::Baked), SdfStrategy::Interpreter);
     const std::string map = generateSdfMap(large, SdfStrategy::Baked);
-    EXPECT_NE(map.find("#include \"common/sdf_interpreter.glsl\""), std::string::npos);
+    // (the lean interpreter: a union of shapes is box tests and parts)
+    EXPECT_NE(map.find("#include \"common/sdf_parts_loop.glsl\""), std::string::npos);
     // Its dispatch holds only the kinds the scene uses.
     EXPECT_NE(map.find("sdSphere("), std::string::npos);
     EXPECT_EQ(map.find("sdBox("), std::string::npos);
@@ -166,4 +167,21 @@ TEST(GlslCodegen, BufferReadsUseTheUniformWindowWhereItReaches) {
     EXPECT_NE(far.find("sdfInstructions[" + std::to_string(base + 1) + "]"), std::string::npos)
         << far;
     EXPECT_EQ(count(far, "Instructions[" + std::to_string(base - 1) + "]"), 0u);
+}
+
+// The interpreter strategy: the lean loop for programs of box tests and one-shape parts (what
+// large unions compile to), the generic interpreter for anything else.
+TEST(GlslCodegen, PartsOnlyProgramsGetTheLeanInterpreter) {
+    std::string children;
+    for (int i = 0; i < 6; ++i)
+        children += std::string(i ? ", " : "") +
+                    R"({"shape": "sphere", "radius": 0.1, "position": [)" + std::to_string(i) +
+                    ", 0, 0]}";
+    const SdfProgram parts = compileText(R"({"children": [)" + children + "]}");
+    const std::string lean = generateSdfMap(parts, SdfStrategy::Interpreter);
+    EXPECT_NE(lean.find("common/sdf_parts_loop.glsl"), std::string::npos) << lean;
+    EXPECT_EQ(lean.find("common/sdf_interpreter.glsl"), std::string::npos);
+    const std::string generic = generateSdfMap(compileText(kTwoShapes), SdfStrategy::Interpreter);
+    EXPECT_NE(generic.find("common/sdf_interpreter.glsl"), std::string::npos) << generic;
+    EXPECT_EQ(generic.find("sdf_parts_loop"), std::string::npos);
 }

@@ -1,0 +1,61 @@
+// The SDF map of a program made of the bounding hierarchy's instructions only: box tests,
+// seeds, and parts that are one shape (a shape or profile followed by its Accumulate), which is
+// what a large union of shapes compiles to (engine/sdf/compiler.cpp). A lean interpreter of those
+// instructions alone, without the value and point stacks and the other opcodes of the generic
+// one (common/sdf_interpreter.glsl); engine/sdf/glsl_codegen.cpp picks it when the program fits.
+// Its text depends on the primitive kinds used only. Expects `sdfPrimitive` declared before it.
+#include "common/sdf_instructions.glsl"
+
+bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
+
+// One instruction (or a shape and its Accumulate) of sdfDistance, repeated to unroll the loop:
+// llvmpipe ends a shader invocation's loops after a budget of iterations shared by every loop
+// (see common/sdf_interpreter.glsl).
+#define SDF_PARTS_STEP \
+    if (i < count) { \
+        uint op = sdfInstructions[i].opcode; \
+        if (op == SDF_OPCODE_BOUND_SKIP) { \
+            if (sdfBoundDistance(i, p) >= best) i += sdfInstructions[i].kind; \
+            i += 1u; \
+        } else if (op == SDF_OPCODE_SEED_BEST) { \
+            best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
+                                             sdfInstructions[i].params[1], \
+                                             sdfInstructions[i].params[2], \
+                                             sdfInstructions[i].misc.x)); \
+            i += 1u; \
+        } else { \
+            best = min(best, sdfLeafDistance(i, p)); \
+            i += 2u; \
+        } \
+    }
+
+float sdfDistance(vec3 p) {
+    uint count = sdfHeader.x;
+    float best = SDF_FAR;
+    for (uint i = 0u; i < count;) {
+        SDF_PARTS_STEP SDF_PARTS_STEP SDF_PARTS_STEP SDF_PARTS_STEP
+    }
+    return best;
+}
+
+// The nearest part's surface (no seeds: `best` must be a part's surface). Once per hit.
+SdfSurface sdfSurface(vec3 p) {
+    uint count = sdfHeader.x;
+    SdfSurface best = sdfEmptySurface(p);
+    for (uint i = 0u; i < count;) {
+        uint op = sdfInstructions[i].opcode;
+        if (op == SDF_OPCODE_BOUND_SKIP) {
+            if (sdfBoundDistance(i, p) >= best.distance) i += sdfInstructions[i].kind;
+            i += 1u;
+        } else if (op == SDF_OPCODE_SEED_BEST) {
+            i += 1u;
+        } else {
+            float d = sdfLeafDistance(i, p);
+            if (d < best.distance)
+                best = sdfMaterialSurface(d, sdfInstructions[i].objectId,
+                                          sdfInstructions[i].material, sdfInstructionPoint(i, p));
+            i += 2u;
+        }
+    }
+    return best;
+}
