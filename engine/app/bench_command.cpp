@@ -169,7 +169,8 @@ int runBench(std::span<const std::string> args) {
         std::string name;
         const PreparedScene* prepared;
         SdfStrategy strategy;
-        std::string program; // runs with the same program evaluate the same primitives
+        std::string program; // runs of one program through generated code (or through the
+                             // interpreter) evaluate the same primitives
         SdfLiveRange live{}; // objects read from the buffer under Baked (the editor's map)
     };
     std::vector<Variant> variants;
@@ -240,9 +241,13 @@ int runBench(std::span<const std::string> args) {
         run.stepsPerPixel = total / pixels;
         // Primitives evaluated per pixel: one frame of the instrumented march pass, once per
         // program.
-        const auto counted =
-            std::find_if(evaluations.begin(), evaluations.end(),
-                         [&](const auto& e) { return e.first == variant.program; });
+        // Only the interpreter skips parts by their boxes (sdf/glsl_codegen.hpp).
+        const bool skips =
+            strategy != kHandWritten &&
+            effectiveSdfStrategy(prepared->sdf, strategy) == SdfStrategy::Interpreter;
+        const std::string countKey = variant.program + (skips ? ", skipping" : "");
+        const auto counted = std::find_if(evaluations.begin(), evaluations.end(),
+                                          [&](const auto& e) { return e.first == countKey; });
         if (counted != evaluations.end()) {
             run.evaluationsPerPixel = counted->second;
         } else {
@@ -254,7 +259,7 @@ int runBench(std::span<const std::string> args) {
             renderer.render(gpuScene, scene.camera, scene.render, targets);
             run.evaluationsPerPixel = double(renderer.lastMarchStatistics().evaluations) / pixels;
             renderer.setCountEvaluations(false);
-            evaluations.emplace_back(variant.program, run.evaluationsPerPixel);
+            evaluations.emplace_back(countKey, run.evaluationsPerPixel);
         }
         runs.push_back(std::move(run));
     }
