@@ -203,8 +203,7 @@ void Viewer::chooseSdfMap(bool waitForBuilds) {
         const std::string error = warmer->takeError();
         if (!error.empty()) std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
     }
-    const editor::IdRange ids = editor::objectIdRange(document.scene(), document.selection);
-    const SdfLiveRange live{ids.first, ids.last};
+    const SdfLiveRange live = editor::selectionLiveRange(document.scene(), document.selection);
     const bool built = !mapBeingBuilt.empty() && warmer && warmer->isWarm(mapBeingBuilt);
     if (choiceRevision == uploadedRevision && choiceLive.first == live.first &&
         choiceLive.last == live.last && !built)

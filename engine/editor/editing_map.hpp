@@ -3,6 +3,8 @@
 // selection then changes buffer contents only, and the rest of the scene runs baked.
 #pragma once
 
+#include "editor/selection.hpp"
+#include "scene/scene.hpp"
 #include "sdf/glsl_codegen.hpp"
 #include "sdf/program.hpp"
 
@@ -16,6 +18,10 @@ struct EditingMaps {
     std::string build;  // the map to build in the background ("" when `draw` is it)
     bool baked = false; // `draw` is the baked map (with the selection live)
 };
+
+// The object ids of the selected SDF node and its subtree; empty when the selection is no SDF
+// node (a mesh, a light, nothing).
+SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection);
 
 // `live`: the selection's object ids (empty when nothing in the SDF is selected). `isReady`:
 // are a map's programs built (or warm in the driver's cache)? Scenes too large for generated

@@ -50,7 +50,7 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     bool compiled = false;
     // A small cache, the least recently used map goes first: an editing session uses the
     // buffer map of its structure and baked maps of the last few selections.
-    constexpr std::size_t kMaxCached = 8;
+    constexpr std::size_t kMaxCached = 16;
     ShaderFiles files = files_;
     files.files["generated/sdf_map.glsl"] = scene.sdfMap;
     if (!sdfPasses_.contains(scene.sdfMap)) {

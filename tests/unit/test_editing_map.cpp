@@ -5,6 +5,8 @@
 #include "scene/scene_json.hpp"
 #include "sdf/compiler.hpp"
 
+#include "sdf_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -13,23 +15,13 @@ using namespace rmsc;
 
 namespace {
 
-SdfProgram compileText(const std::string& sdfJson) {
-    Diagnostics diagnostics;
-    const std::optional<Scene> scene =
-        parseScene(R"({"version": 1, "sdf": )" + sdfJson + "}", "t.json", diagnostics);
-    EXPECT_TRUE(scene) << diagnostics.format();
-    std::optional<SdfProgram> program = compileSdf(*scene->sdf, 0, "t.json", diagnostics);
-    EXPECT_TRUE(program) << diagnostics.format();
-    return program ? std::move(*program) : SdfProgram{};
-}
-
 const char* kScene = R"({"children": [{"shape": "sphere", "radius": 0.5},
     {"shape": "box", "size": [1, 1, 1], "position": [2, 0, 0]}]})";
 
 } // namespace
 
 TEST(EditingMap, BufferUntilTheBakedMapIsReadyThenBaked) {
-    const SdfProgram program = compileText(kScene);
+    const SdfProgram program = test::compileSdfText(kScene);
     const SdfLiveRange box{kSdfIdBase + 2, kSdfIdBase + 2};
     std::set<std::string> ready;
     auto isReady = [&](const std::string& map) { return ready.contains(map); };
@@ -57,10 +49,35 @@ TEST(EditingMap, ScenesTooLargeForGeneratedCodeKeepTheInterpreter) {
     std::string children;
     for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
         children += std::string(i ? ", " : "") + R"({"shape": "sphere", "radius": 0.1})";
-    const SdfProgram large = compileText(R"({"children": [)" + children + "]}");
+    const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
     const editor::EditingMaps maps = editor::chooseEditingMaps(
         large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return true; });
     EXPECT_FALSE(maps.baked);
     EXPECT_TRUE(maps.build.empty()) << "nothing to build in the background";
     EXPECT_EQ(maps.draw, generateSdfMap(large, SdfStrategy::Interpreter));
+}
+
+// The live range is the selected node and its subtree, inclusive, and nothing for a selection
+// that is no SDF node.
+TEST(EditingMap, TheSelectionsSubtreeIsLive) {
+    Diagnostics diagnostics;
+    const std::optional<Scene> scene = parseScene(R"({"version": 1, "sdf": {"children": [
+        {"shape": "sphere"},
+        {"children": [{"shape": "box"}, {"shape": "torus"}]},
+        {"shape": "capsule"}]}})",
+                                                  "t.json", diagnostics);
+    ASSERT_TRUE(scene) << diagnostics.format();
+    // Pre-order: root 0, sphere 1, group 2, box 3, torus 4, capsule 5.
+    const SdfLiveRange group = editor::selectionLiveRange(*scene, editor::Selection::sdf({1}));
+    EXPECT_EQ(group.first, kSdfIdBase + 2);
+    EXPECT_EQ(group.last, kSdfIdBase + 4);
+    EXPECT_FALSE(group.contains(kSdfIdBase + 5)) << "the capsule is not in the group";
+    const SdfLiveRange sphere = editor::selectionLiveRange(*scene, editor::Selection::sdf({0}));
+    EXPECT_EQ(sphere.first, kSdfIdBase + 1);
+    EXPECT_EQ(sphere.last, kSdfIdBase + 1);
+    for (const editor::Selection& none : {editor::Selection::none(), editor::Selection::mesh(0)}) {
+        const SdfLiveRange live = editor::selectionLiveRange(*scene, none);
+        EXPECT_LT(live.last, live.first) << "empty";
+        EXPECT_FALSE(live.contains(0));
+    }
 }

@@ -6,6 +6,8 @@
 #include "sdf/compiler.hpp"
 #include "sdf/glsl_codegen.hpp"
 
+#include "sdf_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -13,17 +15,6 @@
 using namespace rmsc;
 
 namespace {
-
-SdfProgram compileText(const std::string& sdfJson) {
-    Diagnostics diagnostics;
-    const std::optional<Scene> scene =
-        parseScene(R"({"version": 1, "sdf": )" + sdfJson + "}", "t.json", diagnostics);
-    EXPECT_TRUE(scene) << diagnostics.format();
-    if (!scene || !scene->sdf) return {};
-    std::optional<SdfProgram> program = compileSdf(*scene->sdf, 0, "t.json", diagnostics);
-    EXPECT_TRUE(program) << diagnostics.format();
-    return program ? std::move(*program) : SdfProgram{};
-}
 
 const char* kTwoShapes = R"({"op": "smooth_union", "smoothness": 0.3, "children": [
     {"shape": "sphere", "radius": 0.5, "position": [1, 0, 0]},
@@ -40,7 +31,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 } // namespace
 
 TEST(GlslCodegen, BakedCodeCallsOnlyTheUsedPrimitivesWithLiterals) {
-    const std::string map = generateSdfMap(compileText(kTwoShapes), SdfStrategy::Baked);
+    const std::string map = generateSdfMap(test::compileSdfText(kTwoShapes), SdfStrategy::Baked);
     EXPECT_EQ(count(map, "sdSphere("), 2u); // once in sdfDistance, once in sdfSurface
     EXPECT_EQ(count(map, "sdTorus("), 2u);
     EXPECT_EQ(count(map, "sdBox("), 0u);
@@ -52,8 +43,9 @@ TEST(GlslCodegen, BakedCodeCallsOnlyTheUsedPrimitivesWithLiterals) {
 }
 
 TEST(GlslCodegen, BufferCodeKeepsItsTextUnderParameterEdits) {
-    const SdfProgram program = compileText(kTwoShapes);
-    SdfProgram edited = compileText(R"({"op": "smooth_union", "smoothness": 0.1, "children": [
+    const SdfProgram program = test::compileSdfText(kTwoShapes);
+    SdfProgram edited =
+        test::compileSdfText(R"({"op": "smooth_union", "smoothness": 0.1, "children": [
         {"shape": "sphere", "radius": 0.9, "position": [0, 2, 0], "rotation": [10, 0, 0]},
         {"shape": "torus", "major_radius": 0.2, "minor_radius": 0.05,
          "modifiers": [{"type": "twist", "amount": 10, "radius": 0.25}]}]})");
@@ -62,7 +54,7 @@ TEST(GlslCodegen, BufferCodeKeepsItsTextUnderParameterEdits) {
     EXPECT_NE(generateSdfMap(program, SdfStrategy::Baked),
               generateSdfMap(edited, SdfStrategy::Baked));
     // Another operation is another structure.
-    const SdfProgram other = compileText(R"({"op": "union", "children": [
+    const SdfProgram other = test::compileSdfText(R"({"op": "union", "children": [
         {"shape": "sphere", "radius": 0.5}, {"shape": "torus", "major_radius": 0.6,
          "minor_radius": 0.1, "modifiers": [{"type": "twist", "amount": 45, "radius": 0.7}]}]})");
     EXPECT_NE(generateSdfMap(program, SdfStrategy::Buffer),
@@ -70,7 +62,7 @@ TEST(GlslCodegen, BufferCodeKeepsItsTextUnderParameterEdits) {
 }
 
 TEST(GlslCodegen, LiteralsReadBackExactly) {
-    const SdfProgram program = compileText(
+    const SdfProgram program = test::compileSdfText(
         R"({"shape": "sphere", "radius": 0.1234567, "position": [0.3, -1e-7, 12345.678]})");
     const std::string map = generateSdfMap(program, SdfStrategy::Baked);
     const float radius = program.instructions[0].params[0].x;
@@ -95,7 +87,7 @@ TEST(GlslCodegen, VeryLargeScenesFallBackToTheInterpreter) {
         children += std::string(i ? ", " : "") +
                     R"({"shape": "sphere", "radius": 0.1, "position": [)" + std::to_string(i) +
                     ", 0, 0]}";
-    const SdfProgram large = compileText(R"({"children": [)" + children + "]}");
+    const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
     EXPECT_EQ(effectiveSdfStrategy(large, SdfStrategy::Baked), SdfStrategy::Interpreter);
     const std::string map = generateSdfMap(large, SdfStrategy::Baked);
     // (the lean interpreter: a union of shapes is box tests and parts)
@@ -103,7 +95,7 @@ TEST(GlslCodegen, VeryLargeScenesFallBackToTheInterpreter) {
     // Its dispatch holds only the kinds the scene uses.
     EXPECT_NE(map.find("sdSphere("), std::string::npos);
     EXPECT_EQ(map.find("sdBox("), std::string::npos);
-    EXPECT_EQ(effectiveSdfStrategy(compileText(kTwoShapes), SdfStrategy::Baked),
+    EXPECT_EQ(effectiveSdfStrategy(test::compileSdfText(kTwoShapes), SdfStrategy::Baked),
               SdfStrategy::Baked);
 }
 
@@ -115,7 +107,7 @@ TEST(GlslCodegen, LiveObjectsReadTheBufferAndKeepTheTextUnderTheirEdits) {
         {"op": "union", "position": [0, 1, 0], "children": [
             {"shape": "box", "size": [0.2, 0.3, 0.4]},
             {"shape": "torus", "major_radius": 0.6, "minor_radius": 0.1}]}]})";
-    const SdfProgram program = compileText(scene);
+    const SdfProgram program = test::compileSdfText(scene);
     // Pre-order: root 0, sphere 1, group 2, box 3, torus 4; the group's subtree is 2..4.
     const SdfLiveRange group{kSdfIdBase + 2, kSdfIdBase + 4};
     const std::string map = generateSdfMap(program, SdfStrategy::Baked, {}, group);
@@ -132,14 +124,16 @@ TEST(GlslCodegen, LiveObjectsReadTheBufferAndKeepTheTextUnderTheirEdits) {
     EXPECT_EQ(liveInstructions, 3u) << "box, torus and the group's union";
 
     // Moving the group and resizing the box (its subtree) keeps the text.
-    const SdfProgram editedInside = compileText(R"({"op": "smooth_union", "smoothness": 0.3,
+    const SdfProgram editedInside =
+        test::compileSdfText(R"({"op": "smooth_union", "smoothness": 0.3,
         "children": [{"shape": "sphere", "radius": 0.5, "position": [1, 0, 0]},
         {"op": "union", "position": [2, 1, 0], "rotation": [0, 30, 0], "children": [
             {"shape": "box", "size": [0.7, 0.3, 0.4]},
             {"shape": "torus", "major_radius": 0.6, "minor_radius": 0.1}]}]})");
     EXPECT_EQ(generateSdfMap(editedInside, SdfStrategy::Baked, {}, group), map);
     // The sphere is outside it: editing the sphere is new code.
-    const SdfProgram editedOutside = compileText(R"({"op": "smooth_union", "smoothness": 0.3,
+    const SdfProgram editedOutside =
+        test::compileSdfText(R"({"op": "smooth_union", "smoothness": 0.3,
         "children": [{"shape": "sphere", "radius": 0.6, "position": [1, 0, 0]},
         {"op": "union", "position": [0, 1, 0], "children": [
             {"shape": "box", "size": [0.2, 0.3, 0.4]},
@@ -157,7 +151,7 @@ TEST(GlslCodegen, LiveObjectsReadTheBufferAndKeepTheTextUnderTheirEdits) {
 // Generated code reads the buffer's uniform window where it reaches (kSdfUniformInstructions),
 // the storage buffer past it (a shell's map starting far into the buffer).
 TEST(GlslCodegen, BufferReadsUseTheUniformWindowWhereItReaches) {
-    const SdfProgram program = compileText(kTwoShapes);
+    const SdfProgram program = test::compileSdfText(kTwoShapes);
     const std::string near = generateSdfMap(program, SdfStrategy::Buffer);
     EXPECT_NE(near.find("sdfUniformInstructions[0]."), std::string::npos) << near;
     EXPECT_EQ(count(near, "sdfInstructions["), 0u);
@@ -177,11 +171,12 @@ TEST(GlslCodegen, PartsOnlyProgramsGetTheLeanInterpreter) {
         children += std::string(i ? ", " : "") +
                     R"({"shape": "sphere", "radius": 0.1, "position": [)" + std::to_string(i) +
                     ", 0, 0]}";
-    const SdfProgram parts = compileText(R"({"children": [)" + children + "]}");
+    const SdfProgram parts = test::compileSdfText(R"({"children": [)" + children + "]}");
     const std::string lean = generateSdfMap(parts, SdfStrategy::Interpreter);
     EXPECT_NE(lean.find("common/sdf_parts_loop.glsl"), std::string::npos) << lean;
     EXPECT_EQ(lean.find("common/sdf_interpreter.glsl"), std::string::npos);
-    const std::string generic = generateSdfMap(compileText(kTwoShapes), SdfStrategy::Interpreter);
+    const std::string generic =
+        generateSdfMap(test::compileSdfText(kTwoShapes), SdfStrategy::Interpreter);
     EXPECT_NE(generic.find("common/sdf_interpreter.glsl"), std::string::npos) << generic;
     EXPECT_EQ(generic.find("sdf_parts_loop"), std::string::npos);
 }
