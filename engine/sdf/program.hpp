@@ -22,7 +22,7 @@ constexpr int kSdfMaxPointStack = 16;
 // (SdfProgramUniforms in shaders/common/sdf_functions.glsl): 16 + 511 * 128 bytes, within the
 // 64 KiB uniform blocks of desktop GL 4.5 drivers. Generated code reads the instructions it can
 // from there: on llvmpipe a uniform read costs less than a storage read (the 100-shape grid's
-// buffer map: 150 ms a frame instead of 332, and 15 s instead of 47 s to build cold).
+// buffer map: 150 ms a frame instead of 332, and a cold first frame of 15 s instead of 47 s).
 constexpr int kSdfUniformInstructions = 511;
 constexpr int kSdfUniformBlockBytes = 16 + kSdfUniformInstructions * 128;
 // Most vec4 entries of the SDF data buffer (polygon points, one per entry).
