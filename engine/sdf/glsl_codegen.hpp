@@ -42,7 +42,9 @@ struct SdfLiveRange {
 };
 
 // GLSL of "generated/sdf_map.glsl" for `program` with effectiveSdfStrategy(program, strategy). The
-// Interpreter strategy's text depends only on the set of primitive kinds used; the Buffer
+// Interpreter strategy's text depends only on the set of primitive kinds used and on whether the
+// program is box tests and one-shape parts only (then the lean common/sdf_parts_loop.glsl runs
+// it, else the generic common/sdf_interpreter.glsl); the Buffer
 // strategy's only on the program's structure (opcodes, kinds, operations), so parameter and
 // transform edits keep the same text and the renderer's compiled program; the Baked strategy's on
 // everything but the numbers of the `live` objects' instructions, which it reads from the buffer
