@@ -9,6 +9,7 @@
 #include "app/viewer_script.hpp"
 #include "editor/adaptive_scale.hpp"
 #include "editor/document.hpp"
+#include "editor/editing_map.hpp"
 #include "editor/file_watcher.hpp"
 #include "editor/fly_camera.hpp"
 #include "editor/transform_gesture.hpp"
@@ -68,16 +69,18 @@ class Viewer {
     ShaderFiles shaderFiles;
     std::optional<Renderer> renderer;
     std::optional<DisplayPass> display;
-    std::optional<GpuScene> gpuScene;
-    std::optional<PreparedScene> prepared; // last scene that compiled
+    std::optional<GpuScene> gpuScene;      // what is drawn
+    std::optional<GpuScene> upload;        // the newest scene, drawn once a map for it is ready
+    std::optional<PreparedScene> prepared; // last scene that compiled (the newest)
     std::uint64_t uploadedRevision = 0;
-    // The SDF map drawn (editor/editing_map.hpp): baked with the selection live once the
-    // warmer has built it on its hidden window's context, the buffer map until then.
+    // The SDF map drawn (editor/editing_map.hpp): the best one that is ready; the warmer builds
+    // better ones on its hidden window's context meanwhile.
     std::unique_ptr<Window> warmerWindow;
     std::unique_ptr<ShaderWarmer> warmer; // after warmerWindow: goes first
-    std::string mapBeingBuilt;            // the baked map asked of the warmer ("" = none)
-    bool drawingBakedMap = false;
-    std::uint64_t choiceRevision = 0; // what the map choice was made for
+    editor::EditingMapKind drawnMap = editor::EditingMapKind::Buffer;
+    // What the map choice was made for: the revision, the selection, the warmer's finished maps.
+    std::uint64_t choiceRevision = 0;
+    std::size_t choiceBuilt = 0;
     SdfLiveRange choiceLive;
     std::optional<FrameTargets> targets;
     float lastRenderMilliseconds = 0.0f;

@@ -151,7 +151,7 @@ void Viewer::syncGpuScene() {
     static const FileSource files = editorFileSource();
     Diagnostics diagnostics;
     // Without the bounding hierarchy: its order follows where things are, and a drag must
-    // never change the program's structure (the buffer strategy below would recompile).
+    // never change the program's structure (the maps for editing would need another build).
     std::optional<PreparedScene> next =
         prepareScene(document.scene(), files, diagnostics, ShellMode::AsScene, false);
     if (!next) {
@@ -159,26 +159,14 @@ void Viewer::syncGpuScene() {
             "The scene does not compile (showing the last one that did):\n" + diagnostics.format();
         return;
     }
-    // Parameters from the buffer: a slider drag changes buffer contents only and reuses the
-    // compiled shaders; a structural edit compiles once (the renderer caches by structure).
-    GpuScene candidate = uploadScene(*next, SdfStrategy::Buffer);
-    std::string error;
-    if (renderer && !renderer->prepare(candidate, error)) {
-        sceneError =
-            "The scene's shaders do not build (showing the last scene that did):\n" + error;
-        return;
-    }
-    if (renderer && renderer->lastCompileMs() > 0.0)
-        std::fprintf(stderr, "rmsc view: frame %d: built the buffer map's shaders in %.0f ms\n",
-                     frameNumber, renderer->lastCompileMs());
-    sceneError.clear();
-    gpuScene = std::move(candidate);
+    // Drawn as soon as chooseSdfMap finds a map for it ready, which after a structural edit may
+    // take a background build: the picture on screen stays until then.
+    upload = uploadScene(*next, SdfStrategy::Buffer);
     prepared = std::move(next);
 }
 
 void Viewer::startWarmer() {
     warmer.reset(); // waits for the build it is doing
-    mapBeingBuilt.clear();
     choiceRevision = 0; // choose the map again
     std::string error;
     if (!warmerWindow) warmerWindow = Window::openHidden(error);
@@ -197,54 +185,69 @@ void Viewer::startWarmer() {
 }
 
 void Viewer::chooseSdfMap(bool waitForBuilds) {
-    if (!renderer || !gpuScene || !prepared) return;
+    if (!renderer || !prepared) return;
     if (warmer) {
         if (waitForBuilds) warmer->waitUntilIdle();
         const std::string error = warmer->takeError();
         if (!error.empty()) std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
     }
     const SdfLiveRange live = editor::selectionLiveRange(document.scene(), document.selection);
-    const bool built = !mapBeingBuilt.empty() && warmer && warmer->isWarm(mapBeingBuilt);
+    const std::size_t built = warmer ? warmer->finishedCount() : 0;
     if (choiceRevision == uploadedRevision && choiceLive.first == live.first &&
-        choiceLive.last == live.last && !built)
+        choiceLive.last == live.last && choiceBuilt == built)
         return;
     choiceRevision = uploadedRevision;
     choiceLive = live;
-    const editor::EditingMaps maps =
-        editor::chooseEditingMaps(prepared->sdf, live, [this](const std::string& map) {
-            return renderer->hasPrograms(map) || (warmer && warmer->isWarm(map));
-        });
-    mapBeingBuilt = warmer ? maps.build : std::string();
-    if (!mapBeingBuilt.empty()) {
+    choiceBuilt = built;
+    // Without a warmer, or for the first picture, every map is built here when it is drawn.
+    auto isReady = [this](const std::string& map) {
+        return !warmer || !gpuScene || renderer->hasPrograms(map) || warmer->isWarm(map);
+    };
+    editor::EditingMaps maps = editor::chooseEditingMaps(prepared->sdf, live, isReady);
+    if (warmer) {
         warmer->request(*prepared, maps.build);
-        if (waitForBuilds) {
+        if (waitForBuilds && !maps.build.empty()) {
             warmer->waitUntilIdle();
-            if (warmer->isWarm(maps.build)) { // else it failed: the buffer map stays
-                choiceRevision = 0;
-                chooseSdfMap(false);
-                return;
-            }
+            maps = editor::chooseEditingMaps(prepared->sdf, live, isReady);
+            choiceBuilt = warmer->finishedCount();
         }
     }
-    double switchMs = 0.0; // the main context's build of what the warmer built
-    if (maps.draw != gpuScene->sdfMap) {
-        std::string previous = std::exchange(gpuScene->sdfMap, maps.draw);
-        std::string error;
-        if (!renderer->prepare(*gpuScene, error)) { // not expected: the warmer built it
-            gpuScene->sdfMap = std::move(previous);
-            std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
-            return;
-        }
-        switchMs = renderer->lastCompileMs();
+    if (maps.draw.empty()) return; // nothing ready for the newest scene: its picture waits
+    const bool sameMap = gpuScene && gpuScene->sdfMap == maps.draw;
+    if (sameMap && !upload) return;
+    GpuScene& next = upload ? *upload : *gpuScene;
+    std::string previous = std::exchange(next.sdfMap, maps.draw);
+    std::string error;
+    if (!renderer->prepare(next, error)) { // not expected: maps are generated
+        next.sdfMap = std::move(previous);
+        upload.reset();
+        sceneError =
+            "The scene's shaders do not build (showing the last scene that did):\n" + error;
+        std::fprintf(stderr, "rmsc view: %s\n", sceneError.c_str());
+        return;
     }
-    if (maps.baked && !drawingBakedMap)
-        std::fprintf(stderr,
-                     "rmsc view: frame %d: drawing with the baked map (%.0f ms to switch, "
-                     "built in the background in %.0f ms)\n",
-                     frameNumber, switchMs, warmer ? warmer->lastWarmMs() : 0.0);
-    else if (!maps.baked && drawingBakedMap)
-        std::fprintf(stderr, "rmsc view: frame %d: drawing with the buffer map\n", frameNumber);
-    drawingBakedMap = maps.baked;
+    const double compileMs = renderer->lastCompileMs();
+    if (upload) {
+        gpuScene = std::move(*upload);
+        upload.reset();
+        sceneError.clear();
+        lastRenderedRevision = 0; // the picture shows an older scene: render again
+    }
+    if (sameMap) return;
+    const std::string name(editor::editingMapName(maps.kind));
+    const bool background = warmer && warmer->isWarm(maps.draw);
+    if (!background && compileMs > 0.0)
+        std::fprintf(stderr, "rmsc view: frame %d: built the %s map's shaders in %.0f ms\n",
+                     frameNumber, name.c_str(), compileMs);
+    std::fprintf(stderr, "rmsc view: frame %d: drawing with the %s map (%s)\n", frameNumber,
+                 name.c_str(),
+                 background ? ("built in the background in " +
+                               std::to_string(int(warmer->buildMs(maps.draw))) + " ms, " +
+                               std::to_string(int(compileMs)) + " ms to switch")
+                                  .c_str()
+                 : compileMs > 0 ? "built here"
+                                 : "built before");
+    drawnMap = maps.kind;
 }
 
 void Viewer::renderView() {

@@ -884,9 +884,12 @@ void Viewer::drawOverlay() {
         ImGui::Text("frame %.1f ms   render %.1f ms", frameMilliseconds, lastRenderMilliseconds);
         ImGui::Text("render scale %.0f%% (%dx%d)%s", lastRenderScale * 100.0f, w, h,
                     adaptive.enabled ? "" : "  adaptive off");
-        ImGui::Text("SDF map: %s", drawingBakedMap             ? "baked, selection live"
-                                   : warmer && !warmer->idle() ? "buffer (building the baked one)"
-                                                               : "buffer");
+        const std::string_view map = editor::editingMapName(drawnMap);
+        ImGui::Text("SDF map: %.*s%s%s", int(map.size()), map.data(),
+                    drawnMap == editor::EditingMapKind::Baked ? ", selection live" : "",
+                    upload                      ? " (the edit shows once its shaders are built)"
+                    : warmer && !warmer->idle() ? " (building better ones)"
+                                                : "");
         const char* names[] = {"colour", "normals", "depth", "object id"};
         ImGui::Text("view: %s   speed %.2f m/s", names[int(viewMode)], camera.speed);
         if (gesture.active) {

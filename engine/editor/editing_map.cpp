@@ -13,17 +13,41 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection) 
 
 EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady) {
-    EditingMaps maps;
-    maps.draw = generateSdfMap(program, SdfStrategy::Buffer);
-    if (effectiveSdfStrategy(program, SdfStrategy::Baked) != SdfStrategy::Baked) return maps;
-    std::string baked = generateSdfMap(program, SdfStrategy::Baked, {}, live);
-    if (isReady(baked)) {
-        maps.draw = std::move(baked);
-        maps.baked = true;
-    } else {
-        maps.build = std::move(baked);
+    struct Candidate {
+        std::string map;
+        EditingMapKind kind;
+    };
+    std::vector<Candidate> byPreference; // the order to draw in
+    if (effectiveSdfStrategy(program, SdfStrategy::Baked) == SdfStrategy::Baked) {
+        byPreference.push_back(
+            {generateSdfMap(program, SdfStrategy::Baked, {}, live), EditingMapKind::Baked});
+        byPreference.push_back(
+            {generateSdfMap(program, SdfStrategy::Buffer), EditingMapKind::Buffer});
     }
+    byPreference.push_back(
+        {generateSdfMap(program, SdfStrategy::Interpreter), EditingMapKind::Interpreter});
+
+    EditingMaps maps;
+    for (const EditingMapKind kind :
+         {EditingMapKind::Baked, EditingMapKind::Buffer, EditingMapKind::Interpreter})
+        for (const Candidate& candidate : byPreference)
+            if (candidate.kind == kind && !isReady(candidate.map)) maps.build.push_back(candidate.map);
+    for (Candidate& candidate : byPreference)
+        if (isReady(candidate.map)) {
+            maps.draw = std::move(candidate.map);
+            maps.kind = candidate.kind;
+            break;
+        }
     return maps;
+}
+
+std::string_view editingMapName(EditingMapKind kind) {
+    switch (kind) {
+    case EditingMapKind::Baked: return "baked";
+    case EditingMapKind::Buffer: return "buffer";
+    case EditingMapKind::Interpreter: return "interpreter";
+    }
+    return "";
 }
 
 } // namespace rmsc::editor

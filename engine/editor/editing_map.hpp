@@ -1,6 +1,9 @@
-// Which SDF map the editor draws with (sdf/glsl_codegen.hpp): the one that bakes everything but
-// the selected subtree once its programs are ready, the buffer map until then. A drag of the
-// selection then changes buffer contents only, and the rest of the scene runs baked.
+// Which SDF map the editor draws (sdf/glsl_codegen.hpp), from those whose programs are ready:
+// best the one that bakes everything but the selected subtree, so a drag of the selection
+// changes buffer contents only and the rest of the scene runs baked; then the buffer map; then
+// the interpreter, whose text depends only on the kinds of shapes used, so it is usually ready
+// after a structural edit (add, delete, duplicate, regroup) and draws the edited scene in the
+// edit's own frame. The maps that are not ready are built in the background meanwhile.
 #pragma once
 
 #include "editor/selection.hpp"
@@ -10,13 +13,23 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace rmsc::editor {
 
+enum class EditingMapKind {
+    Baked,       // baked, the selection live
+    Buffer,      // every number from the buffer
+    Interpreter, // the interpreter
+};
+
 struct EditingMaps {
-    std::string draw;   // the map to draw with now
-    std::string build;  // the map to build in the background ("" when `draw` is it)
-    bool baked = false; // `draw` is the baked map (with the selection live)
+    std::string draw; // the best map that is ready, "" when none is: keep the picture on screen
+    EditingMapKind kind = EditingMapKind::Interpreter; // what `draw` is
+    // The maps not ready, to build in the background in preference order: the baked map, the
+    // buffer map (drawn after the next change of selection), the interpreter (after the next
+    // structural edit; its first build is the slowest, up to half a minute on llvmpipe).
+    std::vector<std::string> build;
 };
 
 // The object ids of the selected SDF node and its subtree; empty when the selection is no SDF
@@ -25,8 +38,10 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection);
 
 // `live`: the selection's object ids (empty when nothing in the SDF is selected). `isReady`:
 // are a map's programs built (or warm in the driver's cache)? Scenes too large for generated
-// code get the interpreter, which never needs another build.
+// code only have the interpreter.
 EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady);
+
+std::string_view editingMapName(EditingMapKind kind); // "baked", "buffer", "interpreter"
 
 } // namespace rmsc::editor

@@ -31,13 +31,19 @@ ShaderWarmer::~ShaderWarmer() {
     thread_.join();
 }
 
-void ShaderWarmer::request(const PreparedScene& scene, const std::string& sdfMap) {
+void ShaderWarmer::request(const PreparedScene& scene, const std::vector<std::string>& sdfMaps) {
     {
         std::lock_guard lock(mutex_);
-        if (stopping_ || warm_.contains(sdfMap) || failed_.contains(sdfMap) ||
-            building_ == sdfMap || (pending_ && pending_->sdfMap == sdfMap))
-            return;
-        pending_ = Request{scene, sdfMap};
+        if (stopping_) return;
+        std::deque<std::string> wanted;
+        for (const std::string& map : sdfMaps)
+            if (!warm_.contains(map) && !failed_.contains(map) && building_ != map)
+                wanted.push_back(map);
+        if (pending_ && pending_->sdfMaps == wanted) return; // the scene too: same structure
+        if (wanted.empty())
+            pending_.reset();
+        else
+            pending_ = Request{std::make_shared<const PreparedScene>(scene), std::move(wanted)};
     }
     changed_.notify_all();
 }
@@ -62,9 +68,15 @@ std::string ShaderWarmer::takeError() {
     return std::exchange(error_, {});
 }
 
-double ShaderWarmer::lastWarmMs() const {
+std::size_t ShaderWarmer::finishedCount() const {
     std::lock_guard lock(mutex_);
-    return lastWarmMs_;
+    return finished_;
+}
+
+double ShaderWarmer::buildMs(const std::string& sdfMap) const {
+    std::lock_guard lock(mutex_);
+    const auto found = warm_.find(sdfMap);
+    return found == warm_.end() ? 0.0 : found->second;
 }
 
 void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
@@ -89,35 +101,43 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
     }
     changed_.notify_all();
     for (;;) {
-        Request request;
+        std::shared_ptr<const PreparedScene> scene;
+        std::string sdfMap;
         {
             std::unique_lock lock(mutex_);
             changed_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
             if (stopping_) break;
-            request = std::move(*pending_);
-            pending_.reset();
-            building_ = request.sdfMap;
+            sdfMap = std::move(pending_->sdfMaps.front());
+            pending_->sdfMaps.pop_front();
+            scene = pending_->scene;
+            if (pending_->sdfMaps.empty()) pending_.reset();
+            building_ = sdfMap;
         }
         const auto start = std::chrono::steady_clock::now();
         std::string failure;
         try {
-            GpuScene gpu = uploadScene(request.scene, SdfStrategy::Buffer);
-            gpu.sdfMap = request.sdfMap;
-            renderer->render(gpu, request.scene.scene.camera, request.scene.scene.render, *targets);
+            GpuScene gpu = uploadScene(*scene, SdfStrategy::Buffer);
+            gpu.sdfMap = sdfMap;
+            renderer->render(gpu, scene->scene.camera, scene->scene.render, *targets);
             glFinish(); // the draws, where the driver finishes the programs
         } catch (const std::exception& e) {
             failure = e.what();
         }
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         {
             std::lock_guard lock(mutex_);
-            std::set<std::string>& done = failure.empty() ? warm_ : failed_;
-            if (done.size() >= kMaxRemembered) done.clear();
-            done.insert(request.sdfMap);
-            if (!failure.empty()) error_ = "a background shader build failed: " + failure;
+            if (failure.empty()) {
+                if (warm_.size() >= kMaxRemembered) warm_.clear();
+                warm_[sdfMap] = ms;
+            } else {
+                if (failed_.size() >= kMaxRemembered) failed_.clear();
+                failed_.insert(sdfMap);
+                error_ = "a background shader build failed: " + failure;
+            }
+            ++finished_;
             building_.clear();
-            lastWarmMs_ =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count();
         }
         changed_.notify_all();
     }

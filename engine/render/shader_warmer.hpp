@@ -5,24 +5,28 @@
 // Renderer. That is the whole compile: drivers finish programs at their first draw (llvmpipe
 // generates its machine code there), and keep what they built in their shader cache (Mesa's on
 // disk), so when the main context then builds the same program it takes tens of milliseconds
-// instead of seconds. The editor uses it for the map that bakes everything but the selection
-// (sdf/glsl_codegen.hpp): until that map is warm it draws with the buffer map it already has.
+// instead of seconds. The editor asks it for the maps it would rather draw than the one it has
+// (editor/editing_map.hpp) and draws what it has until they are warm.
 //
-// Requests replace each other: only the newest waits, and the one being built finishes. A
-// driver without a shader cache still works, the main context then compiles as it always did.
+// A request is a list of maps built one after the other. Requests replace each other: only the
+// newest list waits, and the map being built finishes. A driver without a shader cache still
+// works, the main context then compiles as it always did.
 #pragma once
 
 #include "render/renderer.hpp"
 #include "scene/prepared_scene.hpp"
 
 #include <condition_variable>
+#include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace rmsc {
 
@@ -37,25 +41,28 @@ class ShaderWarmer {
     ShaderWarmer(const ShaderWarmer&) = delete;
     ShaderWarmer& operator=(const ShaderWarmer&) = delete;
 
-    // Builds the programs of `scene` uploaded with its maps replaced by `sdfMap` (the shells'
-    // maps are the buffer strategy's, as the editor draws them), unless that map is warm or
-    // already being built.
-    void request(const PreparedScene& scene, const std::string& sdfMap);
+    // Builds the programs of `scene` uploaded with its SDF map replaced by each of `sdfMaps` in
+    // turn (the shells' maps are the buffer strategy's, as the editor draws them), skipping maps
+    // that are warm, failed or being built. Replaces what is waiting.
+    void request(const PreparedScene& scene, const std::vector<std::string>& sdfMaps);
     // Has a request for this map finished building?
     bool isWarm(const std::string& sdfMap) const;
+    // How many maps have finished building (or failed) since the start: changes when there may be
+    // a better map to draw.
+    std::size_t finishedCount() const;
     // Started (or failed to), nothing waiting and nothing being built.
     bool idle() const;
     // Waits until idle (for scripted runs and tests).
     void waitUntilIdle() const;
     // Why the warmer stopped (no context, or a map that did not build), once; empty if it runs.
     std::string takeError();
-    // Milliseconds the last finished request took, from its start.
-    double lastWarmMs() const;
+    // Milliseconds a warm map took to build (0 when it is not warm).
+    double buildMs(const std::string& sdfMap) const;
 
   private:
     struct Request {
-        PreparedScene scene;
-        std::string sdfMap;
+        std::shared_ptr<const PreparedScene> scene; // one copy for all its maps
+        std::deque<std::string> sdfMaps;            // first first
     };
     void run(ContextBinder bindContext, ShaderFiles files);
 
@@ -63,10 +70,10 @@ class ShaderWarmer {
     mutable std::condition_variable changed_;
     std::optional<Request> pending_;
     std::string building_; // the map being built, "" when none
-    std::set<std::string> warm_;
+    std::map<std::string, double> warm_; // map, milliseconds its build took
     std::set<std::string> failed_;
     std::string error_;
-    double lastWarmMs_ = 0.0;
+    std::size_t finished_ = 0;
     bool starting_ = true; // the thread is making its context current and its renderer
     bool stopping_ = false;
     std::thread thread_; // last: starts once the rest is initialised

@@ -4,7 +4,9 @@ ball by clicking, moves it along X (G, X), undoes and redoes, rotates it a quart
 (R, Z), scales it to twice its size (S), saves. Checks the saved scene
 (parsed), the backup, that screenshots differ where the edit and the flight say they should, and
 from the viewer's log that once the ball is selected the view is drawn with the map baked but
-for the ball, and that none of the edits to the ball compiles a shader.
+for the ball, that none of the edits to the ball compiles a shader, and that a duplicate of the
+ball (a structural edit) is drawn in its own frame by the interpreter, built in the background,
+and then by the baked map of the new structure.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -96,12 +98,19 @@ def main():
         log = [(int(m.group(1)), m.group(2)) for m in
                re.finditer(r"rmsc view: frame (\d+): (.*)", run.stderr)]
         selected = 11  # the script's wait-shaders frame
+        duplicated, rebuilt = 48, 50  # the duplicate (a structural edit), then wait-shaders
         switches = [(f, what) for f, what in log if "drawing with the" in what]
         check("the baked map with the ball live is drawn from the selection on",
               any(f == selected and "baked map" in what for f, what in switches), log)
-        check("and no other map after it", not any(f > selected for f, _ in switches), log)
-        check("no shader built for an edit of the ball",
+        check("and no other map after it until the structural edit",
+              not any(selected < f < duplicated for f, _ in switches), log)
+        check("no shader built on the drawing thread from the selection on",
               not any(f >= selected and what.startswith("built") for f, what in log), log)
+        check("the duplicate is drawn in its own frame by the interpreter, built in the background",
+              any(f == duplicated and "interpreter map (built in the background" in what
+                  for f, what in switches), log)
+        check("then by the baked map of the new structure",
+              any(duplicated < f <= rebuilt and "baked map" in what for f, what in switches), log)
 
         saved = json.load(open(scene))
         ball = saved["sdf"]["children"][0]

@@ -83,15 +83,24 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     const std::string a = mapFor(kSdfIdBase + 1), b = mapFor(kSdfIdBase + 2),
                       c = mapFor(kSdfIdBase + 3);
     ShaderWarmer warmer(secondaryContext(), ShaderFiles::embedded());
-    warmer.request(prepared, a);
-    warmer.request(prepared, b);
-    warmer.request(prepared, c);
+    warmer.request(prepared, {a});
+    warmer.request(prepared, {b});
+    warmer.request(prepared, {c});
     warmer.waitUntilIdle();
     EXPECT_TRUE(warmer.idle());
     EXPECT_EQ(warmer.takeError(), "");
     EXPECT_TRUE(warmer.isWarm(c)) << "the newest request is built";
     EXPECT_FALSE(warmer.isWarm(a) && warmer.isWarm(b)) << "b replaced a, or c replaced b";
-    EXPECT_GT(warmer.lastWarmMs(), 0.0);
+    EXPECT_GT(warmer.buildMs(c), 0.0);
+    EXPECT_EQ(warmer.buildMs(c + "\n"), 0.0) << "not warm";
+
+    // A request is a list built in order; maps already warm are skipped.
+    const std::size_t finished = warmer.finishedCount();
+    const std::string d = mapFor(kSdfIdBase + 4), e = mapFor(kSdfIdBase + 5);
+    warmer.request(prepared, {c, d, e});
+    warmer.waitUntilIdle();
+    EXPECT_TRUE(warmer.isWarm(d) && warmer.isWarm(e));
+    EXPECT_EQ(warmer.finishedCount(), finished + 2) << "c was warm already";
 
     // The map the warmer built is one the tests' context builds and draws.
     GpuScene gpu = uploadScene(prepared, SdfStrategy::Baked);
@@ -101,13 +110,13 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
 
     // A map that does not build is reported, not retried, and the warmer goes on.
     const std::string broken = c + "\nthis is not GLSL\n";
-    warmer.request(prepared, broken);
+    warmer.request(prepared, {broken});
     warmer.waitUntilIdle();
     EXPECT_FALSE(warmer.isWarm(broken));
     EXPECT_NE(warmer.takeError().find("background shader build failed"), std::string::npos);
-    warmer.request(prepared, broken);
+    warmer.request(prepared, {broken});
     EXPECT_TRUE(warmer.idle()) << "a failed map is not asked for again";
-    warmer.request(prepared, a);
+    warmer.request(prepared, {a});
     warmer.waitUntilIdle();
     EXPECT_TRUE(warmer.isWarm(a));
     expectNoGlErrors();
@@ -124,7 +133,7 @@ TEST(ShaderWarmer, WithoutAContextItSaysSoAndIgnoresRequests) {
     warmer.waitUntilIdle();
     EXPECT_NE(warmer.takeError().find("no context for this test"), std::string::npos);
     const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Baked);
-    warmer.request(prepared, map);
+    warmer.request(prepared, {map});
     EXPECT_TRUE(warmer.idle());
     EXPECT_FALSE(warmer.isWarm(map));
 }

@@ -1,6 +1,5 @@
-// The editor's choice of SDF map (editor/editing_map.hpp): the buffer map until the baked map
-// with the selection live is ready, then that one; the interpreter for scenes too large for
-// generated code.
+// The editor's choice of SDF map (editor/editing_map.hpp): the best of the maps that are ready,
+// the others to build; the interpreter only for scenes too large for generated code.
 #include "editor/editing_map.hpp"
 #include "scene/scene_json.hpp"
 #include "sdf/compiler.hpp"
@@ -20,41 +19,71 @@ const char* kScene = R"({"children": [{"shape": "sphere", "radius": 0.5},
 
 } // namespace
 
-TEST(EditingMap, BufferUntilTheBakedMapIsReadyThenBaked) {
+// The best ready map is drawn, baked (selection live) before buffer before interpreter; the
+// rest is built in the same order; nothing ready draws nothing new.
+TEST(EditingMap, TheBestReadyMapIsDrawnAndTheOthersBuilt) {
     const SdfProgram program = test::compileSdfText(kScene);
     const SdfLiveRange box{kSdfIdBase + 2, kSdfIdBase + 2};
+    const std::string baked = generateSdfMap(program, SdfStrategy::Baked, {}, box);
+    const std::string buffer = generateSdfMap(program, SdfStrategy::Buffer);
+    const std::string interpreter = generateSdfMap(program, SdfStrategy::Interpreter);
     std::set<std::string> ready;
     auto isReady = [&](const std::string& map) { return ready.contains(map); };
+    using Kind = editor::EditingMapKind;
 
-    const editor::EditingMaps before = editor::chooseEditingMaps(program, box, isReady);
-    EXPECT_EQ(before.draw, generateSdfMap(program, SdfStrategy::Buffer));
-    EXPECT_FALSE(before.baked);
-    EXPECT_EQ(before.build, generateSdfMap(program, SdfStrategy::Baked, {}, box));
+    const editor::EditingMaps none = editor::chooseEditingMaps(program, box, isReady);
+    EXPECT_EQ(none.draw, "") << "nothing is ready: the picture on screen stays";
+    EXPECT_EQ(none.build, (std::vector<std::string>{baked, buffer, interpreter}));
 
-    ready.insert(before.build);
-    const editor::EditingMaps after = editor::chooseEditingMaps(program, box, isReady);
-    EXPECT_EQ(after.draw, before.build);
-    EXPECT_TRUE(after.baked);
-    EXPECT_TRUE(after.build.empty());
+    ready.insert(interpreter); // what a structural edit finds: the kinds did not change
+    const editor::EditingMaps structural = editor::chooseEditingMaps(program, box, isReady);
+    EXPECT_EQ(structural.draw, interpreter);
+    EXPECT_EQ(structural.kind, Kind::Interpreter);
+    EXPECT_EQ(structural.build, (std::vector<std::string>{baked, buffer}));
 
-    // Another selection is another baked map, not built yet.
+    ready.insert(buffer);
+    const editor::EditingMaps buffered = editor::chooseEditingMaps(program, box, isReady);
+    EXPECT_EQ(buffered.draw, buffer);
+    EXPECT_EQ(buffered.kind, Kind::Buffer);
+    EXPECT_EQ(buffered.build, std::vector<std::string>{baked});
+
+    ready.insert(baked);
+    const editor::EditingMaps best = editor::chooseEditingMaps(program, box, isReady);
+    EXPECT_EQ(best.draw, baked);
+    EXPECT_EQ(best.kind, Kind::Baked);
+    EXPECT_TRUE(best.build.empty());
+
+    // Another selection is another baked map, not built yet: the buffer map draws meanwhile.
     const SdfLiveRange sphere{kSdfIdBase + 1, kSdfIdBase + 1};
     const editor::EditingMaps other = editor::chooseEditingMaps(program, sphere, isReady);
-    EXPECT_FALSE(other.baked);
-    EXPECT_NE(other.build, before.build);
-    EXPECT_FALSE(other.build.empty());
+    EXPECT_EQ(other.draw, buffer);
+    ASSERT_EQ(other.build.size(), 1u);
+    EXPECT_NE(other.build[0], baked);
+
+    // A structural edit (a third shape) of the same kinds: only the interpreter is ready.
+    const SdfProgram grown = test::compileSdfText(R"({"children": [
+        {"shape": "sphere", "radius": 0.5}, {"shape": "box", "size": [1, 1, 1]},
+        {"shape": "sphere", "radius": 0.2, "position": [0, 2, 0]}]})");
+    const editor::EditingMaps edited = editor::chooseEditingMaps(grown, box, isReady);
+    EXPECT_EQ(edited.draw, interpreter) << "the interpreter's text names no instruction count";
+    EXPECT_EQ(edited.kind, Kind::Interpreter);
+    EXPECT_EQ(edited.build.size(), 2u);
 }
 
-TEST(EditingMap, ScenesTooLargeForGeneratedCodeKeepTheInterpreter) {
+TEST(EditingMap, ScenesTooLargeForGeneratedCodeOnlyHaveTheInterpreter) {
     std::string children;
     for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
         children += std::string(i ? ", " : "") + R"({"shape": "sphere", "radius": 0.1})";
     const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
+    const std::string interpreter = generateSdfMap(large, SdfStrategy::Interpreter);
     const editor::EditingMaps maps = editor::chooseEditingMaps(
+        large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return false; });
+    EXPECT_EQ(maps.draw, "");
+    EXPECT_EQ(maps.build, std::vector<std::string>{interpreter});
+    const editor::EditingMaps ready = editor::chooseEditingMaps(
         large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return true; });
-    EXPECT_FALSE(maps.baked);
-    EXPECT_TRUE(maps.build.empty()) << "nothing to build in the background";
-    EXPECT_EQ(maps.draw, generateSdfMap(large, SdfStrategy::Interpreter));
+    EXPECT_EQ(ready.draw, interpreter);
+    EXPECT_TRUE(ready.build.empty()) << "nothing to build in the background";
 }
 
 // The live range is the selected node and its subtree, inclusive, and nothing for a selection
