@@ -70,8 +70,12 @@ class Viewer {
     std::optional<Renderer> renderer;
     std::optional<DisplayPass> display;
     std::optional<GpuScene> gpuScene;      // what is drawn
-    std::optional<GpuScene> upload;        // the newest scene, drawn once a map for it is ready
-    std::optional<PreparedScene> prepared; // last scene that compiled (the newest)
+    std::optional<PreparedScene> prepared; // last scene that compiled (the newest), its SDF
+                                           // without the bounding hierarchy (generated code's)
+    SdfProgram boundedSdf;                 // the same SDF with it, what the interpreter runs
+    bool sceneChanged = false; // `prepared` is newer than what is drawn: it shows once a map
+                               // for it is ready
+    bool drawnBounded = false; // gpuScene holds boundedSdf (the interpreter draws)
     std::uint64_t uploadedRevision = 0;
     // The SDF map drawn (editor/editing_map.hpp): the best one that is ready; the warmer builds
     // better ones on its hidden window's context meanwhile.

@@ -11,6 +11,7 @@
 #include "render/frame.hpp"
 #include "render/readback.hpp"
 #include "scene/scene_json.hpp"
+#include "sdf/compiler.hpp"
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
@@ -159,14 +160,23 @@ void Viewer::syncGpuScene() {
             "The scene does not compile (showing the last one that did):\n" + diagnostics.format();
         return;
     }
+    // The interpreter's program: with the hierarchy, the interpreter skips parts by their boxes,
+    // and its text stays the same whatever the order.
+    boundedSdf = {};
+    if (document.scene().sdf && !next->sdf.instructions.empty())
+        if (std::optional<CompiledSdfScene> compiled = compileSdfScene(
+                *document.scene().sdf, std::uint32_t(document.scene().materials.size()),
+                document.scene().file.string(), diagnostics, {.bounds = true}))
+            boundedSdf = std::move(compiled->main);
+    if (boundedSdf.instructions.empty()) boundedSdf = next->sdf;
     // Drawn as soon as chooseSdfMap finds a map for it ready, which after a structural edit may
     // take a background build: the picture on screen stays until then.
-    upload = uploadScene(*next, SdfStrategy::Buffer);
     prepared = std::move(next);
+    sceneChanged = true;
 }
 
 void Viewer::startWarmer() {
-    warmer.reset(); // waits for the build it is doing
+    warmer.reset();     // waits for the build it is doing
     choiceRevision = 0; // choose the map again
     std::string error;
     if (!warmerWindow) warmerWindow = Window::openHidden(error);
@@ -200,38 +210,49 @@ void Viewer::chooseSdfMap(bool waitForBuilds) {
     choiceLive = live;
     choiceBuilt = built;
     // Without a warmer, or for the first picture, every map is built here when it is drawn.
-    auto isReady = [this](const std::string& map) {
-        return !warmer || !gpuScene || renderer->hasPrograms(map) || warmer->isWarm(map);
+    const bool first = !gpuScene;
+    if (first) choiceRevision = 0; // choose again next frame: the other maps build meanwhile
+    auto isReady = [this, first](const std::string& map) {
+        return !warmer || first || renderer->hasPrograms(map) || warmer->isWarm(map);
     };
-    editor::EditingMaps maps = editor::chooseEditingMaps(prepared->sdf, live, isReady);
+    editor::EditingMaps maps = editor::chooseEditingMaps(prepared->sdf, boundedSdf, live, isReady);
     if (warmer) {
         warmer->request(*prepared, maps.build);
         if (waitForBuilds && !maps.build.empty()) {
             warmer->waitUntilIdle();
-            maps = editor::chooseEditingMaps(prepared->sdf, live, isReady);
+            maps = editor::chooseEditingMaps(prepared->sdf, boundedSdf, live, isReady);
             choiceBuilt = warmer->finishedCount();
         }
     }
-    if (maps.draw.empty()) return; // nothing ready for the newest scene: its picture waits
+    if (maps.draw.empty() || (!sceneChanged && !gpuScene))
+        return; // nothing ready for the newest scene: the old picture stays
     const bool sameMap = gpuScene && gpuScene->sdfMap == maps.draw;
-    if (sameMap && !upload) return;
-    GpuScene& next = upload ? *upload : *gpuScene;
+    const bool bounded = maps.kind == editor::EditingMapKind::Interpreter;
+    if (sameMap && !sceneChanged) return;
+    std::optional<GpuScene> fresh; // a new upload: a newer scene, or the other program
+    if (sceneChanged || bounded != drawnBounded) {
+        if (bounded) std::swap(prepared->sdf, boundedSdf);
+        fresh = uploadScene(*prepared, SdfStrategy::Buffer);
+        if (bounded) std::swap(prepared->sdf, boundedSdf);
+    }
+    GpuScene& next = fresh ? *fresh : *gpuScene;
     std::string previous = std::exchange(next.sdfMap, maps.draw);
     std::string error;
     if (!renderer->prepare(next, error)) { // not expected: maps are generated
         next.sdfMap = std::move(previous);
-        upload.reset();
+        sceneChanged = false;
         sceneError =
             "The scene's shaders do not build (showing the last scene that did):\n" + error;
         std::fprintf(stderr, "rmsc view: %s\n", sceneError.c_str());
         return;
     }
     const double compileMs = renderer->lastCompileMs();
-    if (upload) {
-        gpuScene = std::move(*upload);
-        upload.reset();
-        sceneError.clear();
-        lastRenderedRevision = 0; // the picture shows an older scene: render again
+    if (fresh) {
+        gpuScene = std::move(*fresh);
+        drawnBounded = bounded;
+        if (sceneChanged) sceneError.clear();
+        sceneChanged = false;
+        lastRenderedRevision = 0; // the picture may show an older scene: render again
     }
     if (sameMap) return;
     const std::string name(editor::editingMapName(maps.kind));

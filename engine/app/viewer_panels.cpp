@@ -886,8 +886,10 @@ void Viewer::drawOverlay() {
                     adaptive.enabled ? "" : "  adaptive off");
         const std::string_view map = editor::editingMapName(drawnMap);
         ImGui::Text("SDF map: %.*s%s%s", int(map.size()), map.data(),
-                    drawnMap == editor::EditingMapKind::Baked ? ", selection live" : "",
-                    upload                      ? " (the edit shows once its shaders are built)"
+                    drawnMap == editor::EditingMapKind::Baked && choiceLive.first <= choiceLive.last
+                        ? ", selection live"
+                        : "",
+                    sceneChanged ? " (the newest scene shows once its shaders are built)"
                     : warmer && !warmer->idle() ? " (building better ones)"
                                                 : "");
         const char* names[] = {"colour", "normals", "depth", "object id"};

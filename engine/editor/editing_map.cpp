@@ -11,7 +11,8 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection) 
     return ids.last > ids.first ? SdfLiveRange{ids.first, ids.last - 1} : SdfLiveRange{};
 }
 
-EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfLiveRange& live,
+EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& interpreted,
+                              const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady) {
     struct Candidate {
         std::string map;
@@ -25,13 +26,14 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfLiveRange& liv
             {generateSdfMap(program, SdfStrategy::Buffer), EditingMapKind::Buffer});
     }
     byPreference.push_back(
-        {generateSdfMap(program, SdfStrategy::Interpreter), EditingMapKind::Interpreter});
+        {generateSdfMap(interpreted, SdfStrategy::Interpreter), EditingMapKind::Interpreter});
 
     EditingMaps maps;
     for (const EditingMapKind kind :
          {EditingMapKind::Baked, EditingMapKind::Buffer, EditingMapKind::Interpreter})
         for (const Candidate& candidate : byPreference)
-            if (candidate.kind == kind && !isReady(candidate.map)) maps.build.push_back(candidate.map);
+            if (candidate.kind == kind && !isReady(candidate.map))
+                maps.build.push_back(candidate.map);
     for (Candidate& candidate : byPreference)
         if (isReady(candidate.map)) {
             maps.draw = std::move(candidate.map);
@@ -43,9 +45,12 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfLiveRange& liv
 
 std::string_view editingMapName(EditingMapKind kind) {
     switch (kind) {
-    case EditingMapKind::Baked: return "baked";
-    case EditingMapKind::Buffer: return "buffer";
-    case EditingMapKind::Interpreter: return "interpreter";
+    case EditingMapKind::Baked:
+        return "baked";
+    case EditingMapKind::Buffer:
+        return "buffer";
+    case EditingMapKind::Interpreter:
+        return "interpreter";
     }
     return "";
 }

@@ -36,10 +36,14 @@ struct EditingMaps {
 // node (a mesh, a light, nothing).
 SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection);
 
-// `live`: the selection's object ids (empty when nothing in the SDF is selected). `isReady`:
-// are a map's programs built (or warm in the driver's cache)? Scenes too large for generated
-// code only have the interpreter.
-EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfLiveRange& live,
+// `program`: the tree as generated code runs it (the editor compiles it without the bounding
+// hierarchy, whose order follows where parts are). `interpreted`: the same tree as the
+// interpreter runs it, with the hierarchy (the interpreter's text does not depend on the order,
+// and the hierarchy lets it skip parts). `live`: the selection's object ids (empty when nothing
+// in the SDF is selected). `isReady`: are a map's programs built (or warm in the driver's
+// cache)? Scenes too large for generated code only have the interpreter.
+EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& interpreted,
+                              const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady);
 
 std::string_view editingMapName(EditingMapKind kind); // "baked", "buffer", "interpreter"

@@ -69,7 +69,7 @@ class ShaderWarmer {
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;
     std::optional<Request> pending_;
-    std::string building_; // the map being built, "" when none
+    std::string building_;               // the map being built, "" when none
     std::map<std::string, double> warm_; // map, milliseconds its build took
     std::set<std::string> failed_;
     std::string error_;

@@ -31,31 +31,32 @@ TEST(EditingMap, TheBestReadyMapIsDrawnAndTheOthersBuilt) {
     auto isReady = [&](const std::string& map) { return ready.contains(map); };
     using Kind = editor::EditingMapKind;
 
-    const editor::EditingMaps none = editor::chooseEditingMaps(program, box, isReady);
+    const editor::EditingMaps none = editor::chooseEditingMaps(program, program, box, isReady);
     EXPECT_EQ(none.draw, "") << "nothing is ready: the picture on screen stays";
     EXPECT_EQ(none.build, (std::vector<std::string>{baked, buffer, interpreter}));
 
     ready.insert(interpreter); // what a structural edit finds: the kinds did not change
-    const editor::EditingMaps structural = editor::chooseEditingMaps(program, box, isReady);
+    const editor::EditingMaps structural =
+        editor::chooseEditingMaps(program, program, box, isReady);
     EXPECT_EQ(structural.draw, interpreter);
     EXPECT_EQ(structural.kind, Kind::Interpreter);
     EXPECT_EQ(structural.build, (std::vector<std::string>{baked, buffer}));
 
     ready.insert(buffer);
-    const editor::EditingMaps buffered = editor::chooseEditingMaps(program, box, isReady);
+    const editor::EditingMaps buffered = editor::chooseEditingMaps(program, program, box, isReady);
     EXPECT_EQ(buffered.draw, buffer);
     EXPECT_EQ(buffered.kind, Kind::Buffer);
     EXPECT_EQ(buffered.build, std::vector<std::string>{baked});
 
     ready.insert(baked);
-    const editor::EditingMaps best = editor::chooseEditingMaps(program, box, isReady);
+    const editor::EditingMaps best = editor::chooseEditingMaps(program, program, box, isReady);
     EXPECT_EQ(best.draw, baked);
     EXPECT_EQ(best.kind, Kind::Baked);
     EXPECT_TRUE(best.build.empty());
 
     // Another selection is another baked map, not built yet: the buffer map draws meanwhile.
     const SdfLiveRange sphere{kSdfIdBase + 1, kSdfIdBase + 1};
-    const editor::EditingMaps other = editor::chooseEditingMaps(program, sphere, isReady);
+    const editor::EditingMaps other = editor::chooseEditingMaps(program, program, sphere, isReady);
     EXPECT_EQ(other.draw, buffer);
     ASSERT_EQ(other.build.size(), 1u);
     EXPECT_NE(other.build[0], baked);
@@ -64,10 +65,24 @@ TEST(EditingMap, TheBestReadyMapIsDrawnAndTheOthersBuilt) {
     const SdfProgram grown = test::compileSdfText(R"({"children": [
         {"shape": "sphere", "radius": 0.5}, {"shape": "box", "size": [1, 1, 1]},
         {"shape": "sphere", "radius": 0.2, "position": [0, 2, 0]}]})");
-    const editor::EditingMaps edited = editor::chooseEditingMaps(grown, box, isReady);
+    const editor::EditingMaps edited = editor::chooseEditingMaps(grown, grown, box, isReady);
     EXPECT_EQ(edited.draw, interpreter) << "the interpreter's text names no instruction count";
     EXPECT_EQ(edited.kind, Kind::Interpreter);
     EXPECT_EQ(edited.build.size(), 2u);
+
+    // The interpreter's map is that of the program the interpreter runs (the one with the
+    // bounding hierarchy in the editor), the generated maps those of the other.
+    const SdfProgram torus = test::compileSdfText(R"({"shape": "torus"})");
+    const editor::EditingMaps split = editor::chooseEditingMaps(
+        program, torus, box, [&](const std::string& map) { return map != baked; });
+    EXPECT_EQ(split.draw, buffer);
+    EXPECT_EQ(split.build, std::vector<std::string>{baked});
+    const editor::EditingMaps interpreted =
+        editor::chooseEditingMaps(program, torus, box, [&](const std::string& map) {
+            return map.find("strategy interpreter") != std::string::npos;
+        });
+    EXPECT_EQ(interpreted.draw, generateSdfMap(torus, SdfStrategy::Interpreter));
+    EXPECT_NE(interpreted.draw, interpreter);
 }
 
 TEST(EditingMap, ScenesTooLargeForGeneratedCodeOnlyHaveTheInterpreter) {
@@ -77,11 +92,11 @@ TEST(EditingMap, ScenesTooLargeForGeneratedCodeOnlyHaveTheInterpreter) {
     const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
     const std::string interpreter = generateSdfMap(large, SdfStrategy::Interpreter);
     const editor::EditingMaps maps = editor::chooseEditingMaps(
-        large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return false; });
+        large, large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return false; });
     EXPECT_EQ(maps.draw, "");
     EXPECT_EQ(maps.build, std::vector<std::string>{interpreter});
     const editor::EditingMaps ready = editor::chooseEditingMaps(
-        large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return true; });
+        large, large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return true; });
     EXPECT_EQ(ready.draw, interpreter);
     EXPECT_TRUE(ready.build.empty()) << "nothing to build in the background";
 }
