@@ -152,26 +152,27 @@ int runBench(std::span<const std::string> args) {
     // With every strategy, the interpreter also runs without the bounding hierarchy
     // (SdfCompileOptions::bounds): the baseline the hierarchy is measured against.
     // And after a structural edit (the last child of the root duplicated), the interpreter
-    // draws that tree at once, as the viewer does while generated code for it builds in the
-    // background (editor/editing_map.hpp): the row's build time is what the edit compiles.
+    // draws that tree, with the hierarchy, at once, as the viewer does while generated code for
+    // it builds in the background (editor/editing_map.hpp): the row's build time is what the
+    // edit compiles.
     std::optional<PreparedScene> unbounded, edited;
-    auto compileWithoutBounds = [](PreparedScene& prepared) {
+    auto compileSdf = [](PreparedScene& prepared, bool bounds) {
         Diagnostics diagnostics;
         const auto materials = std::uint32_t(prepared.scene.materials.size());
         std::optional<CompiledSdfScene> compiled =
             compileSdfScene(*prepared.scene.sdf, materials, prepared.scene.file.string(),
-                            diagnostics, {.bounds = false});
+                            diagnostics, {.bounds = bounds});
         if (compiled) prepared.sdf = std::move(compiled->main);
         return compiled.has_value();
     };
     if (all && session.prepared->scene.sdf) {
         unbounded = *session.prepared;
-        compileWithoutBounds(*unbounded);
-        if (!unbounded->scene.sdf->children.empty()) {
-            edited = *unbounded;
+        compileSdf(*unbounded, false);
+        if (!session.prepared->scene.sdf->children.empty()) {
+            edited = *session.prepared;
             SdfNode& root = *edited->scene.sdf;
             root.children.push_back(root.children.back());
-            if (!compileWithoutBounds(*edited)) edited.reset();
+            if (!compileSdf(*edited, true)) edited.reset();
         }
     }
 

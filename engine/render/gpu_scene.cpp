@@ -106,6 +106,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     gpu.sdfProgram = createHeaderedBuffer(sdfHeader, instructions, kSdfUniformBlockBytes);
     gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
     gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());
+    gpu.sdf = prepared.sdf;
 
     const std::vector<GpuMaterial> materials = packMaterials(prepared.materials);
     for (const TextureImage& texture : prepared.textures)

@@ -51,7 +51,9 @@ struct GpuScene {
     // kSdfMaterialTextureFirstUnit + slot by bindBuffers.
     std::vector<gl::Texture> materialTextures;
     int sdfInstructionCount = 0;
-    std::string sdfMap;           // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
+    SdfProgram sdf;     // the scene's program (not the shells'), kept for the interpreter's first
+                        // guess of the nearest part (sdfNearestLeaf, per frame)
+    std::string sdfMap; // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
     std::vector<GpuShell> shells; // their instructions follow the scene's in sdfProgram
 
     // Lighting: the shadow-map views planned from the lights and the mesh bounds, the

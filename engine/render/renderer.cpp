@@ -1,6 +1,8 @@
 // Frame orchestration.
 #include "render/renderer.hpp"
 
+#include "sdf/cpu_eval.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -103,6 +105,7 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     GpuFrame frame = packFrame(frameCamera, settings, width, height);
     packEnvironment(scene.environment, scene.skyLevels, frame);
     frame.shadowMap.x = settings.shadows.enabled ? float(scene.shadowMapSize) : 0.0f;
+    frame.viewport.z = float(sdfNearestLeaf(scene.sdf, frameCamera.position)); // ~0u: 2^32
     glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(GpuFrame), &frame);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frameBuffer_.id());
     scene.bindBuffers();

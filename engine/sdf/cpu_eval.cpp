@@ -7,6 +7,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace rmsc {
 namespace {
@@ -345,6 +346,21 @@ float seedDistance(const GpuSdfInstruction& in, glm::vec3 p) {
 }
 
 } // namespace
+
+std::uint32_t sdfNearestLeaf(const SdfProgram& program, glm::vec3 p) {
+    std::uint32_t nearest = ~0u;
+    float best = std::numeric_limits<float>::infinity();
+    for (std::size_t i = 0; i < program.instructions.size(); ++i) {
+        const GpuSdfInstruction& instruction = program.instructions[i];
+        if (!isLeaf(instruction)) continue;
+        const float d = leafDistance(program, instruction, p);
+        if (d < best) {
+            best = d;
+            nearest = std::uint32_t(i);
+        }
+    }
+    return nearest;
+}
 
 float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
     if (program.instructions.empty()) return kSdfFar;

@@ -27,6 +27,11 @@ struct SdfSurface {
 // `evaluations`, when given, is increased by the number of primitives evaluated (parts a
 // program's bounds skip are not).
 float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations = nullptr);
+// The shape or profile instruction whose own distance at p is the smallest (its index; ~0u when
+// the program has none). In a program of one-shape parts (what the lean interpreter runs,
+// shaders/common/sdf_parts_loop.glsl) that is the part nearest p: the interpreter evaluates the
+// one nearest the camera first.
+std::uint32_t sdfNearestLeaf(const SdfProgram& program, glm::vec3 p);
 // `materials` is indexed by GpuSdfInstruction::material.
 SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p);
 // Normalized gradient by the tetrahedron technique (4 evaluations; Quilez, "normals for an SDF").

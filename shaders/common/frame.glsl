@@ -9,7 +9,8 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec4 ambient;        // rgb = ambient light
     vec4 march;          // x = max steps, y = max distance, z = surface epsilon,
                          // w = over-relaxation of the march steps
-    vec4 viewport;       // x = width, y = height
+    vec4 viewport;       // x = width, y = height, z = the instruction of the SDF part nearest
+                         // the camera (common/sdf_parts_loop.glsl; 2^32 when none)
     vec4 sky;            // x = sky type (0 none, 1 constant, 2 gradient, 3 image), y = intensity,
                          // z = image sky's highest mip level, w = image rotation (radians)
     vec4 skyZenith;      // rgb = constant sky colour, or the gradient's zenith

@@ -33,8 +33,9 @@ bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
         } \
     }
 
-// The part nearest to the point sdfDistance was last asked about (its instruction index; none
-// at first). Consecutive points of a march, a normal or a shadow ray are close, so it is usually
+// The part nearest to the point sdfDistance was last asked about (its instruction index; at
+// first the part nearest the camera, which the renderer finds on the CPU, where every
+// pixel's first march step is). Consecutive points of a march, a normal or a shadow ray are close, so it is usually
 // the nearest part again: evaluated first, it makes `best` tight from the start and the box
 // tests skip nearly every other part, where the program's fixed order alone lets every part
 // nearer than the ones before it through. The value is the same: `best` is always some part's
@@ -46,7 +47,8 @@ float sdfDistance(vec3 p) {
     uint count = sdfHeader.x;
     float best = SDF_FAR;
     uint nearest = sdfNearestPart;
-    if (nearest < count) best = sdfLeafDistance(nearest, p);
+    if (nearest == 0xffffffffu && frame.viewport.z < float(count)) nearest = uint(frame.viewport.z);
+    if (nearest < count && sdfIsLeaf(nearest)) best = sdfLeafDistance(nearest, p);
     for (uint i = 0u; i < count;) {
         SDF_PARTS_STEP SDF_PARTS_STEP SDF_PARTS_STEP SDF_PARTS_STEP
     }

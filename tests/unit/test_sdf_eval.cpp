@@ -189,3 +189,19 @@ TEST(SdfEval, CompiledSceneCastsLikeTheTree) {
     ASSERT_TRUE(hit);
     EXPECT_NEAR(hit->t, 5.0f, 5.0f * RenderSettings{}.surfaceEpsilon);
 }
+
+// The part nearest a point (the lean interpreter's first guess): the leaf with the smallest
+// distance there, whatever its place in the program; none in a program without leaves.
+TEST(SdfEval, NearestLeafIsTheLeafNearestThePoint) {
+    SdfProgram program;
+    program.instructions.push_back(shapeAt(PrimitiveId::Sphere, {0.5f}, {-3, 0, 0}));
+    program.instructions.push_back(combine(SdfOp::Union));
+    program.instructions.push_back(shapeAt(PrimitiveId::Sphere, {0.5f}, {0, 0, 0}));
+    program.instructions.push_back(combine(SdfOp::Union));
+    program.instructions.push_back(shapeAt(PrimitiveId::Sphere, {2.0f}, {3, 0, 0}));
+    EXPECT_EQ(sdfNearestLeaf(program, {-2.9f, 0, 0}), 0u);
+    EXPECT_EQ(sdfNearestLeaf(program, {0, 0.2f, 0}), 2u);
+    // Nearer the middle sphere's centre, nearer the big one's surface.
+    EXPECT_EQ(sdfNearestLeaf(program, {1.4f, 0, 0}), 4u);
+    EXPECT_EQ(sdfNearestLeaf(SdfProgram{}, {0, 0, 0}), ~0u);
+}
