@@ -36,7 +36,6 @@ void main() {
     int steps = 0;
     if (tMin < tMax &&
         sdfMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, frame.march.w, t, steps)) {
-        countMarchedFragment(steps, 0);
         vec3 p = ro + rd * t;
         SdfSurface surface = sdfSurface(p);
         vec3 normal = sdfNormal(p, max(frame.march.z * max(t, 1.0), 1e-5));
@@ -51,6 +50,7 @@ void main() {
         if (materialHasTextures(surface.material))
             applySdfTextures(surface, p, t * forwardness, s);
         outColor = vec4(shadeSurface(s), 1.0);
+        countMarchedFragment(steps, 0); // after the shading: its evaluations count too
         outNormal = vec4(s.normal, float(steps)); // w: march steps (the steps AOV)
         outViewDepth = t * forwardness;
         outObjectId = surface.objectId;
