@@ -17,6 +17,7 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& inter
     struct Candidate {
         std::string map;
         EditingMapKind kind;
+        bool ready = false;
     };
     std::vector<Candidate> byPreference; // the order to draw in
     if (effectiveSdfStrategy(program, SdfStrategy::Baked) == SdfStrategy::Baked) {
@@ -29,13 +30,12 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& inter
         {generateSdfMap(interpreted, SdfStrategy::Interpreter), EditingMapKind::Interpreter});
 
     EditingMaps maps;
-    for (const EditingMapKind kind :
-         {EditingMapKind::Baked, EditingMapKind::Buffer, EditingMapKind::Interpreter})
-        for (const Candidate& candidate : byPreference)
-            if (candidate.kind == kind && !isReady(candidate.map))
-                maps.build.push_back(candidate.map);
+    for (Candidate& candidate : byPreference) {
+        candidate.ready = isReady(candidate.map);
+        if (!candidate.ready) maps.build.push_back(candidate.map); // preference order too
+    }
     for (Candidate& candidate : byPreference)
-        if (isReady(candidate.map)) {
+        if (candidate.ready) {
             maps.draw = std::move(candidate.map);
             maps.kind = candidate.kind;
             break;
