@@ -40,10 +40,11 @@ const CommandSpec kSpec = {
     "Renders SCENE (default: the built-in demo) repeatedly and reports, over the timed frames,\n"
     "the median, minimum and maximum of the wall time per frame (glFinish after each) and of\n"
     "each pass's GPU time (timer queries), the time to compile the scene's shaders and the\n"
-    "peak resident memory, the SDF march steps per pixel and how many fragments marched in the\n"
-    "fullscreen and the shell pass, and the primitives evaluated per pixel (one frame of an\n"
-    "instrumented march pass). With --sdf-strategy all, every strategy runs in turn in the same\n"
-    "process, the interpreter also without the bounding hierarchy, and the ratios of their\n"
+    "peak resident memory, the SDF march steps per pixel (the cone pre-pass's included) and how\n"
+    "many fragments marched in the fullscreen and the shell pass, and the primitives evaluated\n"
+    "per pixel (one frame of an instrumented march pass). With --sdf-strategy all, every\n"
+    "strategy runs in turn in the same process, the default also without the cone pre-pass,\n"
+    "the interpreter also without the bounding hierarchy, and the ratios of their\n"
     "median frame times to the first are reported; a scene with shells also runs with every\n"
     "node in the fullscreen pass (--shells both).",
     kOptions, 1};
@@ -57,6 +58,7 @@ struct StrategyRun {
     double compileMs = 0.0;
     double firstFrameMs = 0.0;        // the first frame, where drivers finish their programs
     double stepsPerPixel = 0.0;       // mean SDF march steps per pixel of the last frame
+    double coneStepsPerPixel = 0.0;   // the cone pass's part of them
     MarchStatistics marched;          // fragments that marched in the last frame
     double evaluationsPerPixel = 0.0; // primitives the march pass evaluated per pixel
     std::vector<double> wall;
@@ -182,9 +184,10 @@ int runBench(std::span<const std::string> args) {
         std::string name;
         const PreparedScene* prepared;
         SdfStrategy strategy;
-        std::string program; // runs of one program through generated code (or through the
-                             // interpreter) evaluate the same primitives
-        SdfLiveRange live{}; // objects read from the buffer under Baked (the editor's map)
+        std::string program;  // runs of one program through generated code (or through the
+                              // interpreter) evaluate the same primitives
+        SdfLiveRange live{};  // objects read from the buffer under Baked (the editor's map)
+        bool conePass = true; // off: every pixel marches from the near plane
     };
     std::vector<Variant> variants;
     for (const auto& [modeName, prepared] : modes)
@@ -196,6 +199,17 @@ int runBench(std::span<const std::string> args) {
             variants.push_back({base + modeName, prepared, strategy,
                                 strategy == kHandWritten ? "hand-written" : modeName});
         }
+    if (all) {
+        // The default without its low-resolution pre-pass: what the cone pass saves.
+        const std::string base(
+            sdfStrategyName(effectiveSdfStrategy(session.prepared->sdf, SdfStrategy::Baked)));
+        variants.push_back({base + ", no cone pass",
+                            &*session.prepared,
+                            SdfStrategy::Baked,
+                            "no cone pass",
+                            {},
+                            false});
+    }
     if (unbounded) {
         // What the editor draws while the user drags a shape's parameters: its program (no
         // bounding hierarchy), baked but for the first shape, read from the buffer.
@@ -224,6 +238,7 @@ int runBench(std::span<const std::string> args) {
         if (std::any_of(runs.begin(), runs.end(),
                         [&](const StrategyRun& r) { return r.name == run.name; }))
             continue; // a scene too large for generated code runs the interpreter only once
+        renderer.setConePass(variant.conePass);
         GpuScene gpuScene = uploadScene(*prepared, strategy);
         if (strategy == kHandWritten) gpuScene.sdfMap = handWrittenMap;
         if (variant.live.first <= variant.live.last)
@@ -256,11 +271,15 @@ int runBench(std::span<const std::string> args) {
         }
         run.marched = renderer.lastMarchStatistics();
         const Pixels<float> steps = readMarchSteps(targets);
-        double total = 0.0;
+        double total = 0.0, coneTotal = 0.0;
         for (float n : steps.data)
             total += n;
+        const Pixels<float> tiles = readConeTiles(targets);
+        for (std::size_t i = 1; i < tiles.data.size(); i += 2)
+            coneTotal += tiles.data[i];
         const double pixels = double(std::max<std::size_t>(steps.data.size(), 1));
-        run.stepsPerPixel = total / pixels;
+        run.coneStepsPerPixel = coneTotal / pixels;
+        run.stepsPerPixel = (total + coneTotal) / pixels;
         // Primitives evaluated per pixel: one frame of the instrumented march pass, once per
         // program.
         // Only the interpreter skips parts by their boxes (sdf/glsl_codegen.hpp).
@@ -285,11 +304,13 @@ int runBench(std::span<const std::string> args) {
         }
         runs.push_back(std::move(run));
     }
+    renderer.setConePass(true);
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     const double peakMiB = double(usage.ru_maxrss) / 1024.0;
 
-    const char* passNames[] = {"raster", "march", "post", "shadow", "shell"};
+    const char* passNames[] = {"raster", "march", "post", "shadow", "shell", "cone"};
+    static_assert(std::size(passNames) == std::size_t(Pass::Count));
     const std::string name = scenePath.empty() ? "(built-in demo)" : scenePath;
     const HeadlessContext& context = *session.context;
     const double bakedMedian = stats(runs.front().wall).median;
@@ -305,13 +326,14 @@ int runBench(std::span<const std::string> args) {
                         "\"first_frame_ms\": %.3f, \"frame_ms\": {\"median\": %.3f, \"min\": %.3f, "
                         "\"max\": %.3f}, "
                         "\"ratio_to_first\": %.3f, \"march_steps_per_pixel\": %.2f, "
+                        "\"cone_steps_per_pixel\": %.3f, "
                         "\"evaluations_per_pixel\": %.1f, "
                         "\"marched_fragments\": {\"fullscreen\": %llu, \"shells\": %llu}, "
                         "\"pass_gpu_ms\": {",
                         r ? ", " : "", run.name.c_str(), run.compileMs, run.firstFrameMs,
                         wallStats.median, wallStats.min, wallStats.max,
-                        wallStats.median / bakedMedian, run.stepsPerPixel, run.evaluationsPerPixel,
-                        (unsigned long long)run.marched.fullscreen,
+                        wallStats.median / bakedMedian, run.stepsPerPixel, run.coneStepsPerPixel,
+                        run.evaluationsPerPixel, (unsigned long long)run.marched.fullscreen,
                         (unsigned long long)run.marched.shells);
             for (std::size_t p = 0; p < run.passes.size(); ++p) {
                 const Stats s = stats(run.passes[p]);

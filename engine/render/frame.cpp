@@ -40,6 +40,25 @@ glm::vec3 pixelRayDirection(const FrameCamera& camera, float x, float y, int wid
     return glm::mix(bottom, top, v);
 }
 
+ConeTile coneTile(const FrameCamera& camera, int tileX, int tileY, int tileSize, int width,
+                  int height) {
+    // pixelRayDirection takes pixel indices; a window position p is pixel p - 0.5.
+    auto unitRay = [&](float windowX, float windowY) {
+        return glm::normalize(
+            pixelRayDirection(camera, windowX - 0.5f, windowY - 0.5f, width, height));
+    };
+    const float x0 = float(tileX * tileSize);
+    const float y0 = float(tileY * tileSize);
+    const float size = float(tileSize);
+    ConeTile tile;
+    tile.axis = unitRay(x0 + 0.5f * size, y0 + 0.5f * size);
+    for (int corner = 0; corner < 4; ++corner)
+        tile.chord = std::max(tile.chord, glm::length(unitRay(x0 + float(corner & 1) * size,
+                                                              y0 + float(corner >> 1) * size) -
+                                                      tile.axis));
+    return tile;
+}
+
 GpuFrame packFrame(const FrameCamera& camera, const RenderSettings& settings, int width,
                    int height) {
     GpuFrame frame{};

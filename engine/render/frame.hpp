@@ -29,6 +29,17 @@ FrameCamera makeFrameCamera(const Camera& camera, int width, int height);
 // y counted from the bottom row, exactly as the march pass computes it.
 glm::vec3 pixelRayDirection(const FrameCamera& camera, float x, float y, int width, int height);
 
+// The cone of a tile of the cone pass (render/cone_pass.hpp): the tile of `tileSize` pixels a
+// side whose bottom-left pixel is (tileX, tileY) * tileSize, y counted from the bottom row.
+// `axis` is the unit ray through the tile's centre, `chord` the largest |u - axis| over the
+// unit rays u through the tile's four corners, as shaders/passes/cone.frag computes them.
+struct ConeTile {
+    glm::vec3 axis{0.0f, 0.0f, -1.0f};
+    float chord = 0.0f;
+};
+ConeTile coneTile(const FrameCamera& camera, int tileX, int tileY, int tileSize, int width,
+                  int height);
+
 // std140 uniform block at binding 0, mirrored by FrameBlock in shaders/common/frame.glsl.
 struct GpuFrame {
     glm::mat4 view;

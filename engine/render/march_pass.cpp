@@ -17,7 +17,7 @@ std::optional<MarchPass> MarchPass::create(const ShaderFiles& files, std::string
     return pass;
 }
 
-void MarchPass::draw(const GBuffer& raster, const GBuffer& target) const {
+void MarchPass::draw(const GBuffer& raster, const ConeTarget& cone, const GBuffer& target) const {
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
     glViewport(0, 0, target.width, target.height);
     glEnable(GL_DEPTH_TEST);
@@ -31,11 +31,13 @@ void MarchPass::draw(const GBuffer& raster, const GBuffer& target) const {
     glBindTextureUnit(2, raster.viewDepth.id());
     glBindTextureUnit(3, raster.objectId.id());
     glBindTextureUnit(4, raster.depth.id());
+    glBindTextureUnit(kConeStartUnit, cone.distance.id());
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     for (GLuint unit = 0; unit < 5; ++unit)
         glBindTextureUnit(unit, 0);
+    glBindTextureUnit(kConeStartUnit, 0);
     glDepthFunc(GL_LESS);
 }
 

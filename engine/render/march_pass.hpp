@@ -3,6 +3,7 @@
 #pragma once
 
 #include "gl/program.hpp"
+#include "render/cone_pass.hpp"
 #include "render/gbuffer.hpp"
 #include "render/gpu_scene.hpp"
 
@@ -17,8 +18,9 @@ class MarchPass {
     // evaluated to the march statistics (Renderer::lastMarchStatistics).
     static std::optional<MarchPass> create(const ShaderFiles& files, std::string& error,
                                            bool countEvaluations = false);
-    // Reads `raster`, writes every pixel of `target`. Expects the frame UBO and SSBOs bound.
-    void draw(const GBuffer& raster, const GBuffer& target) const;
+    // Reads `raster` and where the cone pass let each tile start, writes every pixel of
+    // `target`. Expects the frame UBO and SSBOs bound.
+    void draw(const GBuffer& raster, const ConeTarget& cone, const GBuffer& target) const;
 
   private:
     gl::Program program_;

@@ -50,6 +50,10 @@ Pixels<float> readMarchSteps(const FrameTargets& t) {
     return steps;
 }
 
+Pixels<float> readConeTiles(const FrameTargets& t) {
+    return readTexture<float>(t.cone.distance, t.cone.width, t.cone.height, 2, GL_RG, GL_FLOAT);
+}
+
 Pixels<std::uint32_t> readObjectIds(const FrameTargets& t) {
     return readTexture<std::uint32_t>(t.combined.objectId, t.combined.width, t.combined.height, 1,
                                       GL_RED_INTEGER, GL_UNSIGNED_INT);

@@ -13,7 +13,8 @@ Pixels<std::uint8_t> readDisplayColor(const FrameTargets& targets); // RGBA8 sRG
 Pixels<float> readViewDepth(const FrameTargets& targets);           // 1 channel, kNoDepth = miss
 Pixels<float> readNormals(const FrameTargets& targets);             // 3 channels, world
 Pixels<float> readMarchSteps(const FrameTargets& targets);          // 1 channel: steps per pixel
-Pixels<std::uint32_t> readObjectIds(const FrameTargets& targets);   // 1 channel
-Pixels<float> readHdrColor(const FrameTargets& targets);            // 3 channels, linear
+Pixels<float> readConeTiles(const FrameTargets& targets); // 2: start distance, steps per tile
+Pixels<std::uint32_t> readObjectIds(const FrameTargets& targets); // 1 channel
+Pixels<float> readHdrColor(const FrameTargets& targets);          // 3 channels, linear
 
 } // namespace rmsc

@@ -11,7 +11,7 @@ namespace rmsc {
 
 FrameTargets createFrameTargets(int width, int height) {
     return {createGBuffer(width, height), createGBuffer(width, height),
-            createDisplayTarget(width, height)};
+            createConeTarget(width, height), createDisplayTarget(width, height)};
 }
 
 Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow)
@@ -58,19 +58,23 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     if (!sdfPasses_.contains(scene.sdfMap)) {
         std::optional<RasterPass> raster = RasterPass::create(files, error);
         if (!raster) return false;
+        std::optional<ConePass> cone = ConePass::create(files, error);
+        if (!cone) return false;
         std::optional<MarchPass> march = MarchPass::create(files, error);
         if (!march) return false;
         if (sdfPasses_.size() >= kMaxCached)
             sdfPasses_.erase(std::min_element(
                 sdfPasses_.begin(), sdfPasses_.end(),
                 [](const auto& a, const auto& b) { return a.second.lastUse < b.second.lastUse; }));
-        sdfPasses_.emplace(scene.sdfMap,
-                           SdfPasses{std::move(*raster), std::move(*march), std::nullopt});
+        sdfPasses_.emplace(scene.sdfMap, SdfPasses{std::move(*raster), std::move(*cone),
+                                                   std::move(*march), std::nullopt, std::nullopt});
         compiled = true;
     }
     SdfPasses& passes = sdfPasses_.find(scene.sdfMap)->second;
     passes.lastUse = ++useClock_;
     if (countEvaluations_ && !passes.countingMarch) {
+        passes.countingCone = ConePass::create(files, error, true);
+        if (!passes.countingCone) return false;
         passes.countingMarch = MarchPass::create(files, error, true);
         if (!passes.countingMarch) return false;
         compiled = true;
@@ -130,8 +134,15 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
         for (std::size_t i = 0; i < shells.size(); ++i)
             shells[i]->draw(scene.shells[i], frameCamera.viewProjection, targets.raster);
     });
+    const ConePass& cone = countEvaluations_ ? *sdf.countingCone : sdf.cone;
+    timed(Pass::Cone, [&] {
+        if (conePass_)
+            cone.draw(targets.cone);
+        else
+            targets.cone.clear();
+    });
     const MarchPass& march = countEvaluations_ ? *sdf.countingMarch : sdf.march;
-    timed(Pass::March, [&] { march.draw(targets.raster, targets.combined); });
+    timed(Pass::March, [&] { march.draw(targets.raster, targets.cone, targets.combined); });
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
     glBindTextureUnit(kShadowMapUnit, 0);
     glBindTextureUnit(kSkyImageUnit, 0);

@@ -1,7 +1,9 @@
-// The frame: shadow pass -> raster pass -> march pass -> post pass, with the per-frame uniform
-// block and per-pass GPU timers. Owns the passes (the programs), not the scene or the targets.
+// The frame: shadow pass -> raster pass -> cone pass -> march pass -> post pass, with the per-frame
+// uniform block and per-pass GPU timers. Owns the passes (the programs), not the scene or the
+// targets.
 #pragma once
 
+#include "render/cone_pass.hpp"
 #include "render/frame.hpp"
 #include "render/gbuffer.hpp"
 #include "render/gpu_scene.hpp"
@@ -23,12 +25,13 @@ namespace rmsc {
 struct FrameTargets {
     GBuffer raster;        // meshes only
     GBuffer combined;      // meshes and SDF: what the AOVs read
+    ConeTarget cone;       // per tile of pixels: where their marches start
     DisplayTarget display; // tone-mapped 8-bit sRGB
 };
 
 FrameTargets createFrameTargets(int width, int height);
 
-enum class Pass { Raster, March, Post, Shadow, Shell, Count };
+enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Count };
 
 // Fragments whose march took at least one step in the last frame, per pass.
 struct MarchStatistics {
@@ -45,9 +48,11 @@ using PassTimes = std::array<double, std::size_t(Pass::Count)>;
 // The passes whose shaders include the scene's SDF map (generated/sdf_map.glsl).
 struct SdfPasses {
     RasterPass raster; // marches shadow rays and AO through the SDF
+    ConePass cone;
     MarchPass march;
-    std::optional<MarchPass> countingMarch; // the instrumented variant, built when asked for
-    std::uint64_t lastUse = 0;              // Renderer::useClock_ when last prepared
+    std::optional<ConePass> countingCone; // the instrumented variants, built when asked for
+    std::optional<MarchPass> countingMarch;
+    std::uint64_t lastUse = 0; // Renderer::useClock_ when last prepared
 };
 
 class Renderer {
@@ -76,6 +81,9 @@ class Renderer {
     // Draw with the instrumented march pass, which counts the primitives every pixel evaluates
     // (slower; for benchmarks). Its programs are built and cached beside the normal ones.
     void setCountEvaluations(bool on) { countEvaluations_ = on; }
+    // Run the cone pass before the march pass (the default). Off, every pixel marches from the
+    // near plane: the baseline `rmsc bench` measures the pre-pass against.
+    void setConePass(bool on) { conePass_ = on; }
 
   private:
     ShaderFiles files_;
@@ -84,6 +92,7 @@ class Renderer {
     std::uint64_t useClock_ = 0;
     double lastCompileMs_ = 0.0;
     bool countEvaluations_ = false;
+    bool conePass_ = true;
     PostPass post_;
     ShadowPass shadow_;
     gl::Buffer frameBuffer_; // GpuFrame uniform block

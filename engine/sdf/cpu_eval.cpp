@@ -544,6 +544,22 @@ int sdfMarchSteps(const SdfProgram& program, const RenderSettings& settings, glm
     return castRay(program, settings, origin, direction, tMin, tMax, relaxation).steps;
 }
 
+SdfConeMarch sdfMarchCone(const SdfProgram& program, const RenderSettings& settings,
+                          glm::vec3 origin, glm::vec3 axis, float chord, float start) {
+    SdfConeMarch cone{start, 0};
+    if (program.instructions.empty()) return cone;
+    const float epsilon = settings.surfaceEpsilon;
+    float& s = cone.distance;
+    for (int i = 0; i < settings.maxSteps && s < settings.maxDistance; ++i) {
+        const float g =
+            sdfDistance(program, origin + axis * s) - chord * s - epsilon * std::max(s, 1.0f);
+        cone.steps = i + 1;
+        if (g < 0.25f * chord * s) break;
+        s += g / (1.0f + chord + epsilon);
+    }
+    return cone;
+}
+
 std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::mat4& worldToFrame,
                                         const RenderSettings& settings, glm::vec3 origin,
                                         glm::vec3 direction, float tMin, float tMax,

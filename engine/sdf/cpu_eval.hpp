@@ -66,6 +66,19 @@ std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::ma
                                         glm::vec3 direction, float tMin, float tMax,
                                         float relaxation = kSdfMarchRelaxation);
 
+// The march of a cone, as the cone pass does it for a tile of pixels (shaders/passes/cone.frag
+// derives the step): `axis` a unit direction from `origin`, `chord` the largest |u - axis|
+// over the unit directions u the cone holds. From s = `start`, steps while every ray of the
+// cone stays outside its hit threshold, and stops where the cone (nearly) touches a surface,
+// after settings.maxSteps evaluations or past settings.maxDistance. sdfCastRay along any ray
+// of the cone hits nothing nearer than `distance`.
+struct SdfConeMarch {
+    float distance = 0.0f;
+    int steps = 0;
+};
+SdfConeMarch sdfMarchCone(const SdfProgram& program, const RenderSettings& settings,
+                          glm::vec3 origin, glm::vec3 axis, float chord, float start);
+
 // The evaluations sdfCastRay makes, hit or miss: what the steps AOV shows for the ray.
 int sdfMarchSteps(const SdfProgram& program, const RenderSettings& settings, glm::vec3 origin,
                   glm::vec3 direction, float tMin, float tMax,

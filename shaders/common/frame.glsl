@@ -22,6 +22,15 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec4 ao;             // x = AO samples (0 = off), y = farthest sample, z = strength, w = FXAA
 } frame;
 
+// World direction (unnormalized, forward component 1) through a window position in pixels,
+// from the frustum-corner matrix: bilinear over the image, so exact anywhere on it.
+vec3 frustumRay(vec2 windowPosition) {
+    vec2 uv = windowPosition / frame.viewport.xy;
+    vec3 bottom = mix(frame.frustumCorners[0].xyz, frame.frustumCorners[1].xyz, uv.x);
+    vec3 top = mix(frame.frustumCorners[2].xyz, frame.frustumCorners[3].xyz, uv.x);
+    return mix(bottom, top, uv.y);
+}
+
 // Window-space depth [0, 1] of a world position, as the rasterizer would write it.
 float windowDepth(vec3 worldPosition) {
     vec4 clip = frame.viewProjection * vec4(worldPosition, 1.0);

@@ -9,8 +9,6 @@ out vec2 vUv;
 void main() {
     vec2 uv = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); // (0,0) (2,0) (0,2)
     vUv = uv;
-    vec3 bottom = mix(frame.frustumCorners[0].xyz, frame.frustumCorners[1].xyz, uv.x);
-    vec3 top = mix(frame.frustumCorners[2].xyz, frame.frustumCorners[3].xyz, uv.x);
-    vRayDirection = mix(bottom, top, uv.y);
+    vRayDirection = frustumRay(uv * frame.viewport.xy);
     gl_Position = vec4(uv * 2.0 - 1.0, 0.0, 1.0);
 }

@@ -1,11 +1,13 @@
 #version 450 core
 // March pass: sphere-traces the SDF scene along each pixel's ray, up to the depth the raster
-// pass left, so it never marches behind a mesh. A hit is shaded and writes its own depth; a
-// miss passes the raster pass's colour, normal, depth and id through unchanged.
+// pass left, so it never marches behind a mesh, and from the distance the cone pass found free
+// for the pixel's tile (passes/cone.frag). A hit is shaded and writes its own depth; a miss
+// passes the raster pass's colour, normal, depth and id through unchanged.
 #include "common/lighting.glsl"
 #include "common/sdf_scene.glsl"
 #include "common/sdf_textures.glsl"
 #include "common/march_statistics.glsl"
+#include "common/cone_tiles.glsl"
 
 in vec3 vRayDirection;
 in vec2 vUv;
@@ -15,6 +17,8 @@ layout(binding = 1) uniform sampler2D uRasterNormal;
 layout(binding = 2) uniform sampler2D uRasterViewDepth;
 layout(binding = 3) uniform usampler2D uRasterObjectId;
 layout(binding = 4) uniform sampler2D uRasterDepth;
+// x: how far every ray of the tile may skip (0 when the renderer skips the cone pass).
+layout(binding = 13) uniform sampler2D uConeStart; // kConeStartUnit
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outNormal;
@@ -29,7 +33,8 @@ void main() {
     float forwardness = 1.0 / length(vRayDirection);
     vec3 rd = vRayDirection * forwardness;
     vec3 ro = frame.cameraPosition.xyz;
-    float tMin = frame.cameraPosition.w / forwardness;
+    float tMin = max(frame.cameraPosition.w / forwardness,
+                     texelFetch(uConeStart, pixel / CONE_TILE_SIZE, 0).x);
     float tMax = min(frame.march.y, rasterViewDepth / forwardness);
 
     float t;

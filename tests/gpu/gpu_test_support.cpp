@@ -1,6 +1,8 @@
 // GPU test support: shared context, rendering, reference-image comparison.
 #include "gpu_test_support.hpp"
 
+#include "sdf/cpu_eval.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 
@@ -52,6 +54,17 @@ FrameTargets renderPrepared(const PreparedScene& prepared, int width, int height
     renderer.render(gpu, camera ? *camera : prepared.scene.camera, prepared.scene.render, targets);
     expectNoGlErrors();
     return targets;
+}
+
+float marchStart(const SdfProgram& program, const RenderSettings& settings,
+                 const FrameCamera& camera, int x, int yFromBottom, int width, int height) {
+    const ConeTile tile = coneTile(camera, x / kConeTileSize, yFromBottom / kConeTileSize,
+                                   kConeTileSize, width, height);
+    const SdfConeMarch cone =
+        sdfMarchCone(program, settings, camera.position, tile.axis, tile.chord, camera.nearPlane);
+    const float forwardness =
+        1.0f / glm::length(pixelRayDirection(camera, float(x), float(yFromBottom), width, height));
+    return std::max(camera.nearPlane / forwardness, cone.distance);
 }
 
 PreparedScene openRepositoryScene(const std::string& relativePath) {

@@ -29,6 +29,13 @@ FrameTargets renderPrepared(const PreparedScene& prepared, int width, int height
                             const Camera* camera = nullptr,
                             SdfStrategy strategy = SdfStrategy::Baked);
 
+// Where the march pass starts the ray of pixel (x, yFromBottom) of a width x height frame, as
+// a distance along the unit ray: the near plane, or farther where the cone pass found the
+// pixel's tile free that far (sdfMarchCone on the tile's cone, as shaders/passes/cone.frag).
+// CPU ray casts that start there follow the GPU's steps.
+float marchStart(const SdfProgram& program, const RenderSettings& settings,
+                 const FrameCamera& camera, int x, int yFromBottom, int width, int height);
+
 // Opens a scene file from the repository (path relative to the repository root).
 PreparedScene openRepositoryScene(const std::string& relativePath);
 

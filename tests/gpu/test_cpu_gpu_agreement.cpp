@@ -40,9 +40,10 @@ Agreement compare(const PreparedScene& prepared, int width, int height, int step
             const bool gpuSdf = gpuId >= kSdfIdBase;
             const float meshDepth = gpuSdf || gpuId == 0 ? kNoDepth : gpuDepth;
             const float tMax = std::min(scene.render.maxDistance, meshDepth / forwardness);
-            const std::optional<SdfHit> hit =
-                sdfCastRay(prepared.sdf, scene.render, scene.camera.position, rd,
-                           scene.camera.nearPlane / forwardness, tMax);
+            const std::optional<SdfHit> hit = sdfCastRay(
+                prepared.sdf, scene.render, scene.camera.position, rd,
+                marchStart(prepared.sdf, scene.render, frame, x, height - 1 - row, width, height),
+                tMax);
             std::uint32_t cpuId = gpuSdf ? 0 : gpuId;
             float cpuDepth = gpuSdf ? kNoDepth : gpuDepth;
             if (hit) {
