@@ -42,9 +42,9 @@ const CommandSpec kSpec = {
     "each pass's GPU time (timer queries), the time to compile the scene's shaders and the\n"
     "peak resident memory, the SDF march steps per pixel (the cone pre-pass's included) and how\n"
     "many fragments marched in the fullscreen and the shell pass, and the primitives evaluated\n"
-    "per pixel (one frame of an instrumented march pass). With --sdf-strategy all, every\n"
-    "strategy runs in turn in the same process, the default also without the cone pre-pass,\n"
-    "the interpreter also without the bounding hierarchy, and the ratios of their\n"
+    "per pixel (one frame of the instrumented cone and march pass). With --sdf-strategy all,\n"
+    "every strategy runs in turn in the same process, the default also without the cone\n"
+    "pre-pass, the interpreter also without the bounding hierarchy, and the ratios of their\n"
     "median frame times to the first are reported; a scene with shells also runs with every\n"
     "node in the fullscreen pass (--shells both).",
     kOptions, 1};
@@ -60,7 +60,7 @@ struct StrategyRun {
     double stepsPerPixel = 0.0;       // mean SDF march steps per pixel of the last frame
     double coneStepsPerPixel = 0.0;   // the cone pass's part of them
     MarchStatistics marched;          // fragments that marched in the last frame
-    double evaluationsPerPixel = 0.0; // primitives the march pass evaluated per pixel
+    double evaluationsPerPixel = 0.0; // the cone and march pass's, per pixel
     std::vector<double> wall;
     std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
 };
@@ -280,9 +280,8 @@ int runBench(std::span<const std::string> args) {
         const double pixels = double(std::max<std::size_t>(steps.data.size(), 1));
         run.coneStepsPerPixel = coneTotal / pixels;
         run.stepsPerPixel = (total + coneTotal) / pixels;
-        // Primitives evaluated per pixel: one frame of the instrumented march pass, once per
-        // program.
-        // Only the interpreter skips parts by their boxes (sdf/glsl_codegen.hpp).
+        // Primitives evaluated per pixel: one frame of the instrumented cone and march pass, once
+        // per program. Only the interpreter skips parts by their boxes (sdf/glsl_codegen.hpp).
         const bool skips =
             strategy != kHandWritten &&
             effectiveSdfStrategy(prepared->sdf, strategy) == SdfStrategy::Interpreter;

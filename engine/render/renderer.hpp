@@ -37,8 +37,8 @@ enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Count };
 struct MarchStatistics {
     std::uint64_t fullscreen = 0; // the march pass (every pixel may march)
     std::uint64_t shells = 0;     // the shell pass (only the pixels the proxies cover)
-    // Primitives evaluated by the march pass (marching, normal, shading, shadows, AO), when the
-    // renderer counts them (Renderer::setCountEvaluations), else 0.
+    // Primitives evaluated by the cone pass and the march pass (marching, normal, shading,
+    // shadows, AO), when the renderer counts them (Renderer::setCountEvaluations), else 0.
     std::uint64_t evaluations = 0;
 };
 
@@ -78,8 +78,8 @@ class Renderer {
     PassTimes lastPassTimes() const;
     // Waits for the last frame and returns how many fragments marched.
     MarchStatistics lastMarchStatistics() const;
-    // Draw with the instrumented march pass, which counts the primitives every pixel evaluates
-    // (slower; for benchmarks). Its programs are built and cached beside the normal ones.
+    // Draw with the instrumented cone and march pass, which count the primitives every pixel
+    // evaluates (slower; for benchmarks). Its programs are built and cached beside the normal ones.
     void setCountEvaluations(bool on) { countEvaluations_ = on; }
     // Run the cone pass before the march pass (the default). Off, every pixel marches from the
     // near plane: the baseline `rmsc bench` measures the pre-pass against.
