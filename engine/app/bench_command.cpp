@@ -1,7 +1,7 @@
 // rmsc bench: times frames of a scene and reports medians (wall and per-pass GPU time), the
 // shader build time and peak memory. Numbers for tracking, never asserted by tests.
-#include "app/commands.hpp"
-#include "app/headless_session.hpp"
+#include "commands.hpp"
+#include "headless_session.hpp"
 #include "render/readback.hpp"
 #include "sdf/compiler.hpp"
 

@@ -2,12 +2,12 @@
 // process exit code: 0 success, 1 bad input (scene, model), 2 bad usage, 3 no GL or I/O error.
 #pragma once
 
+#include "core/exit_code.hpp"
+
 #include <span>
 #include <string>
 
 namespace rmsc::app {
-
-enum ExitCode { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitSystem = 3 };
 
 int runRender(std::span<const std::string> args);
 int runValidate(std::span<const std::string> args);

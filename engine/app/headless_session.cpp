@@ -1,7 +1,8 @@
 // Shared set-up of the headless commands.
-#include "app/headless_session.hpp"
+#include "headless_session.hpp"
 
-#include "app/commands.hpp"
+#include "commands.hpp"
+#include "render/shader_library.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -53,7 +54,7 @@ int openHeadlessSession(const char* command, const std::string& scenePath,
         return kExitSystem;
     }
     const auto start = std::chrono::steady_clock::now();
-    session.renderer = Renderer::create(ShaderFiles::embedded(), error);
+    session.renderer = Renderer::create(embeddedShaderFiles(), error);
     if (!session.renderer) {
         std::fprintf(stderr, "rmsc %s: %s\n", command, error.c_str());
         return kExitSystem;

@@ -3,10 +3,10 @@
 // with the right exit code.
 #pragma once
 
-#include "app/options.hpp"
 #include "gl/context.hpp"
+#include "options.hpp"
+#include "prepare/prepared_scene.hpp"
 #include "render/renderer.hpp"
-#include "scene/prepared_scene.hpp"
 
 #include <memory>
 #include <optional>

@@ -1,5 +1,5 @@
 // rmsc: the Ray Marching Scene Creator command. Dispatches to the subcommands.
-#include "app/commands.hpp"
+#include "commands.hpp"
 
 #include <cstdio>
 #include <string>
@@ -25,6 +25,7 @@ const char* kUsage =
 } // namespace
 
 int main(int argc, char** argv) {
+    using namespace rmsc;
     using namespace rmsc::app;
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {

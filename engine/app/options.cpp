@@ -1,5 +1,5 @@
 // Command-line parsing and help text.
-#include "app/options.hpp"
+#include "options.hpp"
 
 #include <charconv>
 
@@ -64,8 +64,10 @@ std::string formatHelp(const CommandSpec& spec) {
         if (o.shortName) left += std::string(o.shortName) + ", ";
         left += o.name;
         if (o.valueName) left += std::string(" ") + o.valueName;
-        if (left.size() < 28) left.resize(28, ' ');
-        else left += "  ";
+        if (left.size() < 28)
+            left.resize(28, ' ');
+        else
+            left += "  ";
         out += left + o.help + "\n";
     }
     out += "  -h, --help                show this help\n";

@@ -1,6 +1,6 @@
 // rmsc primitives: prints the primitive catalogue (names, parameters, exact or bound).
-#include "app/commands.hpp"
-#include "app/options.hpp"
+#include "commands.hpp"
+#include "options.hpp"
 
 #include "sdf/primitive_docs.hpp"
 #include "sdf/primitives.hpp"
@@ -38,8 +38,8 @@ int runPrimitives(std::span<const std::string> args) {
         return kExitOk;
     }
     for (const PrimitiveSpec& spec : primitiveCatalogue()) {
-        std::printf("%s (%s): %s\n", std::string(spec.name).c_str(),
-                    spec.exact ? "exact" : "bound", std::string(spec.description).c_str());
+        std::printf("%s (%s): %s\n", std::string(spec.name).c_str(), spec.exact ? "exact" : "bound",
+                    std::string(spec.description).c_str());
         for (const ParamSpec& p : spec.params) {
             std::string value;
             for (int c = 0; c < p.components; ++c) {

@@ -1,6 +1,6 @@
 // rmsc render: one frame of a scene to an image file (display colour or an AOV).
-#include "app/commands.hpp"
-#include "app/headless_session.hpp"
+#include "commands.hpp"
+#include "headless_session.hpp"
 
 #include "core/image_io.hpp"
 #include "render/readback.hpp"

@@ -1,6 +1,6 @@
 // rmsc schema: prints the JSON Schema of scene files (docs/scene.schema.json is its output).
-#include "app/commands.hpp"
-#include "app/options.hpp"
+#include "commands.hpp"
+#include "options.hpp"
 
 #include "scene/scene_schema.hpp"
 

@@ -1,9 +1,9 @@
 // rmsc validate: loads scenes (and every glTF they reference, and compiles their SDF trees)
 // without rendering, and reports every problem found.
-#include "app/commands.hpp"
-#include "app/options.hpp"
+#include "commands.hpp"
+#include "options.hpp"
 
-#include "scene/prepared_scene.hpp"
+#include "prepare/prepared_scene.hpp"
 
 #include <cstdio>
 
@@ -11,11 +11,13 @@ namespace rmsc::app {
 namespace {
 
 const CommandSpec kSpec = {
-    "validate", "rmsc validate SCENE...",
+    "validate",
+    "rmsc validate SCENE...",
     "Loads each SCENE (.json scene or .gltf/.glb model), the glTF files it names, and compiles\n"
     "its SDF tree, without a GL context. Prints every problem as FILE: JSON-POINTER: MESSAGE\n"
     "and exits non-zero if any scene has an error (warnings alone exit 0).",
-    {}, 1 << 20};
+    {},
+    1 << 20};
 
 } // namespace
 

@@ -1,7 +1,7 @@
 // rmsc view: the interactive viewer and scene editor (window, editor panels, live rendering).
-#include "app/commands.hpp"
-#include "app/options.hpp"
-#include "app/viewer.hpp"
+#include "commands.hpp"
+#include "options.hpp"
+#include "viewer/viewer.hpp"
 
 #include <cstdio>
 #include <cstdlib>

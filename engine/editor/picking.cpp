@@ -71,7 +71,7 @@ std::optional<PickHit> pickSdf(const PreparedScene& prepared, const PickRay& ray
             tMax = hit->t;
         }
     }
-    // Shells march on their own, in their own frames (scene/prepared_scene.hpp).
+    // Shells march on their own, in their own frames (prepare/prepared_scene.hpp).
     for (const PreparedShell& shell : prepared.shells) {
         const SdfProgram& program = shell.compiled.program;
         const std::optional<SdfHit> hit =

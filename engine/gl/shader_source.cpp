@@ -1,9 +1,6 @@
 // #include resolution with #line bookkeeping, and mapping compiler logs back to files.
 #include "gl/shader_source.hpp"
 
-#include "core/embedded.hpp"
-#include "sdf/primitives.hpp"
-
 #include <fstream>
 #include <regex>
 #include <set>
@@ -82,18 +79,6 @@ struct Assembler {
 };
 
 } // namespace
-
-ShaderFiles ShaderFiles::embedded() {
-    ShaderFiles shaderFiles;
-    for (const EmbeddedFile& file : embeddedShaders())
-        shaderFiles.files.emplace(std::string(file.path), std::string(file.data));
-    shaderFiles.files.emplace("generated/primitives.glsl", generateGlslDispatch());
-    // Until a scene supplies its own map: the interpreter over every primitive.
-    shaderFiles.files.emplace("generated/sdf_map.glsl",
-                              "#include \"generated/primitives.glsl\"\n"
-                              "#include \"common/sdf_interpreter.glsl\"\n");
-    return shaderFiles;
-}
 
 std::optional<std::string> ShaderFiles::find(std::string_view path) const {
     if (!overrideDirectory.empty() && !path.starts_with("generated/")) {

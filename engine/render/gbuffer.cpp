@@ -44,12 +44,12 @@ GBuffer createGBuffer(int width, int height) {
 
 void GBuffer::clear(const float background[3]) const {
     const GLuint fb = framebuffer.id();
-    const float color[4] = {background[0], background[1], background[2], 1.0f};
+    const float clearColor[4] = {background[0], background[1], background[2], 1.0f};
     const float zero[4] = {0, 0, 0, 0};
     const float noDepth[4] = {kNoDepth, 0, 0, 0};
     const GLuint noId[4] = {0, 0, 0, 0};
     const float one = 1.0f;
-    glClearNamedFramebufferfv(fb, GL_COLOR, 0, color);
+    glClearNamedFramebufferfv(fb, GL_COLOR, 0, clearColor);
     glClearNamedFramebufferfv(fb, GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(fb, GL_COLOR, 2, noDepth);
     glClearNamedFramebufferuiv(fb, GL_COLOR, 3, noId);

@@ -1,7 +1,7 @@
 // Uploading mesh assets: interleaved vertex buffers, 32-bit indices, material textures.
 #include "render/gpu_mesh.hpp"
 
-#include "render/gpu_texture.hpp"
+#include "gpu_texture.hpp"
 
 #include <map>
 #include <tuple>

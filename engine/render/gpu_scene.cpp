@@ -1,8 +1,8 @@
 // Uploading a prepared scene: meshes once per file, instances with their matrices, SSBOs.
 #include "render/gpu_scene.hpp"
 
+#include "gpu_texture.hpp"
 #include "render/gpu_layout.hpp"
-#include "render/gpu_texture.hpp"
 #include "render/shadow_views.hpp"
 
 #include <algorithm>

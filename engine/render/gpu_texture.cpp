@@ -1,5 +1,5 @@
 // Texture upload (see gpu_texture.hpp).
-#include "render/gpu_texture.hpp"
+#include "gpu_texture.hpp"
 
 #include <algorithm>
 #include <cmath>

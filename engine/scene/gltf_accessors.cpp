@@ -1,5 +1,5 @@
 // Accessor range checks and typed reads (see gltf_accessors.hpp).
-#include "scene/gltf_accessors.hpp"
+#include "gltf_accessors.hpp"
 
 #include <cmath>
 #include <cstring>

@@ -1,6 +1,6 @@
 // URI confinement, data URIs, the GLB container, JSON depth and image decoding for the glTF
 // importer.
-#include "scene/gltf_files.hpp"
+#include "gltf_files.hpp"
 
 #include <stb_image.h>
 

@@ -1,9 +1,9 @@
 // Baking a glTF scene into triangle primitives (see gltf_geometry.hpp).
 #include "scene/gltf_geometry.hpp"
-#include "scene/gltf_lights.hpp"
+#include "gltf_lights.hpp"
 
-#include "scene/gltf_accessors.hpp"
-#include "scene/gltf_validate.hpp"
+#include "gltf_accessors.hpp"
+#include "gltf_validate.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>

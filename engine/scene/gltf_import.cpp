@@ -3,12 +3,12 @@
 // validates the model and bakes its scene into a MeshAsset.
 #include "scene/mesh_asset.hpp"
 
-#include "scene/gltf_files.hpp"
+#include "gltf_files.hpp"
+#include "gltf_json_checks.hpp"
+#include "gltf_validate.hpp"
 #include "scene/gltf_geometry.hpp"
-#include "scene/gltf_json_checks.hpp"
 #include "scene/gltf_report.hpp"
 #include "scene/gltf_tinygltf.hpp"
-#include "scene/gltf_validate.hpp"
 
 #include <nlohmann/json.hpp>
 

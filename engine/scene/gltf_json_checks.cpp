@@ -1,7 +1,7 @@
 // JSON-level checks of a glTF document (see gltf_json_checks.hpp).
-#include "scene/gltf_json_checks.hpp"
+#include "gltf_json_checks.hpp"
 
-#include "scene/gltf_files.hpp"
+#include "gltf_files.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // Reading KHR_lights_punctual lights (Khronos extension specification): type, colour,
 // intensity (lux for directional, candela for point and spot), range, spot cone angles in
 // radians; position from the node's translation, direction its -Z axis.
-#include "scene/gltf_lights.hpp"
+#include "gltf_lights.hpp"
 
 #include <algorithm>
 #include <cmath>

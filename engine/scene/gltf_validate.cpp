@@ -1,7 +1,7 @@
 // Structural checks of a parsed glTF model (see gltf_validate.hpp).
-#include "scene/gltf_validate.hpp"
+#include "gltf_validate.hpp"
 
-#include "scene/gltf_accessors.hpp"
+#include "gltf_accessors.hpp"
 
 #include <cmath>
 #include <initializer_list>

@@ -4,7 +4,7 @@
 // so it reports duplicates and overflowing numbers at their pointers and stops nesting at
 // kMaxJsonDepth. (nlohmann's parser-callback variant could do the same, but it rescans the
 // enclosing array after every object, which takes seconds for 100000 SDF nodes.)
-#include "scene/json_reader.hpp"
+#include "json_reader.hpp"
 
 #include <cmath>
 #include <string>

@@ -1,6 +1,6 @@
 // Typed JSON value readers with JSON-pointer diagnostics, and the name-suggestion helpers used
 // by the scene reader's messages.
-#include "scene/json_reader.hpp"
+#include "json_reader.hpp"
 
 #include <algorithm>
 #include <charconv>

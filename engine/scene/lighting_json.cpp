@@ -1,10 +1,10 @@
 // Reading and writing lights, shadow / AO settings and the environment (sky, fog) of scene
 // files. Spot cone angles follow glTF KHR_lights_punctual (defaults 0 and 45 degrees, outer
 // at most 90 degrees, inner below outer).
-#include "scene/lighting_json.hpp"
+#include "lighting_json.hpp"
 
 #include "core/limits.hpp"
-#include "scene/transform_json.hpp"
+#include "transform_json.hpp"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 // accept (docs/scene-format.md, "Lights", "Shadows and ambient occlusion", "Environment").
 #pragma once
 
-#include "scene/json_reader.hpp"
+#include "json_reader.hpp"
 #include "scene/scene.hpp"
 
 #include <filesystem>

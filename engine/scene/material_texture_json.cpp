@@ -1,5 +1,5 @@
 // Material texture fields of the scene format (see material_texture_json.hpp).
-#include "scene/material_texture_json.hpp"
+#include "material_texture_json.hpp"
 
 namespace rmsc {
 namespace {

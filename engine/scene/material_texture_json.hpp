@@ -3,7 +3,7 @@
 // JSON is checked here; the image files are read and decoded by material_textures.hpp.
 #pragma once
 
-#include "scene/json_reader.hpp"
+#include "json_reader.hpp"
 #include "scene/scene.hpp"
 
 #include <filesystem>

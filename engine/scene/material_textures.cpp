@@ -1,7 +1,7 @@
 // Loading scene material textures (see material_textures.hpp).
 #include "scene/material_textures.hpp"
 
-#include "scene/gltf_files.hpp"
+#include "gltf_files.hpp"
 
 #include <map>
 #include <utility>

@@ -4,10 +4,10 @@
 #include "scene/scene_json.hpp"
 
 #include "core/limits.hpp"
-#include "scene/json_reader.hpp"
-#include "scene/lighting_json.hpp"
-#include "scene/material_texture_json.hpp"
-#include "scene/transform_json.hpp"
+#include "json_reader.hpp"
+#include "lighting_json.hpp"
+#include "material_texture_json.hpp"
+#include "transform_json.hpp"
 
 #include <algorithm>
 #include <exception>

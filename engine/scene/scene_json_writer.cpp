@@ -1,11 +1,11 @@
 // Writing scenes as format version 1 JSON (sceneToJson): every section, materials referenced by
 // name, shape parameters by their catalogue names, rotations as exact quaternions and numbers in
 // the fewest digits that read back as the same float. Number arrays stay on one line.
-#include "scene/material_texture_json.hpp"
+#include "material_texture_json.hpp"
 #include "scene/scene_json.hpp"
 
-#include "scene/lighting_json.hpp"
-#include "scene/transform_json.hpp"
+#include "lighting_json.hpp"
+#include "transform_json.hpp"
 
 #include <algorithm>
 #include <set>

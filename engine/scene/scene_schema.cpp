@@ -8,10 +8,10 @@
 #include "scene/scene_schema.hpp"
 
 #include "core/limits.hpp"
-#include "scene/json_reader.hpp"
+#include "json_reader.hpp"
 #include "scene/scene_json.hpp"
-#include "scene/transform_json.hpp"
 #include "sdf/primitives.hpp"
+#include "transform_json.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -504,8 +504,8 @@ std::vector<ObjectDef> objectDefs() {
     for (const PrimitiveSpec& spec : primitiveCatalogue()) {
         std::vector<Key> keys = plus(nodeKeys(), {{"shape", string()}});
         for (const ParamSpec& param : spec.params) {
-            const NumberRange range = NumberRange::closed(param.minValue, param.maxValue);
-            Json schema = param.components == 1 ? number(range) : numbers(3, range);
+            const NumberRange paramRange = NumberRange::closed(param.minValue, param.maxValue);
+            Json schema = param.components == 1 ? number(paramRange) : numbers(3, paramRange);
             schema["default"] = param.components == 1
                                     ? floatToJson(param.value[0])
                                     : vec3ToJson({param.value[0], param.value[1], param.value[2]});

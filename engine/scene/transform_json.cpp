@@ -1,5 +1,5 @@
 // Reading and writing transforms in scene files, and the float-exact number writer.
-#include "scene/transform_json.hpp"
+#include "transform_json.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -2,7 +2,7 @@
 // nodes, read and written, and the Euler-angle convention of the scene format.
 #pragma once
 
-#include "scene/json_reader.hpp"
+#include "json_reader.hpp"
 #include "scene/scene.hpp"
 
 #include <string>

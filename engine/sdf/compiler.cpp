@@ -4,6 +4,7 @@
 // allows it (Sethi-Ullman order).
 #include "sdf/compiler.hpp"
 
+#include "core/object_ids.hpp"
 #include "sdf/bounds.hpp"
 
 #include <glm/gtc/matrix_access.hpp>

@@ -2,7 +2,7 @@
 // distance to the sphere is returned (a lower bound, since the fractal lies inside), so a fractal
 // costs one length() far away. Integer parameters (iterations) arrive as floats and are floored.
 // Each mirrors the GLSL function of the same name in shaders/common/sdf_primitives.glsl.
-#include "sdf/primitive_formulas.hpp"
+#include "primitive_formulas.hpp"
 
 #include <algorithm>
 #include <cmath>

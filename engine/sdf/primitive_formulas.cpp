@@ -3,7 +3,7 @@
 // article's math, with guards against division by zero for degenerate parameters). Each mirrors,
 // statement for statement, the GLSL function of the same name (sd + Name) in
 // shaders/common/sdf_primitives.glsl. Angles arrive in degrees and are converted here.
-#include "sdf/primitive_formulas.hpp"
+#include "primitive_formulas.hpp"
 
 #include <algorithm>
 #include <cmath>

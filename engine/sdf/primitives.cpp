@@ -3,7 +3,7 @@
 // shaders/common/sdf_primitives.glsl must stay identical.
 #include "sdf/primitives.hpp"
 
-#include "sdf/primitive_formulas.hpp"
+#include "primitive_formulas.hpp"
 
 #include <algorithm>
 #include <cassert>

@@ -1,4 +1,4 @@
-// Per-frame camera and settings (std140, binding 0). Mirrors GpuFrame in engine/render/frame.hpp.
+// Per-frame camera and settings (std140, binding 0). Mirrors GpuFrame in engine/render/include/render/frame.hpp.
 layout(std140, binding = 0) uniform FrameBlock {
     mat4 view;
     mat4 viewProjection;

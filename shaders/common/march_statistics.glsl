@@ -1,4 +1,4 @@
-// How many fragments marched in a frame, for `rmsc bench` (engine/render/renderer.hpp,
+// How many fragments marched in a frame, for `rmsc bench` (engine/render/include/render/renderer.hpp,
 // MarchStatistics): the fullscreen pass counts in [0], the shell pass in [1]. A fragment counts
 // when its march took at least one step. The instrumented variant of the march pass
 // (SDF_COUNT_EVALUATIONS) adds the primitives each pixel evaluated to the 64-bit count in [2]

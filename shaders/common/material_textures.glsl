@@ -1,7 +1,7 @@
 // Textures of SDF materials: triplanar projection in the shape's local space, so a texture
 // moves, turns and scales with its shape. Base colour (sRGB texture, decoded by GL), roughness
 // (green channel) and tangent-space normal maps. The textures are bound one per texture unit
-// from SDF_TEXTURE_FIRST_UNIT on (kSdfMaterialTextureFirstUnit in engine/render/gpu_layout.hpp):
+// from SDF_TEXTURE_FIRST_UNIT on (kSdfMaterialTextureFirstUnit in engine/render/include/render/gpu_layout.hpp):
 // GLSL 4.50 only allows dynamically uniform indices into sampler arrays and a material index
 // varies per pixel, so a switch picks the sampler. Each texture keeps its own size.
 //

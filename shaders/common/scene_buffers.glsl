@@ -1,5 +1,5 @@
 // Scene buffers shared by every pass: materials and lights (std430). Mirrors
-// engine/render/gpu_layout.hpp; binding numbers match SsboBinding there.
+// engine/render/include/render/gpu_layout.hpp; binding numbers match SsboBinding there.
 
 // A triplanar texture of an SDF material (GpuMaterialTexture).
 struct GpuMaterialTexture {
@@ -17,7 +17,7 @@ struct GpuMaterial {
     GpuMaterialTexture roughnessTexture;
 };
 
-// GpuLightType (engine/render/gpu_layout.hpp).
+// GpuLightType (engine/render/include/render/gpu_layout.hpp).
 #define LIGHT_DIRECTIONAL 0
 #define LIGHT_POINT 1
 #define LIGHT_SPOT 2

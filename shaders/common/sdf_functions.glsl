@@ -5,10 +5,10 @@
 #include "common/scene_buffers.glsl"
 #include "common/sdf_primitives.glsl"
 
-// Must equal kSdfMaxStack in engine/sdf/program.hpp; the compiler refuses deeper programs.
+// Must equal kSdfMaxStack in engine/sdf/include/sdf/program.hpp; the compiler refuses deeper programs.
 #define SDF_MAX_STACK 24
 
-// SdfOpcode (engine/sdf/program.hpp).
+// SdfOpcode (engine/sdf/include/sdf/program.hpp).
 #define SDF_OPCODE_SHAPE 0u
 #define SDF_OPCODE_COMBINE 1u
 #define SDF_OPCODE_PUSH_POINT 2u
@@ -29,11 +29,11 @@ uint sdfEvaluations = 0u;
 #define SDF_COUNT_EVALUATION
 #endif
 
-// Must equal kSdfMaxPointStack in engine/sdf/program.hpp; the compiler refuses deeper programs.
+// Must equal kSdfMaxPointStack in engine/sdf/include/sdf/program.hpp; the compiler refuses deeper programs.
 #define SDF_MAX_POINT_STACK 16
 
-// SdfPointModifierKind, SdfDistanceModifierKind (engine/sdf/program.hpp), SdfProfileType
-// (engine/scene/scene.hpp).
+// SdfPointModifierKind, SdfDistanceModifierKind (engine/sdf/include/sdf/program.hpp), SdfProfileType
+// (engine/sdf/include/sdf/sdf_tree.hpp).
 #define SDF_POINT_REPEAT 0u
 #define SDF_POINT_MIRROR 1u
 #define SDF_POINT_POLAR 2u
@@ -48,7 +48,7 @@ uint sdfEvaluations = 0u;
 #define SDF_PROFILE_ROUNDED_RECTANGLE 2u
 #define SDF_PROFILE_POLYGON 3u
 
-// SdfOp (engine/scene/scene.hpp).
+// SdfOp (engine/sdf/include/sdf/sdf_tree.hpp).
 #define SDF_OP_UNION 0u
 #define SDF_OP_SUBTRACTION 1u
 #define SDF_OP_INTERSECTION 2u
@@ -84,7 +84,7 @@ layout(std430, binding = 0) readonly buffer SdfProgramBuffer {
 
 // Data the instructions index into: polygon points (xy), GpuSdfHeader::dataCount entries.
 // The header and first SDF_UNIFORM_INSTRUCTIONS instructions of the same buffer as a uniform
-// block (kSdfUniformInstructions in engine/sdf/program.hpp): what generated code reads.
+// block (kSdfUniformInstructions in engine/sdf/include/sdf/program.hpp): what generated code reads.
 #define SDF_UNIFORM_INSTRUCTIONS 511
 layout(std140, binding = 1) uniform SdfProgramUniforms { // kSdfProgramUniformBinding
     uvec4 sdfUniformHeader;
@@ -202,7 +202,7 @@ SdfSurface sdfMaterialSurface(float d, uint objectId, uint m, vec3 localPoint) {
         s.metallic = materials[m].baseColorMetallic.a;
         s.emissive = materials[m].emissiveRoughness.rgb;
         s.roughness = materials[m].emissiveRoughness.a;
-    } else { // the defaults of Material (engine/scene/scene.hpp)
+    } else { // the defaults of Material (engine/core/include/core/material.hpp)
         s.baseColor = vec3(0.8);
         s.metallic = 0.0;
         s.emissive = vec3(0.0);
@@ -358,7 +358,7 @@ float sdfPolygonDistance(vec2 q, int first, int count) {
 
 // A 2D profile `kind` (SDF_PROFILE_*) at the local point q, extruded along z or revolved about
 // y (Quilez, "Distance functions": extrusion, revolution; 2D shapes from "2D distance
-// functions"). Parameters as SdfOpcode::Profile in engine/sdf/program.hpp.
+// functions"). Parameters as SdfOpcode::Profile in engine/sdf/include/sdf/program.hpp.
 float sdfProfile(uint kind, vec3 q, vec4 a0, vec4 a1, vec4 a2) {
     bool revolution = a1.x > 0.5;
     vec2 q2 = revolution ? vec2(length(q.xz) - a1.y, q.y) : q.xy;

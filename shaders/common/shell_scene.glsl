@@ -1,4 +1,4 @@
-// One shell's SDF (mesh-shell mode, engine/render/shell_pass.hpp): the map of the shell's
+// One shell's SDF (mesh-shell mode, engine/render/include/render/shell_pass.hpp): the map of the shell's
 // subtree alone ("generated/shell_map.glsl": shellSceneEmpty, shellDistance, shellSurface), read
 // at points in the shell node's own frame (object space) and giving world-unit distances (the
 // compiler folds the frame's scale in), and marching it along world-space rays. Rays march only

@@ -1,6 +1,7 @@
 // GPU test support: shared context, rendering, reference-image comparison.
 #include "gpu_test_support.hpp"
 
+#include "render/shader_library.hpp"
 #include "sdf/cpu_eval.hpp"
 
 #include <algorithm>
@@ -25,7 +26,7 @@ SharedGl& sharedGl() {
             ADD_FAILURE() << "no GL context for the GPU tests: " << error;
             std::abort();
         }
-        g.renderer = Renderer::create(ShaderFiles::embedded(), error);
+        g.renderer = Renderer::create(embeddedShaderFiles(), error);
         if (!g.renderer) {
             ADD_FAILURE() << error;
             std::abort();

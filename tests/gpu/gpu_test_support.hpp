@@ -6,9 +6,9 @@
 
 #include "core/image_io.hpp"
 #include "gl/context.hpp"
+#include "prepare/prepared_scene.hpp"
 #include "render/readback.hpp"
 #include "render/renderer.hpp"
-#include "scene/prepared_scene.hpp"
 
 #include <gtest/gtest.h>
 

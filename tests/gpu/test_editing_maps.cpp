@@ -5,6 +5,7 @@
 #include "gpu_test_support.hpp"
 
 #include "render/readback.hpp"
+#include "render/shader_library.hpp"
 #include "render/shader_warmer.hpp"
 
 #include <cstdlib>
@@ -82,7 +83,7 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     };
     const std::string a = mapFor(kSdfIdBase + 1), b = mapFor(kSdfIdBase + 2),
                       c = mapFor(kSdfIdBase + 3);
-    ShaderWarmer warmer(secondaryContext(), ShaderFiles::embedded());
+    ShaderWarmer warmer(secondaryContext(), embeddedShaderFiles());
     warmer.request(prepared, {a});
     warmer.request(prepared, {b});
     warmer.request(prepared, {c});
@@ -129,7 +130,7 @@ TEST(ShaderWarmer, WithoutAContextItSaysSoAndIgnoresRequests) {
             error = "no context for this test";
             return nullptr;
         },
-        ShaderFiles::embedded());
+        embeddedShaderFiles());
     warmer.waitUntilIdle();
     EXPECT_NE(warmer.takeError().find("no context for this test"), std::string::npos);
     const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Baked);

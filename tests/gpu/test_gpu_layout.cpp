@@ -5,6 +5,7 @@
 #include "gl/program.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_layout.hpp"
+#include "render/shader_library.hpp"
 #include "sdf/program.hpp"
 
 using namespace rmsc;
@@ -15,7 +16,7 @@ namespace {
 // A program that uses every scene buffer and the frame block, so none is optimized away.
 gl::Program buildLayoutProbe() {
     sharedRenderer(); // makes the context current
-    ShaderFiles files = ShaderFiles::embedded();
+    ShaderFiles files = embeddedShaderFiles();
     files.files["test/probe.frag"] = R"(#version 450 core
 #include "common/lighting.glsl"
 #include "common/sdf_scene.glsl"
@@ -171,7 +172,7 @@ TEST(GpuLayout, FrameBlockMatchesTheShader) {
 // A compile error inside an included file is reported with that file's name and line.
 TEST(ShaderErrors, CompileErrorNamesTheIncludedFileAndLine) {
     sharedRenderer();
-    ShaderFiles files = ShaderFiles::embedded();
+    ShaderFiles files = embeddedShaderFiles();
     files.files["test/broken.glsl"] = "// line 1\nfloat ok() { return 1.0; }\nfloat broken() { "
                                       "return undefinedName; }\n";
     files.files["test/main.frag"] = "#version 450 core\n#include \"test/broken.glsl\"\nout vec4 "

@@ -20,4 +20,4 @@ INSTANTIATE_TEST_SUITE_P(Samples, ReferenceImage,
                          ::testing::Values("demo", "shapes", "csg", "mesh_cut", "gltf_instances",
                                            "modifiers", "pawn", "chessboard", "materials",
                                            "primitives", "fractals", "smooth_blend", "shells"),
-                         [](const auto& info) { return std::string(info.param); });
+                         [](const auto& param) { return std::string(param.param); });

@@ -2,10 +2,10 @@
 // TEXCOORD set and factors, generates tangents, and refuses bad texture references; scene
 // materials' triplanar textures are read, shared, and refused with their JSON pointers when the
 // file is missing, not an image, or one too many.
+#include "prepare/prepared_scene.hpp"
 #include "scene/gltf_geometry.hpp"
 #include "scene/material_textures.hpp"
 #include "scene/mesh_asset.hpp"
-#include "scene/prepared_scene.hpp"
 #include "scene/scene_json.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
 // The SDF compiler, checked through the CPU evaluator: operations against their definitions,
 // group transforms, material inheritance and blending, object ids, the stack order and every
 // error the compiler reports.
+#include "core/object_ids.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/cpu_eval.hpp"
 

@@ -1,4 +1,5 @@
 // The CPU evaluator: hand-built programs, normals, and sphere tracing against analytic hits.
+#include "core/object_ids.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/cpu_eval.hpp"
 

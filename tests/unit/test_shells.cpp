@@ -2,9 +2,9 @@
 // splits them from the fullscreen program with their ids and frames, wrong placements and
 // unbounded or broken proxies are refused at the right JSON pointer, and the proxy meshes
 // enclose what they must.
-#include "scene/prepared_scene.hpp"
+#include "prepare/prepared_scene.hpp"
+#include "prepare/shell_proxy.hpp"
 #include "scene/scene_json.hpp"
-#include "scene/shell_proxy.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/cpu_eval.hpp"
 

@@ -1,0 +1,75 @@
+// A PreparedScene on the GPU: uploaded meshes, mesh instances, and the SSBOs (SDF program,
+// materials, lights) every pass reads. Parameter edits update buffer contents only.
+#pragma once
+
+#include "gl/handles.hpp"
+#include "prepare/prepared_scene.hpp"
+#include "render/gpu_layout.hpp"
+#include "render/gpu_mesh.hpp"
+#include "sdf/glsl_codegen.hpp"
+
+#include <vector>
+
+namespace rmsc {
+
+struct GpuMeshInstance {
+    int mesh = -1; // index into GpuScene::meshes
+    glm::mat4 model{1.0f};
+    glm::mat3 normalMatrix{1.0f};
+    std::uint32_t objectId = 0;
+    int materialOverride = -1; // index into PreparedScene::materials, or -1
+};
+
+// A shell (prepare/prepared_scene.hpp) on the GPU: its proxy mesh (object space), its frame and
+// clip box, and the GLSL of its map ("generated/shell_map.glsl", functions shellSceneEmpty,
+// shellDistance and shellSurface reading the program buffer from where the shell's
+// instructions start).
+struct GpuShell {
+    gl::Buffer vertices; // vec3 positions
+    gl::Buffer indices;
+    gl::VertexArray vertexArray;
+    GLsizei indexCount = 0;
+    glm::mat4 objectToWorld{1.0f};
+    glm::mat4 worldToObject{1.0f};
+    float distanceScale = 1.0f;
+    glm::vec3 clipMin{0.0f}; // object space
+    glm::vec3 clipMax{0.0f};
+    bool clipsContent = false; // PreparedShell::clipsContent
+    std::string map;
+};
+
+struct GpuScene {
+    std::vector<GpuMesh> meshes;
+    std::vector<std::vector<MeshMaterial>> meshMaterials; // per mesh, from the glTF
+    std::vector<GpuMeshInstance> instances;
+    std::vector<Material> materials; // copy of PreparedScene::materials, for overrides
+    gl::Buffer sdfProgram;           // GpuSdfHeader + instructions
+    gl::Buffer sdfData;              // SdfProgram::data (vec4[], at least one entry)
+    gl::Buffer materialBuffer;       // GpuMaterial[]
+    gl::Buffer lightBuffer;          // GpuLightHeader + GpuLight[]
+    // SDF material textures, one per PreparedScene::textures entry, bound to texture units
+    // kSdfMaterialTextureFirstUnit + slot by bindBuffers.
+    std::vector<gl::Texture> materialTextures;
+    int sdfInstructionCount = 0;
+    SdfProgram sdf;     // the scene's program (not the shells'), kept for the interpreter's first
+                        // guess of the nearest part (sdfNearestLeaf, per frame)
+    std::string sdfMap; // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
+    std::vector<GpuShell> shells; // their instructions follow the scene's in sdfProgram
+
+    // Lighting: the shadow-map views planned from the lights and the mesh bounds, the
+    // environment and its sky image (RGB16F with mipmaps; levels 0 without an image sky).
+    std::vector<GpuShadowView> shadowViews;
+    gl::Buffer shadowViewBuffer; // GpuShadowView[] (one dummy entry when there are none)
+    int shadowMapSize = 0;
+    float shadowSlopeBias = 0.0f;
+    Environment environment;
+    gl::Texture skyImage;
+    int skyLevels = 0;
+
+    // Binds the SSBOs at their SsboBinding points and the SDF material textures to their units.
+    void bindBuffers() const;
+};
+
+GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfStrategy::Baked);
+
+} // namespace rmsc

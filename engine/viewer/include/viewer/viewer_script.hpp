@@ -1,0 +1,73 @@
+// Replay scripts for the viewer (`rmsc view --script FILE`): input events at frame numbers, so
+// tests (and bug reports) can drive the real viewer. One event per line, '#' starts a comment:
+//
+//   FRAME key KEYS            press at FRAME, release at FRAME+1; KEYS like w, ctrl+z,
+//                             ctrl+shift+z, f12, escape, enter, space, delete, left_shift
+//   FRAME hold KEY N          hold KEY down for N frames
+//   FRAME move X Y            mouse to window pixel (X, Y), top-left origin
+//   FRAME down BUTTON         BUTTON: left | right | middle
+//   FRAME up BUTTON
+//   FRAME click X Y           move there, press left at FRAME, release at FRAME+1
+//   FRAME wheel DY
+//   FRAME text STRING         typed characters (the rest of the line)
+//   FRAME screenshot PATH     the rendered view at full resolution, as PNG
+//   FRAME window-shot PATH    the whole window with the editor panels, as PNG
+//   FRAME wait-shaders        wait until the shaders being built in the background are built
+//                             and in use (the view is drawn with them from this frame on)
+//   FRAME quit                close the window (asks when there are unsaved changes)
+//
+// Frames count from 0; events of one frame run in file order before the frame is drawn.
+#pragma once
+
+#include "viewer/viewer_input.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rmsc::app {
+
+struct ScriptEvent {
+    int frame = 0;
+    enum class Kind {
+        KeyDown,
+        KeyUp,
+        MouseMove,
+        ButtonDown,
+        ButtonUp,
+        Wheel,
+        Text,
+        Screenshot,
+        WindowShot,
+        WaitShaders,
+        Quit
+    } kind = Kind::Quit;
+    int code = 0; // key or button
+    glm::vec2 value{0.0f};
+    std::string text; // characters or a path
+    int line = 0;
+};
+
+struct Script {
+    std::vector<ScriptEvent> events; // sorted by frame, stable
+    int lastFrame() const { return events.empty() ? 0 : events.back().frame; }
+};
+
+// Parses a script; on error returns nullopt with `error` naming the file and line.
+std::optional<Script> parseScript(const std::string& text, const std::string& file,
+                                  std::string& error);
+std::optional<Script> loadScript(const std::filesystem::path& path, std::string& error);
+
+// Actions a frame's events ask of the viewer beyond input.
+struct ScriptActions {
+    std::vector<std::string> screenshots;
+    std::vector<std::string> windowShots;
+    bool waitShaders = false;
+    bool quit = false;
+};
+
+// Applies the events of `frame` to `input` and collects the other actions.
+ScriptActions playScriptFrame(const Script& script, int frame, InputState& input);
+
+} // namespace rmsc::app

@@ -1,0 +1,195 @@
+// Replay scripts (see viewer_script.hpp).
+#include "viewer/viewer_script.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace rmsc::app {
+namespace {
+
+int keyCode(const std::string& name) {
+    static const std::map<std::string, int> named = {
+        {"space", GLFW_KEY_SPACE},
+        {"escape", GLFW_KEY_ESCAPE},
+        {"enter", GLFW_KEY_ENTER},
+        {"tab", GLFW_KEY_TAB},
+        {"backspace", GLFW_KEY_BACKSPACE},
+        {"delete", GLFW_KEY_DELETE},
+        {"left", GLFW_KEY_LEFT},
+        {"right", GLFW_KEY_RIGHT},
+        {"up", GLFW_KEY_UP},
+        {"down", GLFW_KEY_DOWN},
+        {"ctrl", GLFW_KEY_LEFT_CONTROL},
+        {"left_ctrl", GLFW_KEY_LEFT_CONTROL},
+        {"shift", GLFW_KEY_LEFT_SHIFT},
+        {"left_shift", GLFW_KEY_LEFT_SHIFT},
+        {"right_shift", GLFW_KEY_RIGHT_SHIFT},
+        {"alt", GLFW_KEY_LEFT_ALT},
+        {"f12", GLFW_KEY_F12},
+        {"f1", GLFW_KEY_F1},
+    };
+    if (auto it = named.find(name); it != named.end()) return it->second;
+    if (name.size() == 1) {
+        const char c = name[0];
+        if (c >= 'a' && c <= 'z') return GLFW_KEY_A + (c - 'a');
+        if (c >= '0' && c <= '9') return GLFW_KEY_0 + (c - '0');
+    }
+    return -1;
+}
+
+int buttonCode(const std::string& name) {
+    if (name == "left") return 0;
+    if (name == "right") return 1;
+    if (name == "middle") return 2;
+    return -1;
+}
+
+} // namespace
+
+std::optional<Script> parseScript(const std::string& text, const std::string& file,
+                                  std::string& error) {
+    Script script;
+    std::istringstream lines(text);
+    std::string line;
+    int lineNumber = 0;
+    auto fail = [&](const std::string& message) {
+        error = file + ":" + std::to_string(lineNumber) + ": " + message;
+        return std::nullopt;
+    };
+    while (std::getline(lines, line)) {
+        ++lineNumber;
+        if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+        std::istringstream in(line);
+        std::string frameText, verb;
+        if (!(in >> frameText)) continue;
+        int frame = 0;
+        try {
+            std::size_t used = 0;
+            frame = std::stoi(frameText, &used);
+            if (used != frameText.size() || frame < 0) throw std::invalid_argument("frame");
+        } catch (const std::exception&) {
+            return fail("expected a frame number >= 0, got '" + frameText + "'");
+        }
+        if (!(in >> verb)) return fail("expected an event after the frame number");
+        ScriptEvent e;
+        e.frame = frame;
+        e.line = lineNumber;
+        using K = ScriptEvent::Kind;
+        if (verb == "key" || verb == "hold") {
+            std::string keys;
+            in >> keys;
+            int frames = 1;
+            if (verb == "hold" && !(in >> frames)) return fail("expected: hold KEY FRAMES");
+            std::vector<int> codes;
+            std::stringstream parts(keys);
+            std::string part;
+            while (std::getline(parts, part, '+')) {
+                const int code = keyCode(part);
+                if (code < 0) return fail("unknown key '" + part + "'");
+                codes.push_back(code);
+            }
+            if (codes.empty()) return fail("expected a key");
+            for (int code : codes)
+                script.events.push_back({frame, K::KeyDown, code, {}, {}, lineNumber});
+            for (int code : codes)
+                script.events.push_back({frame + frames, K::KeyUp, code, {}, {}, lineNumber});
+        } else if (verb == "move" || verb == "click") {
+            float x = 0, y = 0;
+            if (!(in >> x >> y)) return fail("expected: " + verb + " X Y");
+            script.events.push_back({frame, K::MouseMove, 0, {x, y}, {}, lineNumber});
+            if (verb == "click") {
+                script.events.push_back({frame, K::ButtonDown, 0, {}, {}, lineNumber});
+                script.events.push_back({frame + 1, K::ButtonUp, 0, {}, {}, lineNumber});
+            }
+        } else if (verb == "down" || verb == "up") {
+            std::string name;
+            in >> name;
+            const int button = buttonCode(name);
+            if (button < 0) return fail("expected left, right or middle, got '" + name + "'");
+            script.events.push_back(
+                {frame, verb == "down" ? K::ButtonDown : K::ButtonUp, button, {}, {}, lineNumber});
+        } else if (verb == "wheel") {
+            float dy = 0;
+            if (!(in >> dy)) return fail("expected: wheel DY");
+            script.events.push_back({frame, K::Wheel, 0, {0.0f, dy}, {}, lineNumber});
+        } else if (verb == "text" || verb == "screenshot" || verb == "window-shot") {
+            std::string rest;
+            std::getline(in >> std::ws, rest);
+            while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\r'))
+                rest.pop_back();
+            if (rest.empty()) return fail("expected text or a path after '" + verb + "'");
+            const K kind = verb == "text"         ? K::Text
+                           : verb == "screenshot" ? K::Screenshot
+                                                  : K::WindowShot;
+            script.events.push_back({frame, kind, 0, {}, rest, lineNumber});
+        } else if (verb == "quit" || verb == "wait-shaders") {
+            script.events.push_back(
+                {frame, verb == "quit" ? K::Quit : K::WaitShaders, 0, {}, {}, lineNumber});
+        } else {
+            return fail("unknown event '" + verb + "'");
+        }
+    }
+    std::stable_sort(script.events.begin(), script.events.end(),
+                     [](const ScriptEvent& a, const ScriptEvent& b) { return a.frame < b.frame; });
+    return script;
+}
+
+std::optional<Script> loadScript(const std::filesystem::path& path, std::string& error) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = path.string() + ": cannot read the script";
+        return std::nullopt;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    return parseScript(text.str(), path.string(), error);
+}
+
+ScriptActions playScriptFrame(const Script& script, int frame, InputState& input) {
+    ScriptActions actions;
+    using K = ScriptEvent::Kind;
+    for (const ScriptEvent& e : script.events) {
+        if (e.frame != frame) continue;
+        switch (e.kind) {
+        case K::KeyDown:
+            input.keyEvent(e.code, true);
+            break;
+        case K::KeyUp:
+            input.keyEvent(e.code, false);
+            break;
+        case K::MouseMove:
+            input.moveMouse(e.value);
+            break;
+        case K::ButtonDown:
+            input.buttonEvent(e.code, true);
+            break;
+        case K::ButtonUp:
+            input.buttonEvent(e.code, false);
+            break;
+        case K::Wheel:
+            input.wheel += e.value.y;
+            break;
+        case K::Text:
+            for (unsigned char c : e.text)
+                input.characters.push_back(c);
+            break;
+        case K::Screenshot:
+            actions.screenshots.push_back(e.text);
+            break;
+        case K::WindowShot:
+            actions.windowShots.push_back(e.text);
+            break;
+        case K::WaitShaders:
+            actions.waitShaders = true;
+            break;
+        case K::Quit:
+            actions.quit = true;
+            break;
+        }
+    }
+    return actions;
+}
+
+} // namespace rmsc::app
