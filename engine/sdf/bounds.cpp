@@ -324,6 +324,7 @@ SdfBounds primitiveBounds(PrimitiveId id, const PrimitiveParams& a, float level)
         return unbounded("");
     case PrimitiveId::InfiniteCylinder:
     case PrimitiveId::InfiniteCone:
+    case PrimitiveId::Gyroid:
         return unbounded("");
     case PrimitiveId::Quad:
         return quadBounds(a, t);

@@ -53,6 +53,21 @@ float sdPlane(vec3 p, const float* a) {
     return glm::dot(p, n) / std::max(glm::length(n), 1e-6f) - a[3];
 }
 
+// A gyroid sheet: the level set |g| <= ... of Schoen's gyroid approximated by its trigonometric
+// equation g(q) = sin qx cos qy + sin qy cos qz + sin qz cos qx, q = p * 2 pi / period (Schoen,
+// "Infinite periodic minimal surfaces without self-intersections", NASA TN D-5541, 1970). Not a
+// distance: a bound. The x component of grad g is cos qx cos qy - sin qz sin qx, at most
+// sqrt(cos^2 qx + sin^2 qx) * sqrt(cos^2 qy + sin^2 qz) by Cauchy-Schwarz, and summing the
+// three squared components so gives |grad g|^2 <= 3. So |g(s p)| / (sqrt(3) s) is 1-Lipschitz in
+// p, and so is that minus the half thickness: a safe step for sphere tracing.
+float sdGyroid(vec3 p, const float* a) {
+    const float s = 6.28318531f / a[0];
+    const vec3 q = p * s;
+    const float g = std::sin(q.x) * std::cos(q.y) + std::sin(q.y) * std::cos(q.z) +
+                    std::sin(q.z) * std::cos(q.x);
+    return std::abs(g) / (1.73205081f * s) - a[1];
+}
+
 float sdCapsule(vec3 p, const float* a) {
     p.y -= std::clamp(p.y, -a[0], a[0]);
     return glm::length(p) - a[1];
@@ -225,6 +240,15 @@ constexpr ParamSpec kQuaternionJulia[] = {
     {"c_k", 1, {0.31f}, -2.0f, 2.0f, "k part of c"},
     {"iterations", 1, {10.0f}, 1.0f, 32.0f, "iterations (floored)"}};
 
+constexpr ParamSpec kGyroid[] = {
+    {"period", 1, {1.0f}, 1e-3f, kBig, "length of one cell of the lattice along each axis"},
+    {"thickness",
+     1,
+     {0.05f},
+     0.0f,
+     kBig,
+     "half the sheet's thickness where the surface is steepest; more elsewhere (0 = a sheet)"}};
+
 constexpr const char* kIq = "Quilez, Distance functions";
 constexpr const char* kIqMandelbulb =
     "Quilez, Mandelbulb (https://iquilezles.org/articles/mandelbulb/)";
@@ -316,6 +340,9 @@ const PrimitiveSpec kCatalogue[] = {
     {PrimitiveId::QuaternionJulia, "quaternion_julia", "sdQuaternionJulia", false, kQuaternionJulia,
      formulas::quaternionJulia,
      "a quaternion Julia set z -> z^2 + c, the slice with fourth component 0", kHart, 0.8f},
+    {PrimitiveId::Gyroid, "gyroid", "sdGyroid", false, kGyroid, sdGyroid,
+     "an infinite gyroid lattice (a triply periodic sheet); intersect it with a shape to fill it",
+     "Schoen, Infinite periodic minimal surfaces without self-intersections (1970)"},
 };
 static_assert(std::size(kCatalogue) == std::size_t(PrimitiveId::Count));
 

@@ -345,6 +345,14 @@ float sdQuad(vec3 p, vec3 a, vec3 b, vec3 c, vec3 d) {
     return sqrt(d2);
 }
 
+// A gyroid sheet, a bound (C++, source and Lipschitz proof: sdGyroid in engine/sdf/primitives.cpp).
+float sdGyroid(vec3 p, float period, float thickness) {
+    float s = 6.28318531 / period;
+    vec3 q = p * s;
+    float g = sin(q.x) * cos(q.y) + sin(q.y) * cos(q.z) + sin(q.z) * cos(q.x);
+    return abs(g) / (1.73205081 * s) - thickness;
+}
+
 // ---- Fractals (C++ and sources: engine/sdf/fractal_formulas.cpp). Each returns the distance to
 // its bounding sphere when p is well outside it. Iteration counts arrive as floats, floored.
 

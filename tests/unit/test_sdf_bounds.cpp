@@ -199,7 +199,7 @@ PrimitiveParams randomParams(const PrimitiveSpec& spec, std::mt19937& rng) {
 
 bool infinite(PrimitiveId id) {
     return id == PrimitiveId::Plane || id == PrimitiveId::InfiniteCylinder ||
-           id == PrimitiveId::InfiniteCone;
+           id == PrimitiveId::InfiniteCone || id == PrimitiveId::Gyroid;
 }
 
 bool fractal(PrimitiveId id) {

@@ -294,6 +294,33 @@ TEST(SdfPrimitiveSet, QuaternionJulia) {
         3.0f - bound, kTol);
 }
 
+TEST(SdfPrimitiveSet, Gyroid) {
+    // period 2 (s = pi), half thickness 0.05.
+    const auto d = [](glm::vec3 p) { return distanceOf(PrimitiveId::Gyroid, {2, 0.05f}, p); };
+    const float s = std::acos(-1.0f);
+    EXPECT_NEAR(d({0, 0, 0}), -0.05f, kTol); // g(0) = 0: the middle of the sheet
+    // q = (pi/2, 0, 0): g = sin(pi/2) cos 0 = 1.
+    EXPECT_NEAR(d({0.5f, 0, 0}), 1.0f / (std::sqrt(3.0f) * s) - 0.05f, kTol);
+    EXPECT_NEAR(d({2.5f, 2, -4}), d({0.5f, 0, 0}), kTol); // periodic along every axis
+    // 1-Lipschitz (what makes it a safe step): |d(a) - d(b)| <= |a - b| for close pairs, where
+    // the bound is tightest, and far ones.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f), offset(-0.05f, 0.05f);
+    float steepest = 0.0f;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 a(coordinate(rng), coordinate(rng), coordinate(rng));
+        const glm::vec3 b = a + (i % 2 ? glm::vec3(offset(rng), offset(rng), offset(rng))
+                                       : glm::vec3(coordinate(rng), coordinate(rng), 0.0f));
+        const float length = glm::length(a - b);
+        if (length < 1e-3f) continue;
+        const float slope = std::abs(d(a) - d(b)) / length;
+        steepest = std::max(steepest, slope);
+        ASSERT_LE(slope, 1.0f + 1e-3f) << "between " << a.x << ", " << a.y << ", " << a.z;
+    }
+    // And not needlessly loose: the steepest slope found comes near 1.
+    EXPECT_GT(steepest, 0.8f);
+}
+
 // Every bound, times the step scale the march applies, stays at or below the distance to the
 // nearest of many surface points, found as sign changes of the function along the edges of a
 // fine grid (refined by bisection). Surface points are on the surface, so the nearest one is

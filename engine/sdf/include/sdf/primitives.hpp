@@ -52,6 +52,7 @@ enum class PrimitiveId : std::uint32_t {
     MengerSponge,
     SierpinskiTetrahedron,
     QuaternionJulia,
+    Gyroid,
     Count
 };
 
