@@ -308,8 +308,7 @@ int runBench(std::span<const std::string> args) {
     getrusage(RUSAGE_SELF, &usage);
     const double peakMiB = double(usage.ru_maxrss) / 1024.0;
 
-    const char* passNames[] = {"raster", "march", "post", "shadow", "shell", "cone"};
-    static_assert(std::size(passNames) == std::size_t(Pass::Count));
+    const auto& passNames = kPassNames;
     const std::string name = scenePath.empty() ? "(built-in demo)" : scenePath;
     const HeadlessContext& context = *session.context;
     const double bakedMedian = stats(runs.front().wall).median;

@@ -14,8 +14,9 @@ FrameTargets createFrameTargets(int width, int height) {
             createConeTarget(width, height), createDisplayTarget(width, height)};
 }
 
-Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow)
-    : files_(std::move(files)), post_(std::move(post)), shadow_(std::move(shadow)) {
+Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow, GridPass grid)
+    : files_(std::move(files)), post_(std::move(post)), grid_(std::move(grid)),
+      shadow_(std::move(shadow)) {
     frameBuffer_ = gl::createBufferWithData(sizeof(GpuFrame), nullptr);
     statistics_ = gl::createBufferWithData(4 * sizeof(std::uint32_t), nullptr);
     for (gl::Query& timer : timers_)
@@ -34,7 +35,9 @@ std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) 
     if (!post) return std::nullopt;
     std::optional<ShadowPass> shadow = ShadowPass::create(files, error);
     if (!shadow) return std::nullopt;
-    return Renderer(std::move(files), std::move(*post), std::move(*shadow));
+    std::optional<GridPass> grid = GridPass::create(files, error);
+    if (!grid) return std::nullopt;
+    return Renderer(std::move(files), std::move(*post), std::move(*shadow), std::move(*grid));
 }
 
 namespace {
@@ -143,6 +146,9 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     });
     const MarchPass& march = countEvaluations_ ? *sdf.countingMarch : sdf.march;
     timed(Pass::March, [&] { march.draw(targets.raster, targets.cone, targets.combined); });
+    timed(Pass::Grid, [&] {
+        if (groundGrid_) grid_.draw(targets.combined);
+    });
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
     glBindTextureUnit(kShadowMapUnit, 0);
     glBindTextureUnit(kSkyImageUnit, 0);

@@ -121,6 +121,7 @@ bool Viewer::loadShaders(bool initial) {
     if (newRenderer) newDisplay = DisplayPass::create(files, error);
     if (newRenderer && newDisplay) {
         renderer = std::move(newRenderer);
+        renderer->setGroundGrid(true);
         display = std::move(newDisplay);
         shaderFiles = std::move(files);
         startWarmer();
@@ -138,6 +139,7 @@ bool Viewer::loadShaders(bool initial) {
         if (newRenderer) newDisplay = DisplayPass::create(files, error);
         if (newRenderer && newDisplay) {
             renderer = std::move(newRenderer);
+            renderer->setGroundGrid(true);
             display = std::move(newDisplay);
             shaderFiles = std::move(files);
             startWarmer();

@@ -1,12 +1,13 @@
-// The frame: shadow pass -> raster pass -> cone pass -> march pass -> post pass, with the per-frame
-// uniform block and per-pass GPU timers. Owns the passes (the programs), not the scene or the
-// targets.
+// The frame: shadow pass -> raster pass -> cone pass -> march pass -> (grid pass) -> post pass,
+// with the per-frame uniform block and per-pass GPU timers. Owns the passes (the programs), not the
+// scene or the targets.
 #pragma once
 
 #include "render/cone_pass.hpp"
 #include "render/frame.hpp"
 #include "render/gbuffer.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/grid_pass.hpp"
 #include "render/march_pass.hpp"
 #include "render/post_pass.hpp"
 #include "render/raster_pass.hpp"
@@ -31,7 +32,10 @@ struct FrameTargets {
 
 FrameTargets createFrameTargets(int width, int height);
 
-enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Count };
+enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Grid, Count };
+// Names of the passes, in Pass order (what `rmsc bench` prints).
+constexpr std::array<const char*, std::size_t(Pass::Count)> kPassNames = {
+    "raster", "march", "post", "shadow", "shell", "cone", "grid"};
 
 // Fragments whose march took at least one step in the last frame, per pass.
 struct MarchStatistics {
@@ -84,6 +88,9 @@ class Renderer {
     // Run the cone pass before the march pass (the default). Off, every pixel marches from the
     // near plane: the baseline `rmsc bench` measures the pre-pass against.
     void setConePass(bool on) { conePass_ = on; }
+    // Draw the ground grid (render/grid_pass.hpp) after the march pass; off by default, the
+    // viewer turns it on.
+    void setGroundGrid(bool on) { groundGrid_ = on; }
 
   private:
     ShaderFiles files_;
@@ -93,13 +100,15 @@ class Renderer {
     double lastCompileMs_ = 0.0;
     bool countEvaluations_ = false;
     bool conePass_ = true;
+    bool groundGrid_ = false;
     PostPass post_;
+    GridPass grid_;
     ShadowPass shadow_;
     gl::Buffer frameBuffer_; // GpuFrame uniform block
     gl::Buffer statistics_;  // four uints: MarchStatistics (evaluations in two words)
     std::array<gl::Query, std::size_t(Pass::Count)> timers_;
 
-    Renderer(ShaderFiles files, PostPass post, ShadowPass shadow);
+    Renderer(ShaderFiles files, PostPass post, ShadowPass shadow, GridPass grid);
 };
 
 } // namespace rmsc
