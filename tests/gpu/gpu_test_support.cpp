@@ -12,6 +12,7 @@ namespace {
 struct SharedGl {
     std::unique_ptr<HeadlessContext> context;
     std::optional<Renderer> renderer;
+    bool llvmpipe = false; // GL_RENDERER names Mesa's llvmpipe
 };
 
 SharedGl& sharedGl() {
@@ -30,6 +31,7 @@ SharedGl& sharedGl() {
             ADD_FAILURE() << error;
             std::abort();
         }
+        g.llvmpipe = g.context->renderer().find("llvmpipe") != std::string::npos;
         return g;
     }();
     return gl;
@@ -39,6 +41,10 @@ SharedGl& sharedGl() {
 
 Renderer& sharedRenderer() {
     return *sharedGl().renderer;
+}
+
+bool onLlvmpipe() {
+    return sharedGl().llvmpipe;
 }
 
 void expectNoGlErrors() {

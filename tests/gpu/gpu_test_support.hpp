@@ -1,7 +1,7 @@
 // Support for tests that need a GL context: one headless context per test process (backend
-// from RMSC_TEST_BACKEND, default auto), rendering a prepared scene to frame targets, and
-// comparing images with a reference PNG under a stated tolerance, writing actual, diff and (on
-// request) candidate images when they differ.
+// from RMSC_TEST_BACKEND, default auto) and whether it is llvmpipe, rendering a prepared scene
+// to frame targets, and comparing images with a reference PNG under a stated tolerance, writing
+// actual, diff and (on request) candidate images when they differ.
 #pragma once
 
 #include "core/image_io.hpp"
@@ -20,6 +20,10 @@ namespace rmsc::test {
 
 // The process-wide context and renderer; the first call creates them (GL debug output on).
 Renderer& sharedRenderer();
+
+// Whether the shared context runs on Mesa's llvmpipe (its GL_RENDERER, read once). Tolerances
+// that exist only because of llvmpipe apply when this is true; other drivers get the strict one.
+bool onLlvmpipe();
 
 // Fails the current test if KHR_debug reported a GL error since the last call.
 void expectNoGlErrors();
