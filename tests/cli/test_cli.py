@@ -20,7 +20,7 @@ passed = 0
 
 def run(args, env=None):
     full_env = dict(os.environ, **(env or {}))
-    return subprocess.run([RMSC] + args, capture_output=True, text=True, timeout=300, env=full_env)
+    return subprocess.run([RMSC] + args, capture_output=True, text=True, timeout=60, env=full_env)
 
 
 def check(name, condition, detail=""):

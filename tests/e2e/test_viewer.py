@@ -87,7 +87,7 @@ def main():
         open(script, "w").write(text.replace("OUT/", tmp + "/"))
         command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script",
                    script, "--size", "640x360", "--embedded-shaders"]
-        run = subprocess.run(command, capture_output=True, text=True, timeout=240)
+        run = subprocess.run(command, capture_output=True, text=True, timeout=540)
         print(run.stderr[-3000:])
         if run.returncode != 0 and "cannot open a window" in run.stderr and "Xvfb" in run.stderr:
             print("SKIP: Xvfb could not start")

@@ -13,6 +13,7 @@ namespace {
 struct SharedGl {
     std::unique_ptr<HeadlessContext> context;
     std::optional<Renderer> renderer;
+    bool llvmpipe = false; // GL_RENDERER names Mesa's llvmpipe
 };
 
 SharedGl& sharedGl() {
@@ -31,6 +32,7 @@ SharedGl& sharedGl() {
             ADD_FAILURE() << error;
             std::abort();
         }
+        g.llvmpipe = g.context->renderer().find("llvmpipe") != std::string::npos;
         return g;
     }();
     return gl;
@@ -40,6 +42,10 @@ SharedGl& sharedGl() {
 
 Renderer& sharedRenderer() {
     return *sharedGl().renderer;
+}
+
+bool onLlvmpipe() {
+    return sharedGl().llvmpipe;
 }
 
 void expectNoGlErrors() {
@@ -88,22 +94,33 @@ std::filesystem::path testOutputDirectory() {
                                                  ImageTolerance tolerance) {
     const std::filesystem::path reference =
         std::filesystem::path(RMSC_TEST_SOURCE_DIR) / "tests" / "reference" / (name + ".png");
+    const std::filesystem::path candidate = testOutputDirectory() / (name + ".candidate.png");
+    std::error_code ignored;
+    std::filesystem::remove(candidate, ignored); // a candidate is only ever this run's image
     std::string error;
-    const char* update = std::getenv("RMSC_UPDATE_REFERENCES");
-    if (update && std::string(update) == "1") {
-        if (!writePng8(reference, actual, error))
-            return ::testing::AssertionFailure() << "cannot write " << reference << ": " << error;
-        return ::testing::AssertionSuccess() << "reference updated";
-    }
-    const std::filesystem::path actualPath = testOutputDirectory() / (name + ".actual.png");
     std::optional<Pixels<std::uint8_t>> expected = readPng8(reference, actual.channels, error);
-    if (!expected) {
+    ::testing::AssertionResult result = ::testing::AssertionSuccess();
+    if (expected) {
+        result = imagesMatch(actual, *expected, name, tolerance);
+    } else {
+        const std::filesystem::path actualPath = testOutputDirectory() / (name + ".actual.png");
         writePng8(actualPath, actual, error);
-        return ::testing::AssertionFailure()
-               << "no reference image " << reference << " (actual written to " << actualPath
-               << "; run with RMSC_UPDATE_REFERENCES=1 to accept it)";
+        result = ::testing::AssertionFailure() << "no reference image " << reference
+                                               << " (actual written to " << actualPath << ")";
     }
-    return imagesMatch(actual, *expected, name, tolerance);
+    if (result) return result;
+    // A candidate never passes a test: it waits in the output folder for review and
+    // tools/promote-references.sh, which commits it with a message saying what changed and why.
+    const char* update = std::getenv("RMSC_UPDATE_REFERENCES");
+    if (!update || std::string(update) != "1")
+        return result << ". To propose this image as the reference, run again with "
+                         "RMSC_UPDATE_REFERENCES=1";
+    if (!writePng8(candidate, actual, error))
+        return result << ". Cannot write the candidate " << candidate << ": " << error;
+    return result
+           << ". Candidate: " << candidate
+           << "; after reviewing it: tools/promote-references.sh -m \"what changed and why\" "
+           << name;
 }
 
 ::testing::AssertionResult imagesMatch(const Pixels<std::uint8_t>& actual,
@@ -112,10 +129,13 @@ std::filesystem::path testOutputDirectory() {
     const Pixels<std::uint8_t>* expected = &expectedImage;
     std::string error;
     const std::filesystem::path actualPath = testOutputDirectory() / (name + ".actual.png");
-    if (expected->width != actual.width || expected->height != actual.height)
+    if (expected->width != actual.width || expected->height != actual.height) {
+        writePng8(actualPath, actual, error);
         return ::testing::AssertionFailure()
-               << "size " << actual.width << "x" << actual.height << " differs from reference "
-               << expected->width << "x" << expected->height;
+               << name << ": size " << actual.width << "x" << actual.height
+               << " differs from the expected " << expected->width << "x" << expected->height
+               << ". Actual: " << actualPath;
+    }
 
     Pixels<std::uint8_t> diff{actual.width, actual.height, 3, {}};
     diff.data.assign(std::size_t(actual.width) * actual.height * 3, 0);

@@ -1,7 +1,7 @@
 // Support for tests that need a GL context: one headless context per test process (backend
-// from RMSC_TEST_BACKEND, default auto), rendering a prepared scene to frame targets, and
-// comparing images with a reference PNG under a stated tolerance, writing actual and diff
-// images when they differ.
+// from RMSC_TEST_BACKEND, default auto) and whether it is llvmpipe, rendering a prepared scene
+// to frame targets, and comparing images with a reference PNG under a stated tolerance, writing
+// actual, diff and (on request) candidate images when they differ.
 #pragma once
 
 #include "core/image_io.hpp"
@@ -21,6 +21,10 @@ namespace rmsc::test {
 // The process-wide context and renderer; the first call creates them (GL debug output on).
 Renderer& sharedRenderer();
 
+// Whether the shared context runs on Mesa's llvmpipe (its GL_RENDERER, read once). Tolerances
+// that exist only because of llvmpipe apply when this is true; other drivers get the strict one.
+bool onLlvmpipe();
+
 // Fails the current test if KHR_debug reported a GL error since the last call.
 void expectNoGlErrors();
 
@@ -39,7 +43,7 @@ float marchStart(const SdfProgram& program, const RenderSettings& settings,
 // Opens a scene file from the repository (path relative to the repository root).
 PreparedScene openRepositoryScene(const std::string& relativePath);
 
-// Where tests write their output images (actual, diff): <build>/test-output/.
+// Where tests write their output images (actual, diff, candidate): <build>/test-output/.
 std::filesystem::path testOutputDirectory();
 
 struct ImageTolerance {
@@ -49,7 +53,9 @@ struct ImageTolerance {
 
 // Compares `actual` (RGBA8) with tests/reference/<name>.png. On a mismatch writes
 // <output>/<name>.actual.png and <name>.diff.png and returns a failure naming them. With
-// RMSC_UPDATE_REFERENCES=1 the reference is (re)written instead.
+// RMSC_UPDATE_REFERENCES=1 a mismatch also writes <output>/<name>.candidate.png for review and
+// tools/promote-references.sh; the result is still the failure. tests/reference/ is never
+// written.
 ::testing::AssertionResult imageMatchesReference(const Pixels<std::uint8_t>& actual,
                                                  const std::string& name,
                                                  ImageTolerance tolerance = {});

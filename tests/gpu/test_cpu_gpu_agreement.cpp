@@ -15,6 +15,7 @@ struct Agreement {
     int sdfHits = 0;
     int idMismatches = 0;
     int depthMismatches = 0;
+    int gpuMisses = 0; // of the id mismatches, where the CPU hits SDF and the GPU shows nothing
     std::string firstProblem;
 };
 
@@ -53,6 +54,7 @@ Agreement compare(const PreparedScene& prepared, int width, int height, int step
             }
             if (cpuId != gpuId) {
                 ++a.idMismatches;
+                a.gpuMisses += hit && gpuId == 0;
                 if (a.firstProblem.empty())
                     a.firstProblem = "pixel " + std::to_string(x) + "," + std::to_string(row) +
                                      ": GPU id " + std::to_string(gpuId) + ", CPU id " +
@@ -80,6 +82,10 @@ void expectAgreement(const std::string& scenePath, double minSdfShare) {
     EXPECT_GT(a.sdfHits, int(minSdfShare * a.sampled)) << "too few SDF pixels to compare";
     EXPECT_LE(a.idMismatches, allowed) << scenePath << ": " << a.firstProblem;
     EXPECT_LE(a.depthMismatches, allowed) << scenePath << ": " << a.firstProblem;
+    // Of those, a GPU march that misses what the CPU hits (it gave up, or started past the
+    // surface) is at most a grazing ray ending on the other side of the threshold: 0.2% of
+    // samples (4 of 2,304). None did on llvmpipe in any of these scenes.
+    EXPECT_LE(a.gpuMisses, a.sampled / 500) << scenePath << ": " << a.firstProblem;
 }
 
 } // namespace

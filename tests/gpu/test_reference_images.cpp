@@ -1,7 +1,9 @@
 // Reference images of the sample scenes: each rendered at 256x144 and compared with
 // tests/reference/<scene>.png. Tolerance: a pixel differs when a channel is off by more than
 // 8 of 255; at most 0.5% of pixels may differ. A failure writes the actual and a diff image to
-// <build>/test-output/. Refresh references with RMSC_UPDATE_REFERENCES=1 after checking them.
+// <build>/test-output/; with RMSC_UPDATE_REFERENCES=1 also <scene>.candidate.png, and the test
+// still fails. Review a candidate, then commit it with tools/promote-references.sh -m "what
+// changed in the picture and why" <scene>; nothing else writes tests/reference/.
 #include "gpu_test_support.hpp"
 
 using namespace rmsc;

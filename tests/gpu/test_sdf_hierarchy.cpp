@@ -67,7 +67,8 @@ struct Comparison {
     int gpuHits = 0;       // pixels the GPU shows an SDF object at
     int gpuMismatches = 0; // of those, where the CPU finds another object or depth
     int idOnly = 0;        // of those, where only the object differs, not the depth
-    int cpuOnly = 0;       // the CPU hits, the GPU shows nothing or id 0
+    int idLost = 0;        // the CPU hits, the GPU shows its depth but id 0
+    int cpuOnly = 0;       // the CPU hits, the GPU shows nothing (no depth, id 0)
     std::string firstProblem;
 };
 
@@ -94,13 +95,21 @@ Comparison compareWithCpu(const PreparedScene& prepared, int size) {
             const std::uint32_t cpuId =
                 hit ? sdfSurface(prepared.sdf, prepared.materials, hit->position).objectId : 0;
             c.cpuHits += hit ? 1 : 0;
+            const bool depthOk = hit && std::abs(hit->t * forwardness - *depths.at(x, row)) <=
+                                            2e-3f * std::max(hit->t * forwardness, 1.0f);
             if (gpuId == 0) {
-                c.cpuOnly += hit ? 1 : 0;
+                if (hit && depthOk)
+                    ++c.idLost;
+                else if (hit)
+                    ++c.cpuOnly;
+                if (hit && c.firstProblem.empty())
+                    c.firstProblem = "pixel " + std::to_string(x) + "," + std::to_string(row) +
+                                     ": GPU id 0 depth " + std::to_string(*depths.at(x, row)) +
+                                     ", CPU id " + std::to_string(cpuId) + " depth " +
+                                     std::to_string(hit->t * forwardness);
                 continue;
             }
             ++c.gpuHits;
-            const bool depthOk = hit && std::abs(hit->t * forwardness - *depths.at(x, row)) <=
-                                            2e-3f * std::max(hit->t * forwardness, 1.0f);
             c.idOnly += depthOk && cpuId != gpuId;
             if (cpuId != gpuId || !depthOk) {
                 ++c.gpuMismatches;
@@ -125,15 +134,14 @@ TEST(SdfHierarchyGpu, SixtyFourLevelsAgreeWithTheCpu) {
     EXPECT_EQ(prepared.sdf.pointStackDepth, 8);
     const Comparison c = compareWithCpu(prepared, 64);
     EXPECT_GT(c.cpuHits, c.sampled / 20); // the rings cover about a tenth of the view
-    EXPECT_LE(c.gpuMismatches + c.cpuOnly, c.sampled / 100) << c.firstProblem;
+    EXPECT_LE(c.gpuMismatches + c.idLost + c.cpuOnly, c.sampled / 100) << c.firstProblem;
 }
 
 // More than 1,000 nodes nested 64 levels deep compile and render, and the hierarchy resolves
-// on the CPU. On the GPU only the pixels it shows are compared: Mesa's llvmpipe ends all loops
-// of a shader invocation after a shared budget of iterations (LP_MAX_TGSI_LOOP_ITERATIONS,
-// "shared between every loop"), which a program of 2,000 instructions exhausts after a few
-// evaluations, so on llvmpipe many rays of this scene end early as misses (or lose their id).
-// Hardware drivers have no such budget.
+// on the CPU. The GPU image agrees with the CPU as the 64-level one does, but on llvmpipe: Mesa's
+// llvmpipe ends all loops of a shader invocation after a shared budget of iterations
+// (LP_MAX_TGSI_LOOP_ITERATIONS, "shared between every loop"), which a program of 2,000
+// instructions exhausts after a few evaluations. Hardware drivers have no such budget.
 TEST(SdfHierarchyGpu, ThousandNodesSixtyFourLevelsRender) {
     const int levels = 64;
     const int ringSpheres = 16;
@@ -145,17 +153,31 @@ TEST(SdfHierarchyGpu, ThousandNodesSixtyFourLevelsRender) {
     EXPECT_EQ(prepared.sdf.pointStackDepth, 8);
 
     const Comparison c = compareWithCpu(prepared, 64);
+    RecordProperty("cpu_hits", c.cpuHits);
+    RecordProperty("gpu_hits", c.gpuHits);
+    RecordProperty("id_only", c.idOnly);
+    RecordProperty("id_lost", c.idLost);
+    RecordProperty("cpu_only_hits", c.cpuOnly);
     EXPECT_GT(c.cpuHits, c.sampled / 5);
     EXPECT_GT(c.gpuHits, 0);
-    // The depth of the pixels llvmpipe shows is right, but for at most 5% (or 4). Their object
-    // may not be: the surface lookup after the march runs the program once more, and when the
-    // march left little of the budget, the lookup ends early with the id of a shape it had
-    // evaluated (the same wrong id at pixels far apart), or where two shapes meet at the same
-    // depth the id is a matter of the last bit: at most a quarter.
-    EXPECT_LE(c.gpuMismatches - c.idOnly, std::max(4, c.gpuHits / 20)) << c.firstProblem;
-    EXPECT_LE(c.idOnly, c.gpuHits / 4) << c.firstProblem;
-    RecordProperty("gpu_hits", c.gpuHits);
-    RecordProperty("cpu_only_hits", c.cpuOnly);
+    // Every ray the CPU sees hit, the GPU's march hits too, at the same depth: 1% of samples may
+    // flip at silhouettes (as in the 64-level test); none did on llvmpipe.
+    EXPECT_LE(c.cpuOnly, c.sampled / 100) << c.firstProblem;
+    if (onLlvmpipe()) {
+        // The depth of the pixels llvmpipe shows is right, but for at most 5% (or 4). Their
+        // object may not be: the surface lookup after the march runs the program once more, and
+        // when the march left little of llvmpipe's budget, the lookup ends early with the id of
+        // a shape it had evaluated (the same wrong id at pixels far apart) or with none (id 0 at
+        // the right depth); or where two shapes meet at the same
+        // depth the id is a matter of the last bit. Wrong ids: at most a quarter of the hits
+        // shown (7 of 53 measured); lost ids: at most half the CPU's hits (37 of 90 measured,
+        // each after as many march steps as the CPU took).
+        EXPECT_LE(c.gpuMismatches - c.idOnly, std::max(4, c.gpuHits / 20)) << c.firstProblem;
+        EXPECT_LE(c.idOnly, c.gpuHits / 4) << c.firstProblem;
+        EXPECT_LE(c.idLost, c.cpuHits / 2) << c.firstProblem;
+    } else {
+        EXPECT_LE(c.gpuMismatches + c.idLost + c.cpuOnly, c.sampled / 100) << c.firstProblem;
+    }
 
     // A ray straight down the axis meets the innermost box first: the 64 levels of transforms
     // (scale 0.985 each) put its top at 0.35 * 0.985^64.

@@ -120,7 +120,7 @@ TEST(Shells, ShellsMeshesAndFullscreenSdfMeetWhereCpuRaysSay) {
     const Pixels<float> depths = readViewDepth(targets);
     const Camera& camera = prepared.scene.camera;
     const FrameCamera frame = makeFrameCamera(camera, kWidth, kHeight);
-    int sampled = 0, mismatches = 0, seen[3] = {0, 0, 0};
+    int sampled = 0, mismatches = 0, misses = 0, seen[3] = {0, 0, 0};
     std::string firstProblem;
     for (int row = 1; row < kHeight; row += 2) {
         for (int x = 1; x < kWidth; x += 2) {
@@ -154,6 +154,7 @@ TEST(Shells, ShellsMeshesAndFullscreenSdfMeetWhereCpuRaysSay) {
             const bool depthOk =
                 expectedId == 0 || std::abs(*depths.at(x, row) - expectedT * forwardness) <=
                                        2e-3f * std::max(expectedT, 1.0f);
+            misses += expectedId != 0 && gpuId == 0;
             if (gpuId != expectedId || !depthOk) {
                 ++mismatches;
                 if (firstProblem.empty())
@@ -170,6 +171,9 @@ TEST(Shells, ShellsMeshesAndFullscreenSdfMeetWhereCpuRaysSay) {
     EXPECT_GT(seen[1], sampled / 20) << "the shell sphere should be visible";
     EXPECT_GT(seen[2], sampled / 50) << "the fullscreen box should be visible";
     EXPECT_LE(mismatches, sampled / 50) << firstProblem;
+    // Of those, a pixel where the GPU shows nothing but the CPU hits is at most a grazing ray:
+    // 0.2% of samples. None on llvmpipe.
+    EXPECT_LE(misses, sampled / 500) << firstProblem;
 }
 
 // Only the pixels a shell's proxy covers march it, and the fullscreen pass has nothing left to

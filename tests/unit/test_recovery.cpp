@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <thread>
 
 using namespace rmsc;
 using namespace rmsc::editor;
@@ -24,20 +23,28 @@ std::filesystem::path freshFolder(const std::string& name) {
 
 } // namespace
 
+// findRecovery compares the files' modification times. The test sets them (the scene an hour
+// ago, the recovery then and a minute later) rather than waiting for the clock to move, so it
+// holds on any clock resolution.
 TEST(Recovery, UnsavedEditsComeBackUntilTheSceneIsSaved) {
-    const std::filesystem::path dir = freshFolder("offer");
-    const std::filesystem::path file = dir / "scene.json";
+    namespace fs = std::filesystem;
+    const fs::path dir = freshFolder("offer");
+    const fs::path file = dir / "scene.json";
+    const fs::file_time_type savedAt = fs::file_time_type::clock::now() - std::chrono::hours(1);
     Document document(emptyScene(), {});
     std::string error;
     ASSERT_TRUE(document.saveAs(file, error)) << error;
+    fs::last_write_time(file, savedAt);
     EXPECT_FALSE(findRecovery(file)) << "a saved scene has nothing to recover";
 
-    // Make sure the recovery file's time is later than the scene's on coarse clocks.
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
     document.apply("Edit", [](Scene& scene, Selection&) { scene.render.maxSteps = 77; });
     ASSERT_TRUE(document.dirty());
     ASSERT_TRUE(writeRecovery(document, error)) << error;
-    const std::optional<std::filesystem::path> offered = findRecovery(file);
+    // Written at the same time as the scene: not newer, so not offered.
+    fs::last_write_time(recoveryPath(file), savedAt);
+    EXPECT_FALSE(findRecovery(file)) << "offered, but not newer than the scene";
+    fs::last_write_time(recoveryPath(file), savedAt + std::chrono::minutes(1));
+    const std::optional<fs::path> offered = findRecovery(file);
     ASSERT_TRUE(offered);
     EXPECT_EQ(*offered, recoveryPath(file));
     EXPECT_EQ(offered->parent_path(), dir) << "kept next to the scene";
@@ -48,13 +55,13 @@ TEST(Recovery, UnsavedEditsComeBackUntilTheSceneIsSaved) {
     ASSERT_TRUE(recovered) << diagnostics.format();
     EXPECT_EQ(recovered->render.maxSteps, 77);
 
-    // Saving afterwards makes the recovery stale: not offered, even if not yet removed.
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    // Saving afterwards makes the recovery stale: not offered, even if not yet removed. The save
+    // writes the scene now, an hour after the recovery's time.
     ASSERT_TRUE(document.save(error)) << error;
     EXPECT_FALSE(findRecovery(file));
     removeRecovery(file);
-    EXPECT_FALSE(std::filesystem::exists(recoveryPath(file)));
-    std::filesystem::remove_all(dir);
+    EXPECT_FALSE(fs::exists(recoveryPath(file)));
+    fs::remove_all(dir);
 }
 
 TEST(Recovery, AnUnwritableFolderIsReportedNotThrown) {
