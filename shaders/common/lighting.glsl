@@ -37,8 +37,11 @@ float visibilitySmithGgx(float nDotL, float nDotV, float alpha) {
     return g > 0.0 ? 0.5 / g : 0.0;
 }
 
+// Schlick's approximation. pow() of a negative base is undefined in GLSL (NaN on Mesa), and
+// v.h of unit vectors rounds past 1 where the eye and the light lie in one direction from the
+// surface: the base is clamped.
 vec3 fresnelSchlick(vec3 f0, float vDotH) {
-    return f0 + (1.0 - f0) * pow(1.0 - vDotH, 5.0);
+    return f0 + (1.0 - f0) * pow(clamp(1.0 - vDotH, 0.0, 1.0), 5.0);
 }
 
 // Radiance reflected towards the eye from light arriving along -lightDir with `irradiance`.
@@ -47,8 +50,8 @@ vec3 brdfDirect(SurfacePoint s, vec3 toEye, vec3 toLight, vec3 irradiance) {
     if (nDotL <= 0.0) return vec3(0.0);
     float nDotV = max(dot(s.normal, toEye), 1e-4);
     vec3 h = normalize(toLight + toEye);
-    float nDotH = max(dot(s.normal, h), 0.0);
-    float vDotH = max(dot(toEye, h), 0.0);
+    float nDotH = clamp(dot(s.normal, h), 0.0, 1.0);
+    float vDotH = clamp(dot(toEye, h), 0.0, 1.0);
     float roughness = clamp(s.roughness, 0.03, 1.0);
     float alpha = roughness * roughness;
     vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
@@ -106,7 +109,7 @@ vec3 shadeSurface(SurfacePoint s) {
         // blurred by the roughness, weighted by Schlick's Fresnel with the roughness-aware
         // maximum of Fdez-Aguera ("A Multiple-Scattering Microfacet Model for Real-Time Image
         // Based Lighting", 2019).
-        float nDotV = max(dot(s.normal, toEye), 0.0);
+        float nDotV = clamp(dot(s.normal, toEye), 0.0, 1.0);
         vec3 fresnel = f0 + (max(vec3(1.0 - s.roughness), f0) - f0) * pow(1.0 - nDotV, 5.0);
         vec3 reflected = reflect(-toEye, s.normal);
         color += occlusion * ((1.0 - fresnel) * (1.0 - s.metallic) * s.baseColor *
