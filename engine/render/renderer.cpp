@@ -84,13 +84,24 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     }
     for (const GpuShell& shell : scene.shells) {
         std::string key = shellKey(scene, shell);
-        if (shellPasses_.contains(key)) continue;
+        if (const auto found = shellPasses_.find(key); found != shellPasses_.end()) {
+            found->second.lastUse = useClock_;
+            continue;
+        }
         files.files["generated/shell_map.glsl"] = shell.map;
         std::optional<ShellPass> pass = ShellPass::create(files, error);
         if (!pass) return false;
-        if (shellPasses_.size() >= kMaxCached * 4) shellPasses_.clear();
-        shellPasses_.emplace(std::move(key), std::move(*pass));
+        shellPasses_.emplace(std::move(key), CachedShellPass{std::move(*pass), useClock_});
         compiled = true;
+    }
+    // Past the cache's size, drop the least recently used shell programs, never one this scene
+    // draws (a scene may have more shells than the cache holds: they all stay).
+    while (shellPasses_.size() > kMaxCached * 4) {
+        const auto oldest = std::min_element(
+            shellPasses_.begin(), shellPasses_.end(),
+            [](const auto& a, const auto& b) { return a.second.lastUse < b.second.lastUse; });
+        if (oldest->second.lastUse == useClock_) break;
+        shellPasses_.erase(oldest);
     }
     if (compiled) {
         glFinish(); // drivers may finish compiling lazily
@@ -123,8 +134,11 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
         glEndQuery(GL_TIME_ELAPSED);
     };
     std::vector<const ShellPass*> shells;
-    for (const GpuShell& shell : scene.shells)
-        shells.push_back(&shellPasses_.find(shellKey(scene, shell))->second);
+    for (const GpuShell& shell : scene.shells) {
+        const auto found = shellPasses_.find(shellKey(scene, shell));
+        if (found == shellPasses_.end()) throw std::logic_error("a shell's programs are missing");
+        shells.push_back(&found->second.pass);
+    }
     const std::uint32_t zeros[4] = {0, 0, 0, 0};
     glNamedBufferSubData(statistics_.id(), 0, sizeof zeros, zeros);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchStatisticsBinding, statistics_.id());

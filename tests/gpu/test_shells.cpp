@@ -9,6 +9,8 @@
 #include "sdf/cpu_eval.hpp"
 
 #include <cmath>
+#include <set>
+#include <string>
 
 using namespace rmsc;
 using namespace rmsc::test;
@@ -243,4 +245,30 @@ TEST(Shells, LitSideOfAShellIsNotDarkenedByItsOwnShadows) {
     if (differing > shellPixels / 250) {
         EXPECT_TRUE(imagesMatch(colourA, colourB, "shells_self_shadow", {12, 0.004}));
     }
+}
+
+// More distinct shells than the renderer caches programs for (64): every one is drawn. The
+// cache once dropped all its programs in the middle of preparing such a scene, and most shells
+// vanished from the image without an error.
+TEST(Shells, MoreShellsThanTheProgramCacheHoldsAreAllDrawn) {
+    const int count = 66; // 11 x 6 balls, each of its own radius, so each has its own program
+    std::string children;
+    for (int i = 0; i < count; ++i) {
+        const float x = -1.5f + 0.3f * float(i % 11), z = -0.75f + 0.3f * float(i / 11);
+        children += std::string(i ? "," : "") + R"({"shape": "sphere", "radius": )" +
+                    std::to_string(0.08f + 0.0005f * float(i)) + R"(, "position": [)" +
+                    std::to_string(x) + ", 0, " + std::to_string(z) +
+                    R"(], "shell": {"proxy": "box"}})";
+    }
+    const PreparedScene prepared = prepareSceneText(
+        R"({"version": 1, "camera": {"position": [0, 3.2, 0.01], "target": [0, 0, 0], "fov": 60},
+            "sdf": {"op": "union", "children": [)" +
+        children + "]}}");
+    ASSERT_EQ(prepared.shells.size(), std::size_t(count));
+    const FrameTargets targets = renderPrepared(prepared, 160, 96);
+    const Pixels<std::uint32_t> ids = readObjectIds(targets);
+    std::set<std::uint32_t> seen(ids.data.begin(), ids.data.end());
+    seen.erase(0);
+    EXPECT_EQ(seen.size(), std::size_t(count)) << "shells drawn";
+    expectNoGlErrors();
 }

@@ -94,8 +94,12 @@ class Renderer {
 
   private:
     ShaderFiles files_;
-    std::map<std::string, SdfPasses, std::less<>> sdfPasses_;   // by map text
-    std::map<std::string, ShellPass, std::less<>> shellPasses_; // by scene map + shell map
+    std::map<std::string, SdfPasses, std::less<>> sdfPasses_; // by map text
+    struct CachedShellPass {
+        ShellPass pass;
+        std::uint64_t lastUse = 0; // useClock_ when a scene last needed it
+    };
+    std::map<std::string, CachedShellPass, std::less<>> shellPasses_; // by scene + shell map
     std::uint64_t useClock_ = 0;
     double lastCompileMs_ = 0.0;
     bool countEvaluations_ = false;
