@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <initializer_list>
 
 namespace rmsc {
 namespace {
@@ -29,6 +30,28 @@ std::optional<gl::Shader> compile(const ShaderFiles& files, GLenum stage, std::s
     return shader;
 }
 
+// Links the compiled `shaders` into a program; on failure names `what` in `error`.
+std::optional<gl::Program> link(std::initializer_list<const gl::Shader*> shaders,
+                                const std::string& what, std::string& error) {
+    gl::Program program(glCreateProgram());
+    for (const gl::Shader* shader : shaders)
+        glAttachShader(program.id(), shader->id());
+    glLinkProgram(program.id());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+        error = "shader link error (" + what + "): " + log.c_str();
+        return std::nullopt;
+    }
+    for (const gl::Shader* shader : shaders)
+        glDetachShader(program.id(), shader->id());
+    return program;
+}
+
 } // namespace
 
 std::optional<gl::Program> buildProgram(const ShaderFiles& files, const ProgramDesc& desc,
@@ -39,24 +62,17 @@ std::optional<gl::Program> buildProgram(const ShaderFiles& files, const ProgramD
     std::optional<gl::Shader> fragment =
         compile(files, GL_FRAGMENT_SHADER, desc.fragmentPath, desc.defines, error);
     if (!fragment) return std::nullopt;
-    gl::Program program(glCreateProgram());
-    glAttachShader(program.id(), vertex->id());
-    glAttachShader(program.id(), fragment->id());
-    glLinkProgram(program.id());
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-    if (!ok) {
-        GLint length = 0;
-        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
-        std::string log(std::size_t(std::max(length, 1)), '\0');
-        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-        error = "shader link error (" + std::string(desc.vertexPath) + " + " +
-                std::string(desc.fragmentPath) + "): " + log.c_str();
-        return std::nullopt;
-    }
-    glDetachShader(program.id(), vertex->id());
-    glDetachShader(program.id(), fragment->id());
-    return program;
+    return link({&*vertex, &*fragment},
+                std::string(desc.vertexPath) + " + " + std::string(desc.fragmentPath), error);
+}
+
+std::optional<gl::Program> buildComputeProgram(const ShaderFiles& files,
+                                               std::string_view computePath,
+                                               std::string_view defines, std::string& error) {
+    std::optional<gl::Shader> compute =
+        compile(files, GL_COMPUTE_SHADER, computePath, defines, error);
+    if (!compute) return std::nullopt;
+    return link({&*compute}, std::string(computePath), error);
 }
 
 GLint uniformLocation(const gl::Program& program, const char* name) {
