@@ -10,64 +10,82 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <string>
 #include <system_error>
 
 namespace rmsc {
 namespace {
 
-// Writes via `writeFile(tmpPath)`, then flushes and renames over `path` (core/atomic_file.hpp).
-template <class Write>
-bool writeAtomically(const std::filesystem::path& path, std::string& error, Write&& writeFile) {
-    return replaceFileAtomically(path, false, error, writeFile);
+// Every encoder writes into memory; the bytes then go to disk through saveTextFileAtomically,
+// which checks each write, the fsync and the close (a full disk is an error, never a
+// truncated file renamed over the old one: the encoders' own stdio writes were not checked).
+void appendBytes(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+}
+
+void appendPngBytes(png_structp png, png_bytep data, png_size_t size) {
+    static_cast<std::string*>(png_get_io_ptr(png))
+        ->append(reinterpret_cast<const char*>(data), size);
+}
+
+void flushNothing(png_structp) {}
+
+bool saveBytes(const std::filesystem::path& path, bool encoded, const std::string& bytes,
+               std::string& error) {
+    if (!encoded) {
+        error = "cannot encode " + path.string();
+        return false;
+    }
+    return saveTextFileAtomically(path, bytes, false, error);
+}
+
+// The 16-bit PNG of `image` (libpng; stb_image_write writes 8 bits only), or false.
+bool encodePng16(const Pixels<std::uint16_t>& image, std::string& bytes) {
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    bool ok = false;
+    if (png && info && !setjmp(png_jmpbuf(png))) {
+        png_set_write_fn(png, &bytes, appendPngBytes, flushNothing);
+        const int colorType = image.channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
+        png_set_IHDR(png, info, png_uint_32(image.width), png_uint_32(image.height), 16, colorType,
+                     PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+        png_write_info(png, info);
+        png_set_swap(png); // PNG stores 16-bit samples big-endian
+        for (int y = 0; y < image.height; ++y)
+            png_write_row(png, reinterpret_cast<png_const_bytep>(image.at(0, y)));
+        png_write_end(png, nullptr);
+        ok = true;
+    }
+    png_destroy_write_struct(&png, &info);
+    return ok;
 }
 
 } // namespace
 
 bool writePng8(const std::filesystem::path& path, const Pixels<std::uint8_t>& image,
                std::string& error) {
-    return writeAtomically(path, error, [&](const std::filesystem::path& tmp) {
-        return stbi_write_png(tmp.c_str(), image.width, image.height, image.channels,
-                              image.data.data(), image.width * image.channels) != 0;
-    });
+    std::string bytes;
+    const bool encoded =
+        stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, image.channels,
+                               image.data.data(), image.width * image.channels) != 0;
+    return saveBytes(path, encoded, bytes, error);
 }
 
 bool writePng16(const std::filesystem::path& path, const Pixels<std::uint16_t>& image,
                 std::string& error) {
-    return writeAtomically(path, error, [&](const std::filesystem::path& tmp) {
-        FILE* file = std::fopen(tmp.c_str(), "wb");
-        if (!file) return false;
-        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-        png_infop info = png ? png_create_info_struct(png) : nullptr;
-        bool ok = false;
-        if (png && info && !setjmp(png_jmpbuf(png))) {
-            png_init_io(png, file);
-            const int colorType = image.channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
-            png_set_IHDR(png, info, png_uint_32(image.width), png_uint_32(image.height), 16,
-                         colorType, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                         PNG_FILTER_TYPE_DEFAULT);
-            png_write_info(png, info);
-            png_set_swap(png); // PNG stores 16-bit samples big-endian
-            for (int y = 0; y < image.height; ++y)
-                png_write_row(png, reinterpret_cast<png_const_bytep>(image.at(0, y)));
-            png_write_end(png, nullptr);
-            ok = true;
-        }
-        png_destroy_write_struct(&png, &info);
-        return std::fclose(file) == 0 && ok;
-    });
+    std::string bytes;
+    const bool encoded = encodePng16(image, bytes);
+    return saveBytes(path, encoded, bytes, error);
 }
 
 bool writePfm(const std::filesystem::path& path, const Pixels<float>& image, std::string& error) {
-    return writeAtomically(path, error, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        out << (image.channels == 1 ? "Pf" : "PF") << "\n"
-            << image.width << " " << image.height << "\n-1.0\n";
-        for (int y = image.height - 1; y >= 0; --y)
-            out.write(reinterpret_cast<const char*>(image.at(0, y)),
-                      std::streamsize(sizeof(float) * image.width * image.channels));
-        return bool(out);
-    });
+    std::string bytes = std::string(image.channels == 1 ? "Pf" : "PF") + "\n" +
+                        std::to_string(image.width) + " " + std::to_string(image.height) +
+                        "\n-1.0\n";
+    for (int y = image.height - 1; y >= 0; --y)
+        bytes.append(reinterpret_cast<const char*>(image.at(0, y)),
+                     sizeof(float) * std::size_t(image.width) * std::size_t(image.channels));
+    return saveBytes(path, true, bytes, error);
 }
 
 std::optional<Pixels<std::uint8_t>> readPng8(const std::filesystem::path& path, int channels,

@@ -190,6 +190,32 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("unwritable output", ["render", "-o", unwritable, "--size", "8x8"], 3,
            stderr_has=["cannot write"])
 
+    # A full disk: writes past a 1 KiB file size limit fail (EFBIG, as ENOSPC does on a full
+    # disk; SIGXFSZ ignored so the write returns the error). Every output fails with exit 3,
+    # keeps the previous file and leaves no temporary file.
+    import resource
+    import signal
+
+    def small_disk():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (1024, resource.RLIM_INFINITY))
+
+    full = os.path.join(tmp, "full")
+    os.makedirs(full)
+    for aov, name in [("color", "c.png"), ("depth", "d.png"), ("depth", "d.pfm"),
+                      ("normal", "n.png"), ("id", "i.png"), ("steps", "s.png")]:
+        target = write(full, name, "previous image")
+        r = subprocess.run([RMSC, "render", "-o", target, "--aov", aov, "--size", "320x180"],
+                           capture_output=True, text=True, timeout=60, preexec_fn=small_disk)
+        check(f"full disk: {aov} {name} exits 3", r.returncode == 3,
+              f"exit {r.returncode}; stderr: {r.stderr.strip()[:400]}")
+        check(f"full disk: {aov} {name} says so", "cannot write" in r.stderr and name in r.stderr,
+              r.stderr.strip()[:400])
+        with open(target, "rb") as f:
+            check(f"full disk: {aov} {name} keeps the old file", f.read() == b"previous image")
+    leftovers = sorted(set(os.listdir(full)) - {"c.png", "d.png", "d.pfm", "n.png", "i.png", "s.png"})
+    check("full disk: no temporary files", not leftovers, str(leftovers))
+
 # The scene JSON Schema: `rmsc schema` prints docs/scene.schema.json exactly, every sample scene
 # is valid under it, and scenes the reader refuses are invalid under it too.
 r = run(["schema"])
