@@ -3,6 +3,7 @@
 #include "core/atomic_file.hpp"
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fcntl.h>
 #include <system_error>
@@ -35,6 +36,25 @@ void syncFolder(const std::filesystem::path& folder) {
     if (fd < 0) return;
     (void)::fsync(fd);
     ::close(fd);
+}
+
+// Temporaries of earlier saves of `path` that never finished (the process was killed between
+// creating and renaming them): "<name>.tmp-XXXXXX" files older than an hour, so a save still
+// running in another process keeps its own. Best effort.
+void removeStaleTemporaries(const std::filesystem::path& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    const std::string prefix = path.filename().string() + ".tmp-";
+    const auto cutoff = fs::file_time_type::clock::now() - std::chrono::hours(1);
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() != prefix.size() + 6 || !name.starts_with(prefix)) continue;
+        std::error_code fileError;
+        if (!it->is_regular_file(fileError) || it->is_symlink(fileError)) continue;
+        const auto written = fs::last_write_time(it->path(), fileError);
+        if (!fileError && written < cutoff) fs::remove(it->path(), fileError);
+    }
 }
 
 // A new, empty file next to `path`: "<name>.tmp-XXXXXX", created exclusively.
@@ -94,6 +114,7 @@ bool replaceFileAtomically(
         error = "cannot save " + path.string() + ": it is a folder";
         return false;
     }
+    removeStaleTemporaries(path);
     std::filesystem::path tmp;
     if (!createTemporary(path, tmp, error)) return false;
     const auto fail = [&](std::string why) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -135,4 +136,27 @@ TEST_F(AtomicFile, ReadOnlyFolderFailsAndKeepsTheOldFile) {
     EXPECT_NE(error.find("Permission denied"), std::string::npos) << error;
     EXPECT_EQ(read(folder_ / "scene.json"), "old");
     EXPECT_EQ(names(), std::vector<std::string>{"scene.json"});
+}
+
+// A save that was killed leaves "<name>.tmp-XXXXXX" behind; the next save of that file removes
+// such leftovers once they are old (an hour), and leaves young ones (a save running in another
+// process) and other files alone.
+TEST_F(AtomicFile, StaleTemporariesOfEarlierSavesAreRemoved) {
+    const fs::path path = folder_ / "scene.json";
+    const fs::path stale = folder_ / "scene.json.tmp-Ab12Cd";
+    const fs::path young = folder_ / "scene.json.tmp-Zz99Yy";
+    const fs::path other = folder_ / "other.json.tmp-Ab12Cd";
+    const fs::path similar = folder_ / "scene.json.tmp-toolong";
+    for (const fs::path& p : {stale, young, other, similar})
+        std::ofstream(p) << "leftover";
+    const auto twoHoursAgo = fs::file_time_type::clock::now() - std::chrono::hours(2);
+    for (const fs::path& p : {stale, other, similar})
+        fs::last_write_time(p, twoHoursAgo);
+    std::string error;
+    ASSERT_TRUE(saveTextFileAtomically(path, "new", false, error)) << error;
+    EXPECT_FALSE(fs::exists(stale));
+    EXPECT_TRUE(fs::exists(young));
+    EXPECT_TRUE(fs::exists(other));
+    EXPECT_TRUE(fs::exists(similar));
+    EXPECT_EQ(read(path), "new");
 }
