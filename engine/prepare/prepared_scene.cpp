@@ -208,8 +208,10 @@ std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagno
         prepared.instanceAsset.push_back(0);
         prepared.materials = prepared.scene.materials;
         prepared.materials.push_back(defaultMaterial());
+        const int errorsBefore = diagnostics.errorCount();
         prepared.lights =
             gatherLights(prepared.scene, prepared.assets, prepared.instanceAsset, diagnostics);
+        if (diagnostics.errorCount() > errorsBefore) return std::nullopt; // too many lights
         return prepared;
     }
     std::optional<Scene> scene = loadScene(path, disk, diagnostics);

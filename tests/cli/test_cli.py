@@ -183,6 +183,24 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("truncated glb", ["render", truncated, "-o", out], 1, stderr_has=["truncated.glb"])
     check("no output after failures", not os.path.exists(out) or png_header(out)[:2] == (96, 54))
 
+    # A glTF opened directly with more KHR_lights_punctual lights than a scene may hold is
+    # refused like a scene with too many lights, by validate and render alike (it was drawn
+    # with the extra lights dropped, exit 0).
+    with open(os.path.join(SAMPLES, "assets", "plane.gltf")) as f:
+        lit = json.load(f)
+    lit["extensionsUsed"] = ["KHR_lights_punctual"]
+    lit["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"type": "point", "intensity": 1} for _ in range(17)]}}
+    lit["nodes"] += [{"name": f"light {i}", "translation": [0, 1, 0],
+                      "extensions": {"KHR_lights_punctual": {"light": i}}} for i in range(17)]
+    lit["scenes"][0]["nodes"] += list(range(1, 18))
+    many_lights = write(tmp, "many_lights.gltf", json.dumps(lit))
+    for command in (["validate", many_lights],
+                    ["render", many_lights, "-o", os.path.join(tmp, "lights.png")]):
+        expect(f"glTF with 17 lights ({command[0]})", command, 1,
+               stderr_has=["many_lights.gltf", "16 (the limit)"])
+    check("glTF with 17 lights: no image", not os.path.exists(os.path.join(tmp, "lights.png")))
+
     # No GL 4.5 context: a clear message and exit 3.
     expect("no GL context", ["render", "-o", os.path.join(tmp, "nogl.png"), "--size", "8x8"], 3,
            stderr_has=["no OpenGL", "EGL", "OSMesa"], env={"MESA_GL_VERSION_OVERRIDE": "3.3"})
