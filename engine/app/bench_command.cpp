@@ -33,8 +33,12 @@ const OptionSpec kOptions[] = {
     {"--json", nullptr, nullptr, "print one JSON object instead of text"},
 };
 
-const CommandSpec kSpec = {
+} // namespace
+
+const CommandSpec kBenchSpec = {
     "bench",
+    "[SCENE]",
+    "time frames of a scene (median, min, max per pass)",
     "rmsc bench [SCENE] [--size WxH] [--frames N] [--warmup N] [--sdf-strategy NAME|all] "
     "[--shells scene|fullscreen|both] [--json]",
     "Renders SCENE (default: the built-in demo) repeatedly and reports, over the timed frames,\n"
@@ -47,7 +51,10 @@ const CommandSpec kSpec = {
     "pre-pass, the interpreter also without the bounding hierarchy, and the ratios of their\n"
     "median frame times to the first are reported; a scene with shells also runs with every\n"
     "node in the fullscreen pass (--shells both).",
-    kOptions, 1};
+    kOptions,
+    1};
+
+namespace {
 
 // Not a strategy: the run of the --sdf-map file.
 constexpr SdfStrategy kHandWritten = SdfStrategy(-1);
@@ -83,21 +90,10 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-int runBench(std::span<const std::string> args) {
-    std::string error;
-    std::optional<ParsedArgs> parsed = parseArgs(kSpec, args, error);
-    if (!parsed) {
-        std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    if (parsed->help) {
-        std::fputs(formatHelp(kSpec).c_str(), stdout);
-        return kExitOk;
-    }
+int runBench(const ParsedArgs& args) {
     int frames = 10, warmup = 2;
-    const std::string warmupText = parsed->get("--warmup", "2");
-    if ((parsed->has("--frames") &&
-         !parsePositiveInt(parsed->get("--frames", ""), 100000, frames)) ||
+    const std::string warmupText = args.get("--warmup", "2");
+    if ((args.has("--frames") && !parsePositiveInt(args.get("--frames", ""), 100000, frames)) ||
         !(warmupText == "0" || parsePositiveInt(warmupText, 100000, warmup))) {
         std::fprintf(stderr, "rmsc bench: --frames and --warmup take whole numbers (warm-up may "
                              "be 0)\n");
@@ -105,14 +101,15 @@ int runBench(std::span<const std::string> args) {
     }
     if (warmupText == "0") warmup = 0;
 
-    const bool all = parsed->get("--sdf-strategy", "") == "all";
-    if (all) parsed->values.erase("--sdf-strategy");
-    const std::string shellsOption = parsed->get("--shells", "both");
+    const bool all = args.get("--sdf-strategy", "") == "all";
+    const std::string shellsOption = args.get("--shells", "both");
     FrameOptions frame;
-    if (!readFrameOptions("bench", *parsed, frame)) return kExitUsage;
+    ParsedArgs frameArgs = args; // "all" is bench's own: the frame options read one strategy
+    if (all) frameArgs.values.erase("--sdf-strategy");
+    if (!readFrameOptions("bench", frameArgs, frame)) return kExitUsage;
 
     HeadlessSession session;
-    const std::string scenePath = parsed->positionals.empty() ? "" : parsed->positionals[0];
+    const std::string scenePath = args.positionals.empty() ? "" : args.positionals[0];
     if (const int code = openHeadlessSession("bench", scenePath, frame, session)) return code;
     Renderer& renderer = *session.renderer;
     FrameTargets targets = createFrameTargets(frame.width, frame.height);
@@ -139,8 +136,8 @@ int runBench(std::span<const std::string> args) {
             : std::vector<SdfStrategy>{frame.strategy};
     std::vector<SdfStrategy> timed = strategies;
     std::string handWrittenMap;
-    if (parsed->has("--sdf-map")) {
-        const std::string path = parsed->get("--sdf-map", "");
+    if (args.has("--sdf-map")) {
+        const std::string path = args.get("--sdf-map", "");
         std::ifstream in(path, std::ios::binary);
         std::ostringstream text;
         text << in.rdbuf();
@@ -244,6 +241,7 @@ int runBench(std::span<const std::string> args) {
         if (variant.live.first <= variant.live.last)
             gpuScene.sdfMap = generateSdfMap(prepared->sdf, strategy, {}, variant.live);
         const auto compileStart = std::chrono::steady_clock::now();
+        std::string error;
         if (!renderer.prepare(gpuScene, error)) {
             std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
             return kExitSystem;
@@ -313,7 +311,7 @@ int runBench(std::span<const std::string> args) {
     const std::string name = scenePath.empty() ? "(built-in demo)" : scenePath;
     const HeadlessContext& context = *session.context;
     const double bakedMedian = stats(runs.front().wall).median;
-    if (parsed->has("--json")) {
+    if (args.has("--json")) {
         std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"frames\": %d, "
                     "\"renderer\": \"%s\", \"peak_rss_mib\": %.1f, \"strategies\": [",
                     name.c_str(), frame.width, frame.height, frames, context.renderer().c_str(),

@@ -18,11 +18,13 @@ struct OptionSpec {
 };
 
 struct CommandSpec {
-    const char* name;       // "render"
-    const char* usage;      // "rmsc render [SCENE] -o OUT.png [options]"
-    const char* summary;    // one paragraph
+    const char* name;      // "render"
+    const char* arguments; // "[SCENE] -o OUT.png": the short form `rmsc --help` lists
+    const char* purpose;   // one line for `rmsc --help`: "render a scene ... to PNG"
+    const char* usage;     // "rmsc render [SCENE] -o OUT.png [options]"
+    const char* summary;   // one paragraph
     std::span<const OptionSpec> options;
-    int maxPositionals;     // how many positional arguments are allowed
+    int maxPositionals; // how many positional arguments are allowed
 };
 
 struct ParsedArgs {

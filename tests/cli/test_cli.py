@@ -69,6 +69,16 @@ with tempfile.TemporaryDirectory() as tmp:
     for command in ["render", "validate", "bench", "primitives"]:
         expect(f"{command} --help", [command, "--help"], 0, stdout_has=["usage: rmsc " + command])
     expect("no command", [], 2, stderr_has=["usage"])
+    # Every command `rmsc --help` lists answers --help and refuses an unknown option the same way.
+    listing = run(["--help"]).stdout.split("commands:\n")[1].split("\n\n")[0]
+    listed = [line.split()[0] for line in listing.splitlines()]
+    check("help lists the commands", {"render", "validate", "bench", "view", "schema"} <= set(listed),
+          str(listed))
+    for command in listed:
+        expect(f"{command} --help (listed)", [command, "--help"], 0,
+               stdout_has=["usage: rmsc " + command, "-h, --help"])
+        expect(f"{command} unknown option", [command, "--frobnicate"], 2,
+               stderr_has=[f"rmsc {command}: unknown option --frobnicate (see rmsc {command} --help)"])
     expect("unknown command", ["paint"], 2, stderr_has=["unknown command 'paint'"])
 
     # The built-in demo, every AOV.
