@@ -26,5 +26,7 @@ extern const CommandSpec kViewSpec;
 int runView(const ParsedArgs& args);
 extern const CommandSpec kSchemaSpec;
 int runSchema(const ParsedArgs& args);
+extern const CommandSpec kLimitsSpec;
+int runLimits(const ParsedArgs& args);
 
 } // namespace rmsc::app

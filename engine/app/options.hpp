@@ -43,7 +43,7 @@ std::optional<ParsedArgs> parseArgs(const CommandSpec& spec, std::span<const std
 
 std::string formatHelp(const CommandSpec& spec);
 
-// Parses "640x360"; sizes from 1 to 16384 per side.
+// Parses "640x360"; sizes from 1 to limits::kImageSize per side.
 bool parseSize(const std::string& text, int& width, int& height);
 // Parses a positive integer up to `max`.
 bool parsePositiveInt(const std::string& text, int max, int& value);

@@ -1,5 +1,6 @@
 // rmsc view: the interactive viewer and scene editor (window, editor panels, live rendering).
 #include "commands.hpp"
+#include "core/limits.hpp"
 #include "viewer/viewer.hpp"
 
 #include <cstdio>
@@ -37,8 +38,8 @@ const CommandSpec kViewSpec = {
 int runView(const ParsedArgs& args) {
     ViewerOptions options;
     if (args.has("--size") && !parseSize(args.get("--size", ""), options.width, options.height)) {
-        std::fprintf(stderr, "rmsc view: --size: expected WxH with sides 1..16384, got '%s'\n",
-                     args.get("--size", "").c_str());
+        std::fprintf(stderr, "rmsc view: --size: expected WxH with sides 1..%d, got '%s'\n",
+                     limits::kImageSize, args.get("--size", "").c_str());
         return kExitUsage;
     }
     if (args.has("--target-ms")) {

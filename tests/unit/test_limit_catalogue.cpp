@@ -1,6 +1,6 @@
 // The limit catalogue (core/limit_catalogue.hpp): one row for every constant of core/limits.hpp,
-// the value texts, and the other layers' names and the shaders' fixed arrays agreeing with the
-// constants.
+// docs/limits.md's table equal to its markdown, the value texts, and the other layers' names and
+// the shaders' fixed arrays agreeing with the constants.
 #include "core/limit_catalogue.hpp"
 #include "core/limits.hpp"
 #include "sdf/compiler.hpp"
@@ -82,4 +82,26 @@ TEST(LimitCatalogue, ValuesReadWithTheirUnits) {
     EXPECT_EQ(limitValueText(row("kSceneJsonDepth")), "256 levels");
     EXPECT_EQ(limitValueText(row("kLights")), "16");
     EXPECT_EQ(limitValueText({"a size", 1536.0, "bytes", "x", "y", "kNone"}), "1536 bytes");
+}
+
+TEST(LimitCatalogue, DocsContainTheGeneratedTable) {
+    const std::string generated = limitCatalogueMarkdown();
+    for (const Limit& limit : limitCatalogue())
+        EXPECT_NE(
+            generated.find("\n| " + std::string(limit.name) + " | " + limitValueText(limit) + " |"),
+            std::string::npos)
+            << limit.name;
+
+    const std::string docs = readSourceFile("docs/limits.md");
+    ASSERT_FALSE(docs.empty()) << "docs/limits.md is missing";
+    const std::string begin = "<!-- limits:begin -->\n";
+    const std::string end = "<!-- limits:end -->";
+    const std::size_t from = docs.find(begin);
+    const std::size_t to = docs.find(end);
+    ASSERT_NE(from, std::string::npos);
+    ASSERT_NE(to, std::string::npos);
+    ASSERT_LT(from, to);
+    EXPECT_EQ(docs.substr(from + begin.size(), to - from - begin.size()), generated)
+        << "regenerate the table in docs/limits.md with `rmsc limits --markdown`:\n"
+        << generated;
 }
