@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -33,8 +34,12 @@ const OptionSpec kOptions[] = {
     {"--json", nullptr, nullptr, "print one JSON object instead of text"},
 };
 
-const CommandSpec kSpec = {
+} // namespace
+
+const CommandSpec kBenchSpec = {
     "bench",
+    "[SCENE]",
+    "time frames of a scene (median, min, max per pass)",
     "rmsc bench [SCENE] [--size WxH] [--frames N] [--warmup N] [--sdf-strategy NAME|all] "
     "[--shells scene|fullscreen|both] [--json]",
     "Renders SCENE (default: the built-in demo) repeatedly and reports, over the timed frames,\n"
@@ -47,10 +52,46 @@ const CommandSpec kSpec = {
     "pre-pass, the interpreter also without the bounding hierarchy, and the ratios of their\n"
     "median frame times to the first are reported; a scene with shells also runs with every\n"
     "node in the fullscreen pass (--shells both).",
-    kOptions, 1};
+    kOptions,
+    1};
+
+namespace {
 
 // Not a strategy: the run of the --sdf-map file.
 constexpr SdfStrategy kHandWritten = SdfStrategy(-1);
+
+// What the options ask for.
+struct BenchOptions {
+    int frames = 10;
+    int warmup = 2;
+    bool allStrategies = false; // --sdf-strategy all
+    std::string shells;         // --shells: scene, fullscreen or both
+    FrameOptions frame;
+    std::string scenePath;                 // "" = the built-in demo
+    std::optional<std::string> sdfMapPath; // --sdf-map
+    bool json = false;
+};
+
+// One timed run: a scene drawn by one strategy.
+struct Variant {
+    std::string name;
+    const PreparedScene* prepared;
+    SdfStrategy strategy;
+    std::string program;  // runs of one program through generated code (or through the
+                          // interpreter) evaluate the same primitives
+    SdfLiveRange live{};  // objects read from the buffer under Baked (the editor's map)
+    bool conePass = true; // off: every pixel marches from the near plane
+};
+
+// What runs, and the scenes made for it that the variants point to (so a plan stays where it
+// was made).
+struct BenchPlan {
+    std::optional<PreparedScene> fullscreen; // every node in the fullscreen pass
+    std::optional<PreparedScene> unbounded;  // compiled without the bounding hierarchy
+    std::optional<PreparedScene> edited;     // after a structural edit
+    std::string handWrittenMap;              // the --sdf-map file, as the shader reads it
+    std::vector<Variant> variants;
+};
 
 // One strategy's timings.
 struct StrategyRun {
@@ -64,6 +105,9 @@ struct StrategyRun {
     std::vector<double> wall;
     std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
 };
+
+// Primitives evaluated per pixel, by program (Variant::program, and whether it skips parts).
+using EvaluationCounts = std::vector<std::pair<std::string, double>>;
 
 struct Stats {
     double median = 0, min = 0, max = 0;
@@ -81,115 +125,50 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
-} // namespace
+// ---- Options and plan ----
 
-int runBench(std::span<const std::string> args) {
-    std::string error;
-    std::optional<ParsedArgs> parsed = parseArgs(kSpec, args, error);
-    if (!parsed) {
-        std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    if (parsed->help) {
-        std::fputs(formatHelp(kSpec).c_str(), stdout);
-        return kExitOk;
-    }
-    int frames = 10, warmup = 2;
-    const std::string warmupText = parsed->get("--warmup", "2");
-    if ((parsed->has("--frames") &&
-         !parsePositiveInt(parsed->get("--frames", ""), 100000, frames)) ||
-        !(warmupText == "0" || parsePositiveInt(warmupText, 100000, warmup))) {
+// Reads the options; prints the problem and returns false on a bad value.
+bool readBenchOptions(const ParsedArgs& args, BenchOptions& options) {
+    const std::string warmupText = args.get("--warmup", "2");
+    if ((args.has("--frames") &&
+         !parsePositiveInt(args.get("--frames", ""), 100000, options.frames)) ||
+        !(warmupText == "0" || parsePositiveInt(warmupText, 100000, options.warmup))) {
         std::fprintf(stderr, "rmsc bench: --frames and --warmup take whole numbers (warm-up may "
                              "be 0)\n");
-        return kExitUsage;
+        return false;
     }
-    if (warmupText == "0") warmup = 0;
+    if (warmupText == "0") options.warmup = 0;
 
-    const bool all = parsed->get("--sdf-strategy", "") == "all";
-    if (all) parsed->values.erase("--sdf-strategy");
-    const std::string shellsOption = parsed->get("--shells", "both");
-    FrameOptions frame;
-    if (!readFrameOptions("bench", *parsed, frame)) return kExitUsage;
+    options.allStrategies = args.get("--sdf-strategy", "") == "all";
+    options.shells = args.get("--shells", "both");
+    ParsedArgs frameArgs = args; // "all" is bench's own: the frame options take one strategy
+    if (options.allStrategies) frameArgs.values.erase("--sdf-strategy");
+    if (!readFrameOptions("bench", frameArgs, options.frame)) return false;
+    options.scenePath = args.positionals.empty() ? "" : args.positionals[0];
+    if (args.has("--sdf-map")) options.sdfMapPath = args.get("--sdf-map", "");
+    options.json = args.has("--json");
+    return true;
+}
 
-    HeadlessSession session;
-    const std::string scenePath = parsed->positionals.empty() ? "" : parsed->positionals[0];
-    if (const int code = openHeadlessSession("bench", scenePath, frame, session)) return code;
-    Renderer& renderer = *session.renderer;
-    FrameTargets targets = createFrameTargets(frame.width, frame.height);
-    const Scene& scene = session.prepared->scene;
-    // The shell modes to run: the scene's, and all-fullscreen too when it has shells.
-    std::vector<std::pair<std::string, const PreparedScene*>> modes = {{"", &*session.prepared}};
-    std::optional<PreparedScene> fullscreen;
-    if (shellsOption == "both" && !session.prepared->shells.empty()) {
-        Diagnostics diagnostics;
-        fullscreen = openScene(scenePath, diagnostics, ShellMode::Fullscreen);
-        if (!fullscreen) {
-            std::fputs(diagnostics.format().c_str(), stderr);
-            return kExitBadInput;
-        }
-        modes[0].first = ", shells";
-        modes.emplace_back(", fullscreen", &*fullscreen);
-    }
+// Compiles the SDF tree of `prepared` again, with or without the bounding hierarchy
+// (SdfCompileOptions::bounds); false if it does not compile.
+bool recompileSdf(PreparedScene& prepared, bool bounds) {
+    Diagnostics diagnostics;
+    const auto materials = std::uint32_t(prepared.scene.materials.size());
+    std::optional<CompiledSdfScene> compiled =
+        compileSdfScene(*prepared.scene.sdf, materials, prepared.scene.file.string(), diagnostics,
+                        {.bounds = bounds});
+    if (compiled) prepared.sdf = std::move(compiled->main);
+    return compiled.has_value();
+}
 
-    std::vector<StrategyRun> runs;
-    std::vector<std::pair<std::string, double>> evaluations; // per program: primitives / pixel
-    const std::vector<SdfStrategy> strategies =
-        all ? std::vector<SdfStrategy>{SdfStrategy::Baked, SdfStrategy::Buffer,
-                                       SdfStrategy::Interpreter}
-            : std::vector<SdfStrategy>{frame.strategy};
-    std::vector<SdfStrategy> timed = strategies;
-    std::string handWrittenMap;
-    if (parsed->has("--sdf-map")) {
-        const std::string path = parsed->get("--sdf-map", "");
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        if (!in) {
-            std::fprintf(stderr, "rmsc bench: --sdf-map: cannot read '%s'\n", path.c_str());
-            return kExitBadInput;
-        }
-        handWrittenMap = "#line 1\n" + text.str();
-        timed.push_back(kHandWritten);
-    }
-    // With every strategy, the interpreter also runs without the bounding hierarchy
-    // (SdfCompileOptions::bounds): the baseline the hierarchy is measured against.
-    // And after a structural edit (the last child of the root duplicated), the interpreter
-    // draws that tree, with the hierarchy, at once, as the viewer does while generated code for
-    // it builds in the background (editor/editing_map.hpp): the row's build time is what the
-    // edit compiles.
-    std::optional<PreparedScene> unbounded, edited;
-    auto compileSdf = [](PreparedScene& prepared, bool bounds) {
-        Diagnostics diagnostics;
-        const auto materials = std::uint32_t(prepared.scene.materials.size());
-        std::optional<CompiledSdfScene> compiled =
-            compileSdfScene(*prepared.scene.sdf, materials, prepared.scene.file.string(),
-                            diagnostics, {.bounds = bounds});
-        if (compiled) prepared.sdf = std::move(compiled->main);
-        return compiled.has_value();
-    };
-    if (all && session.prepared->scene.sdf) {
-        unbounded = *session.prepared;
-        compileSdf(*unbounded, false);
-        if (!session.prepared->scene.sdf->children.empty()) {
-            edited = *session.prepared;
-            SdfNode& root = *edited->scene.sdf;
-            root.children.push_back(root.children.back());
-            if (!compileSdf(*edited, true)) edited.reset();
-        }
-    }
-
-    // What runs: each shell mode with each strategy (and the hand-written map), then the
-    // unbounded interpreter. Runs of one program share its evaluation count.
-    struct Variant {
-        std::string name;
-        const PreparedScene* prepared;
-        SdfStrategy strategy;
-        std::string program;  // runs of one program through generated code (or through the
-                              // interpreter) evaluate the same primitives
-        SdfLiveRange live{};  // objects read from the buffer under Baked (the editor's map)
-        bool conePass = true; // off: every pixel marches from the near plane
-    };
-    std::vector<Variant> variants;
+// The variants, in the order they run: each shell mode with each strategy (and the hand-written
+// map), then with every strategy the default without its cone pass and the editor's programs.
+// Runs of one program share its evaluation count.
+void listVariants(const BenchOptions& options, const PreparedScene& scene,
+                  const std::vector<std::pair<std::string, const PreparedScene*>>& modes,
+                  const std::vector<SdfStrategy>& timed, BenchPlan& plan) {
+    std::vector<Variant>& variants = plan.variants;
     for (const auto& [modeName, prepared] : modes)
         for (SdfStrategy strategy : timed) {
             const std::string base =
@@ -199,18 +178,14 @@ int runBench(std::span<const std::string> args) {
             variants.push_back({base + modeName, prepared, strategy,
                                 strategy == kHandWritten ? "hand-written" : modeName});
         }
-    if (all) {
+    if (options.allStrategies) {
         // The default without its low-resolution pre-pass: what the cone pass saves.
         const std::string base(
-            sdfStrategyName(effectiveSdfStrategy(session.prepared->sdf, SdfStrategy::Baked)));
-        variants.push_back({base + ", no cone pass",
-                            &*session.prepared,
-                            SdfStrategy::Baked,
-                            "no cone pass",
-                            {},
-                            false});
+            sdfStrategyName(effectiveSdfStrategy(scene.sdf, SdfStrategy::Baked)));
+        variants.push_back(
+            {base + ", no cone pass", &scene, SdfStrategy::Baked, "no cone pass", {}, false});
     }
-    if (unbounded) {
+    if (const std::optional<PreparedScene>& unbounded = plan.unbounded) {
         // What the editor draws while the user drags a shape's parameters: its program (no
         // bounding hierarchy), baked but for the first shape, read from the buffer.
         const auto shape =
@@ -225,126 +200,206 @@ int runBench(std::span<const std::string> args) {
                                 "no bounds", SdfLiveRange{shape->objectId, shape->objectId}});
         variants.push_back(
             {"interpreter, no bounds", &*unbounded, SdfStrategy::Interpreter, "no bounds"});
-        if (edited)
-            variants.push_back({"interpreter, after a structural edit", &*edited,
+        if (plan.edited)
+            variants.push_back({"interpreter, after a structural edit", &*plan.edited,
                                 SdfStrategy::Interpreter, "structural edit"});
     }
+}
 
-    for (const Variant& variant : variants) {
-        const PreparedScene* prepared = variant.prepared;
-        const SdfStrategy strategy = variant.strategy;
-        StrategyRun run;
-        run.name = variant.name;
-        if (std::any_of(runs.begin(), runs.end(),
-                        [&](const StrategyRun& r) { return r.name == run.name; }))
-            continue; // a scene too large for generated code runs the interpreter only once
-        renderer.setConePass(variant.conePass);
-        GpuScene gpuScene = uploadScene(*prepared, strategy);
-        if (strategy == kHandWritten) gpuScene.sdfMap = handWrittenMap;
-        if (variant.live.first <= variant.live.last)
-            gpuScene.sdfMap = generateSdfMap(prepared->sdf, strategy, {}, variant.live);
-        const auto compileStart = std::chrono::steady_clock::now();
-        if (!renderer.prepare(gpuScene, error)) {
-            std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
-            return kExitSystem;
+// Plans the runs of the session's scene: opens it again with every node in the fullscreen pass
+// when both shell modes run, reads the --sdf-map file, makes the editor's scenes with every
+// strategy, and lists the variants. Returns kExitOk or the exit code of the failure (printed).
+int planBench(const BenchOptions& options, const HeadlessSession& session, BenchPlan& plan) {
+    const PreparedScene& scene = *session.prepared;
+    // The shell modes to run: the scene's, and all-fullscreen too when it has shells.
+    std::vector<std::pair<std::string, const PreparedScene*>> modes = {{"", &scene}};
+    if (options.shells == "both" && !scene.shells.empty()) {
+        Diagnostics diagnostics;
+        plan.fullscreen = openScene(options.scenePath, diagnostics, ShellMode::Fullscreen);
+        if (!plan.fullscreen) {
+            std::fputs(diagnostics.format().c_str(), stderr);
+            return kExitBadInput;
         }
-        run.compileMs = strategy == frame.strategy && runs.empty()
-                            ? session.shaderBuildMs
-                            : millisecondsSince(compileStart);
-        // The warm-up lasts `warmup` frames and, when there is one, at least kMinWarmupMs: short
-        // frames right after a build run beside the driver's own work (writing its shader
-        // cache), which made the first strategy of a scene look slower than the same code later.
-        constexpr double kMinWarmupMs = 300.0;
-        const auto warmupStart = std::chrono::steady_clock::now();
-        for (int i = 0; run.wall.size() < std::size_t(frames); ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            renderer.render(gpuScene, scene.camera, scene.render, targets);
-            glFinish();
-            const double ms = millisecondsSince(start);
-            if (i == 0) run.firstFrameMs = ms;
-            if (i < warmup || (warmup > 0 && millisecondsSince(warmupStart) < kMinWarmupMs + ms))
-                continue;
-            run.wall.push_back(ms);
-            const PassTimes times = renderer.lastPassTimes();
-            for (std::size_t p = 0; p < times.size(); ++p)
-                run.passes[p].push_back(times[p]);
-        }
-        run.marched = renderer.lastMarchStatistics();
-        const Pixels<float> steps = readMarchSteps(targets);
-        double total = 0.0, coneTotal = 0.0;
-        for (float n : steps.data)
-            total += n;
-        const Pixels<float> tiles = readConeTiles(targets);
-        for (std::size_t i = 1; i < tiles.data.size(); i += 2)
-            coneTotal += tiles.data[i];
-        const double pixels = double(std::max<std::size_t>(steps.data.size(), 1));
-        run.coneStepsPerPixel = coneTotal / pixels;
-        run.stepsPerPixel = (total + coneTotal) / pixels;
-        // Primitives evaluated per pixel: one frame of the instrumented cone and march pass, once
-        // per program. Only the interpreter skips parts by their boxes (sdf/glsl_codegen.hpp).
-        const bool skips =
-            strategy != kHandWritten &&
-            effectiveSdfStrategy(prepared->sdf, strategy) == SdfStrategy::Interpreter;
-        const std::string countKey = variant.program + (skips ? ", skipping" : "");
-        const auto counted = std::find_if(evaluations.begin(), evaluations.end(),
-                                          [&](const auto& e) { return e.first == countKey; });
-        if (counted != evaluations.end()) {
-            run.evaluationsPerPixel = counted->second;
-        } else {
-            renderer.setCountEvaluations(true);
-            if (!renderer.prepare(gpuScene, error)) {
-                std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
-                return kExitSystem;
-            }
-            renderer.render(gpuScene, scene.camera, scene.render, targets);
-            run.evaluationsPerPixel = double(renderer.lastMarchStatistics().evaluations) / pixels;
-            renderer.setCountEvaluations(false);
-            evaluations.emplace_back(countKey, run.evaluationsPerPixel);
-        }
-        runs.push_back(std::move(run));
+        modes[0].first = ", shells";
+        modes.emplace_back(", fullscreen", &*plan.fullscreen);
     }
-    renderer.setConePass(true);
+
+    std::vector<SdfStrategy> timed =
+        options.allStrategies ? std::vector<SdfStrategy>{SdfStrategy::Baked, SdfStrategy::Buffer,
+                                                         SdfStrategy::Interpreter}
+                              : std::vector<SdfStrategy>{options.frame.strategy};
+    if (options.sdfMapPath) {
+        const std::string& path = *options.sdfMapPath;
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in) {
+            std::fprintf(stderr, "rmsc bench: --sdf-map: cannot read '%s'\n", path.c_str());
+            return kExitBadInput;
+        }
+        plan.handWrittenMap = "#line 1\n" + text.str();
+        timed.push_back(kHandWritten);
+    }
+    // With every strategy, the interpreter also runs without the bounding hierarchy
+    // (SdfCompileOptions::bounds): the baseline the hierarchy is measured against.
+    // And after a structural edit (the last child of the root duplicated), the interpreter
+    // draws that tree, with the hierarchy, at once, as the viewer does while generated code for
+    // it builds in the background (editor/editing_map.hpp): the row's build time is what the
+    // edit compiles.
+    if (options.allStrategies && scene.scene.sdf) {
+        plan.unbounded = scene;
+        recompileSdf(*plan.unbounded, false);
+        if (!scene.scene.sdf->children.empty()) {
+            plan.edited = scene;
+            SdfNode& root = *plan.edited->scene.sdf;
+            root.children.push_back(root.children.back());
+            if (!recompileSdf(*plan.edited, true)) plan.edited.reset();
+        }
+    }
+    listVariants(options, scene, modes, timed, plan);
+    return kExitOk;
+}
+
+// ---- One variant's run ----
+
+// The warm-up and the timed frames: their wall times and the passes' GPU times.
+void timeFrames(Renderer& renderer, const GpuScene& gpuScene, const Scene& scene,
+                FrameTargets& targets, const BenchOptions& options, StrategyRun& run) {
+    // The warm-up lasts `warmup` frames and, when there is one, at least kMinWarmupMs: short
+    // frames right after a build run beside the driver's own work (writing its shader
+    // cache), which made the first strategy of a scene look slower than the same code later.
+    constexpr double kMinWarmupMs = 300.0;
+    const auto warmupStart = std::chrono::steady_clock::now();
+    for (int i = 0; run.wall.size() < std::size_t(options.frames); ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        renderer.render(gpuScene, scene.camera, scene.render, targets);
+        glFinish();
+        const double ms = millisecondsSince(start);
+        if (i == 0) run.firstFrameMs = ms;
+        if (i < options.warmup ||
+            (options.warmup > 0 && millisecondsSince(warmupStart) < kMinWarmupMs + ms))
+            continue;
+        run.wall.push_back(ms);
+        const PassTimes times = renderer.lastPassTimes();
+        for (std::size_t p = 0; p < times.size(); ++p)
+            run.passes[p].push_back(times[p]);
+    }
+}
+
+// The last frame's marched fragments and march steps per pixel (the cone pass's included).
+// Returns the frame's pixel count.
+double measureMarch(const Renderer& renderer, const FrameTargets& targets, StrategyRun& run) {
+    run.marched = renderer.lastMarchStatistics();
+    const Pixels<float> steps = readMarchSteps(targets);
+    double total = 0.0, coneTotal = 0.0;
+    for (float n : steps.data)
+        total += n;
+    const Pixels<float> tiles = readConeTiles(targets);
+    for (std::size_t i = 1; i < tiles.data.size(); i += 2)
+        coneTotal += tiles.data[i];
+    const double pixels = double(std::max<std::size_t>(steps.data.size(), 1));
+    run.coneStepsPerPixel = coneTotal / pixels;
+    run.stepsPerPixel = (total + coneTotal) / pixels;
+    return pixels;
+}
+
+// Times `variant`: builds its shaders, renders the warm-up and timed frames, reads the march
+// statistics and counts the primitives evaluated (once per program). False when a shader build
+// fails (printed).
+bool runVariant(Renderer& renderer, const Variant& variant, const BenchOptions& options,
+                const BenchPlan& plan, const Scene& scene, FrameTargets& targets,
+                EvaluationCounts& evaluations, StrategyRun& run) {
+    const PreparedScene* prepared = variant.prepared;
+    const SdfStrategy strategy = variant.strategy;
+    renderer.setConePass(variant.conePass);
+    GpuScene gpuScene = uploadScene(*prepared, strategy);
+    if (strategy == kHandWritten) gpuScene.sdfMap = plan.handWrittenMap;
+    if (variant.live.first <= variant.live.last)
+        gpuScene.sdfMap = generateSdfMap(prepared->sdf, strategy, {}, variant.live);
+    const auto compileStart = std::chrono::steady_clock::now();
+    std::string error;
+    if (!renderer.prepare(gpuScene, error)) {
+        std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
+        return false;
+    }
+    run.compileMs = millisecondsSince(compileStart);
+    timeFrames(renderer, gpuScene, scene, targets, options, run);
+    const double pixels = measureMarch(renderer, targets, run);
+
+    // Primitives evaluated per pixel: one frame of the instrumented cone and march pass, once
+    // per program. Only the interpreter skips parts by their boxes (sdf/glsl_codegen.hpp).
+    const bool skips = strategy != kHandWritten &&
+                       effectiveSdfStrategy(prepared->sdf, strategy) == SdfStrategy::Interpreter;
+    const std::string countKey = variant.program + (skips ? ", skipping" : "");
+    const auto counted = std::find_if(evaluations.begin(), evaluations.end(),
+                                      [&](const auto& e) { return e.first == countKey; });
+    if (counted != evaluations.end()) {
+        run.evaluationsPerPixel = counted->second;
+        return true;
+    }
+    renderer.setCountEvaluations(true);
+    if (!renderer.prepare(gpuScene, error)) {
+        std::fprintf(stderr, "rmsc bench: %s\n", error.c_str());
+        return false;
+    }
+    renderer.render(gpuScene, scene.camera, scene.render, targets);
+    run.evaluationsPerPixel = double(renderer.lastMarchStatistics().evaluations) / pixels;
+    renderer.setCountEvaluations(false);
+    evaluations.emplace_back(countKey, run.evaluationsPerPixel);
+    return true;
+}
+
+// ---- Report ----
+
+double peakResidentMiB() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    const double peakMiB = double(usage.ru_maxrss) / 1024.0;
+    return double(usage.ru_maxrss) / 1024.0;
+}
 
-    const auto& passNames = kPassNames;
-    const std::string name = scenePath.empty() ? "(built-in demo)" : scenePath;
-    const HeadlessContext& context = *session.context;
-    const double bakedMedian = stats(runs.front().wall).median;
-    if (parsed->has("--json")) {
-        std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"frames\": %d, "
-                    "\"renderer\": \"%s\", \"peak_rss_mib\": %.1f, \"strategies\": [",
-                    name.c_str(), frame.width, frame.height, frames, context.renderer().c_str(),
-                    peakMiB);
-        for (std::size_t r = 0; r < runs.size(); ++r) {
-            const StrategyRun& run = runs[r];
-            const Stats wallStats = stats(run.wall);
-            std::printf("%s{\"strategy\": \"%s\", \"shader_build_ms\": %.3f, "
-                        "\"first_frame_ms\": %.3f, \"frame_ms\": {\"median\": %.3f, \"min\": %.3f, "
-                        "\"max\": %.3f}, "
-                        "\"ratio_to_first\": %.3f, \"march_steps_per_pixel\": %.2f, "
-                        "\"cone_steps_per_pixel\": %.3f, "
-                        "\"evaluations_per_pixel\": %.1f, "
-                        "\"marched_fragments\": {\"fullscreen\": %llu, \"shells\": %llu}, "
-                        "\"pass_gpu_ms\": {",
-                        r ? ", " : "", run.name.c_str(), run.compileMs, run.firstFrameMs,
-                        wallStats.median, wallStats.min, wallStats.max,
-                        wallStats.median / bakedMedian, run.stepsPerPixel, run.coneStepsPerPixel,
-                        run.evaluationsPerPixel, (unsigned long long)run.marched.fullscreen,
-                        (unsigned long long)run.marched.shells);
-            for (std::size_t p = 0; p < run.passes.size(); ++p) {
-                const Stats s = stats(run.passes[p]);
-                std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}",
-                            p ? ", " : "", passNames[p], s.median, s.min, s.max);
-            }
-            std::printf("}}");
+std::string sceneName(const BenchOptions& options) {
+    return options.scenePath.empty() ? "(built-in demo)" : options.scenePath;
+}
+
+void printJson(const BenchOptions& options, const HeadlessContext& context, double peakMiB,
+               const std::vector<StrategyRun>& runs) {
+    const double firstMedian = stats(runs.front().wall).median;
+    std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"frames\": %d, "
+                "\"renderer\": \"%s\", \"peak_rss_mib\": %.1f, \"strategies\": [",
+                sceneName(options).c_str(), options.frame.width, options.frame.height,
+                options.frames, context.renderer().c_str(), peakMiB);
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        const StrategyRun& run = runs[r];
+        const Stats wallStats = stats(run.wall);
+        std::printf("%s{\"strategy\": \"%s\", \"shader_build_ms\": %.3f, "
+                    "\"first_frame_ms\": %.3f, \"frame_ms\": {\"median\": %.3f, \"min\": %.3f, "
+                    "\"max\": %.3f}, "
+                    "\"ratio_to_first\": %.3f, \"march_steps_per_pixel\": %.2f, "
+                    "\"cone_steps_per_pixel\": %.3f, "
+                    "\"evaluations_per_pixel\": %.1f, "
+                    "\"marched_fragments\": {\"fullscreen\": %llu, \"shells\": %llu}, "
+                    "\"pass_gpu_ms\": {",
+                    r ? ", " : "", run.name.c_str(), run.compileMs, run.firstFrameMs,
+                    wallStats.median, wallStats.min, wallStats.max, wallStats.median / firstMedian,
+                    run.stepsPerPixel, run.coneStepsPerPixel, run.evaluationsPerPixel,
+                    (unsigned long long)run.marched.fullscreen,
+                    (unsigned long long)run.marched.shells);
+        for (std::size_t p = 0; p < run.passes.size(); ++p) {
+            const Stats s = stats(run.passes[p]);
+            std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}", p ? ", " : "",
+                        kPassNames[p], s.median, s.min, s.max);
         }
-        std::printf("]}\n");
-        return kExitOk;
+        std::printf("}}");
     }
+    std::printf("]}\n");
+}
+
+void printText(const BenchOptions& options, const HeadlessContext& context, double peakMiB,
+               const std::vector<StrategyRun>& runs) {
+    const double firstMedian = stats(runs.front().wall).median;
     std::printf("scene     %s\nsize      %dx%d, %d frames after %d warm-up\nrenderer  %s (%s)\n",
-                name.c_str(), frame.width, frame.height, frames, warmup, context.renderer().c_str(),
+                sceneName(options).c_str(), options.frame.width, options.frame.height,
+                options.frames, options.warmup, context.renderer().c_str(),
                 std::string(context.backendName()).c_str());
     std::printf("memory    %.1f MiB peak resident\n", peakMiB);
     for (const StrategyRun& run : runs) {
@@ -356,16 +411,53 @@ int runBench(std::span<const std::string> args) {
                     (unsigned long long)run.marched.fullscreen,
                     (unsigned long long)run.marched.shells);
         if (runs.size() > 1)
-            std::printf(", %.2fx the %s frame time", wallStats.median / bakedMedian,
+            std::printf(", %.2fx the %s frame time", wallStats.median / firstMedian,
                         runs.front().name.c_str());
         std::printf("\n%-9s %9s %9s %9s\n", "ms", "median", "min", "max");
         std::printf("%-9s %9.2f %9.2f %9.2f\n", "frame", wallStats.median, wallStats.min,
                     wallStats.max);
         for (std::size_t p = 0; p < run.passes.size(); ++p) {
             const Stats s = stats(run.passes[p]);
-            std::printf("%-9s %9.2f %9.2f %9.2f\n", passNames[p], s.median, s.min, s.max);
+            std::printf("%-9s %9.2f %9.2f %9.2f\n", kPassNames[p], s.median, s.min, s.max);
         }
     }
+}
+
+} // namespace
+
+int runBench(const ParsedArgs& args) {
+    BenchOptions options;
+    if (!readBenchOptions(args, options)) return kExitUsage;
+    HeadlessSession session;
+    if (const int code = openHeadlessSession("bench", options.scenePath, options.frame, session))
+        return code;
+    BenchPlan plan;
+    if (const int code = planBench(options, session, plan)) return code;
+
+    FrameTargets targets = createFrameTargets(options.frame.width, options.frame.height);
+    std::vector<StrategyRun> runs;
+    EvaluationCounts evaluations;
+    for (const Variant& variant : plan.variants) {
+        if (std::any_of(runs.begin(), runs.end(),
+                        [&](const StrategyRun& r) { return r.name == variant.name; }))
+            continue; // a scene too large for generated code runs the interpreter only once
+        StrategyRun run;
+        run.name = variant.name;
+        if (!runVariant(*session.renderer, variant, options, plan, session.prepared->scene, targets,
+                        evaluations, run))
+            return kExitSystem;
+        // The session built the first run's shaders (the scene's strategy): that build's time.
+        if (runs.empty() && variant.strategy == options.frame.strategy)
+            run.compileMs = session.shaderBuildMs;
+        runs.push_back(std::move(run));
+    }
+    session.renderer->setConePass(true);
+
+    const double peakMiB = peakResidentMiB();
+    if (options.json)
+        printJson(options, *session.context, peakMiB, runs);
+    else
+        printText(options, *session.context, peakMiB, runs);
     return kExitOk;
 }
 

@@ -2,6 +2,7 @@
 #include "headless_session.hpp"
 
 #include "commands.hpp"
+#include "core/limits.hpp"
 #include "render/shader_library.hpp"
 
 #include <chrono>
@@ -11,8 +12,8 @@ namespace rmsc::app {
 
 bool readFrameOptions(const char* command, const ParsedArgs& args, FrameOptions& options) {
     if (args.has("--size") && !parseSize(args.get("--size", ""), options.width, options.height)) {
-        std::fprintf(stderr, "rmsc %s: --size: expected WxH with sides 1..16384, got '%s'\n",
-                     command, args.get("--size", "").c_str());
+        std::fprintf(stderr, "rmsc %s: --size: expected WxH with sides 1..%d, got '%s'\n", command,
+                     limits::kImageSize, args.get("--size", "").c_str());
         return false;
     }
     if (!parseGlBackend(args.get("--backend", "auto"), options.backend)) {

@@ -1,6 +1,8 @@
 // Command-line parsing and help text.
 #include "options.hpp"
 
+#include "core/limits.hpp"
+
 #include <charconv>
 
 namespace rmsc::app {
@@ -85,8 +87,8 @@ bool parsePositiveInt(const std::string& text, int max, int& value) {
 bool parseSize(const std::string& text, int& width, int& height) {
     const std::size_t x = text.find('x');
     if (x == std::string::npos) return false;
-    return parsePositiveInt(text.substr(0, x), 16384, width) &&
-           parsePositiveInt(text.substr(x + 1), 16384, height);
+    return parsePositiveInt(text.substr(0, x), limits::kImageSize, width) &&
+           parsePositiveInt(text.substr(x + 1), limits::kImageSize, height);
 }
 
 } // namespace rmsc::app

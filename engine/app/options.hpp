@@ -18,11 +18,13 @@ struct OptionSpec {
 };
 
 struct CommandSpec {
-    const char* name;       // "render"
-    const char* usage;      // "rmsc render [SCENE] -o OUT.png [options]"
-    const char* summary;    // one paragraph
+    const char* name;      // "render"
+    const char* arguments; // "[SCENE] -o OUT.png": the short form `rmsc --help` lists
+    const char* purpose;   // one line for `rmsc --help`: "render a scene ... to PNG"
+    const char* usage;     // "rmsc render [SCENE] -o OUT.png [options]"
+    const char* summary;   // one paragraph
     std::span<const OptionSpec> options;
-    int maxPositionals;     // how many positional arguments are allowed
+    int maxPositionals; // how many positional arguments are allowed
 };
 
 struct ParsedArgs {
@@ -41,7 +43,7 @@ std::optional<ParsedArgs> parseArgs(const CommandSpec& spec, std::span<const std
 
 std::string formatHelp(const CommandSpec& spec);
 
-// Parses "640x360"; sizes from 1 to 16384 per side.
+// Parses "640x360"; sizes from 1 to limits::kImageSize per side.
 bool parseSize(const std::string& text, int& width, int& height);
 // Parses a positive integer up to `max`.
 bool parsePositiveInt(const std::string& text, int max, int& value);

@@ -1,6 +1,5 @@
 // rmsc primitives: prints the primitive catalogue (names, parameters, exact or bound).
 #include "commands.hpp"
-#include "options.hpp"
 
 #include "sdf/primitive_docs.hpp"
 #include "sdf/primitives.hpp"
@@ -14,26 +13,20 @@ const OptionSpec kOptions[] = {
     {"--markdown", nullptr, nullptr, "print the table used in docs/scene-format.md"},
 };
 
-const CommandSpec kSpec = {"primitives", "rmsc primitives [--markdown]",
-                           "Lists every SDF primitive a scene can use, with its parameters "
-                           "(default and valid range)\nand whether its distance is exact or a "
-                           "bound.",
-                           kOptions, 0};
-
 } // namespace
 
-int runPrimitives(std::span<const std::string> args) {
-    std::string error;
-    std::optional<ParsedArgs> parsed = parseArgs(kSpec, args, error);
-    if (!parsed) {
-        std::fprintf(stderr, "rmsc primitives: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    if (parsed->help) {
-        std::fputs(formatHelp(kSpec).c_str(), stdout);
-        return kExitOk;
-    }
-    if (parsed->has("--markdown")) {
+const CommandSpec kPrimitivesSpec = {
+    "primitives",
+    "",
+    "list the SDF primitives and their parameters",
+    "rmsc primitives [--markdown]",
+    "Lists every SDF primitive a scene can use, with its parameters (default and valid range)\n"
+    "and whether its distance is exact or a bound.",
+    kOptions,
+    0};
+
+int runPrimitives(const ParsedArgs& args) {
+    if (args.has("--markdown")) {
         std::fputs(primitiveCatalogueMarkdown().c_str(), stdout);
         return kExitOk;
     }

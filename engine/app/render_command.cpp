@@ -23,39 +23,33 @@ const OptionSpec kOptions[] = {
      "color | depth | normal | id | steps (default color); depth is linear view depth"},
 };
 
-const CommandSpec kSpec = {
-    "render", "rmsc render [SCENE] -o OUT.png [--size WxH] [--backend B] [--aov A]",
+} // namespace
+
+const CommandSpec kRenderSpec = {
+    "render",
+    "[SCENE] -o OUT.png",
+    "render a scene (or a .gltf/.glb, or the built-in demo) to PNG",
+    "rmsc render [SCENE] -o OUT.png [--size WxH] [--backend B] [--aov A]",
     "Renders SCENE (a .json scene, or a .gltf/.glb model opened with a default light and a\n"
     "framing camera; without SCENE, the built-in demo) headless and writes one image.\n"
     "AOVs: depth = 16-bit grey PNG, round(65535*(z-near)/(far-near)), 65535 where nothing was\n"
     "hit (or float view depth in a .pfm); normal = world normal as (n*0.5+0.5) in RGB, black\n"
     "where nothing was hit (float in a .pfm); id = a stable colour per object; steps = the\n"
     "SDF march steps per pixel as a heatmap, black 0 to red at max_steps (float in a .pfm).",
-    kOptions, 1};
+    kOptions,
+    1};
 
-} // namespace
-
-int runRender(std::span<const std::string> args) {
-    std::string error;
-    std::optional<ParsedArgs> parsed = parseArgs(kSpec, args, error);
-    if (!parsed) {
-        std::fprintf(stderr, "rmsc render: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    if (parsed->help) {
-        std::fputs(formatHelp(kSpec).c_str(), stdout);
-        return kExitOk;
-    }
+int runRender(const ParsedArgs& args) {
     FrameOptions frame;
-    if (!readFrameOptions("render", *parsed, frame)) return kExitUsage;
-    const std::string aov = parsed->get("--aov", "color");
+    if (!readFrameOptions("render", args, frame)) return kExitUsage;
+    const std::string aov = args.get("--aov", "color");
     if (aov != "color" && aov != "depth" && aov != "normal" && aov != "id" && aov != "steps") {
         std::fprintf(stderr,
                      "rmsc render: --aov: expected color, depth, normal, id or steps, got '%s'\n",
                      aov.c_str());
         return kExitUsage;
     }
-    const std::filesystem::path output = parsed->get("--output", "");
+    const std::filesystem::path output = args.get("--output", "");
     if (output.empty()) {
         std::fprintf(stderr, "rmsc render: no output file given (-o OUT.png)\n");
         return kExitUsage;
@@ -72,12 +66,13 @@ int runRender(std::span<const std::string> args) {
     }
 
     HeadlessSession session;
-    const std::string scenePath = parsed->positionals.empty() ? "" : parsed->positionals[0];
+    const std::string scenePath = args.positionals.empty() ? "" : args.positionals[0];
     if (const int code = openHeadlessSession("render", scenePath, frame, session)) return code;
     FrameTargets targets = createFrameTargets(frame.width, frame.height);
     const Scene& scene = session.prepared->scene;
     session.renderer->render(*session.gpuScene, scene.camera, scene.render, targets);
 
+    std::string error;
     bool written = false;
     if (aov == "color") {
         written = writePng8(output, readDisplayColor(targets), error);

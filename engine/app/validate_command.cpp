@@ -1,17 +1,16 @@
 // rmsc validate: loads scenes (and every glTF they reference, and compiles their SDF trees)
 // without rendering, and reports every problem found.
 #include "commands.hpp"
-#include "options.hpp"
 
 #include "prepare/prepared_scene.hpp"
 
 #include <cstdio>
 
 namespace rmsc::app {
-namespace {
-
-const CommandSpec kSpec = {
+const CommandSpec kValidateSpec = {
     "validate",
+    "SCENE...",
+    "load and check scenes, report every problem",
     "rmsc validate SCENE...",
     "Loads each SCENE (.json scene or .gltf/.glb model), the glTF files it names, and compiles\n"
     "its SDF tree, without a GL context. Prints every problem as FILE: JSON-POINTER: MESSAGE\n"
@@ -19,25 +18,13 @@ const CommandSpec kSpec = {
     {},
     1 << 20};
 
-} // namespace
-
-int runValidate(std::span<const std::string> args) {
-    std::string error;
-    std::optional<ParsedArgs> parsed = parseArgs(kSpec, args, error);
-    if (!parsed) {
-        std::fprintf(stderr, "rmsc validate: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    if (parsed->help) {
-        std::fputs(formatHelp(kSpec).c_str(), stdout);
-        return kExitOk;
-    }
-    if (parsed->positionals.empty()) {
+int runValidate(const ParsedArgs& args) {
+    if (args.positionals.empty()) {
         std::fprintf(stderr, "rmsc validate: no scene given\n");
         return kExitUsage;
     }
     int failed = 0;
-    for (const std::string& path : parsed->positionals) {
+    for (const std::string& path : args.positionals) {
         Diagnostics diagnostics;
         const bool ok = openScene(path, diagnostics).has_value();
         std::fputs(diagnostics.format().c_str(), stderr);

@@ -1,6 +1,6 @@
 // rmsc view: the interactive viewer and scene editor (window, editor panels, live rendering).
 #include "commands.hpp"
-#include "options.hpp"
+#include "core/limits.hpp"
 #include "viewer/viewer.hpp"
 
 #include <cstdio>
@@ -19,38 +19,31 @@ const OptionSpec kOptions[] = {
      "use the shaders built into the binary; do not watch the source shaders folder"},
 };
 
-const CommandSpec kSpec = {
-    "view", "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--script FILE]",
+} // namespace
+
+const CommandSpec kViewSpec = {
+    "view",
+    "[SCENE]",
+    "open the viewer and scene editor in a window",
+    "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--script FILE]",
     "Opens SCENE (a .json scene, or a .gltf/.glb model; without SCENE, the built-in demo) in a\n"
     "window with an editor: fly with right mouse + W/A/S/D, Q/E roll, Space / Left Shift up and\n"
     "down, the wheel sets the speed, Shift is fast; Alt + drag orbits the selection, F frames it.\n"
     "Click to select, G moves (then X/Y/Z for an axis), Ctrl+Z / Ctrl+Shift+Z undo and redo,\n"
     "Ctrl+S saves (atomically, keeping SCENE.bak), F12 writes a screenshot. The scene file and\n"
     "the shaders are watched and reloaded when they change on disk.",
-    kOptions, 1};
+    kOptions,
+    1};
 
-} // namespace
-
-int runView(std::span<const std::string> args) {
-    std::string error;
-    std::optional<ParsedArgs> parsed = parseArgs(kSpec, args, error);
-    if (!parsed) {
-        std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    if (parsed->help) {
-        std::fputs(formatHelp(kSpec).c_str(), stdout);
-        return kExitOk;
-    }
+int runView(const ParsedArgs& args) {
     ViewerOptions options;
-    if (parsed->has("--size") &&
-        !parseSize(parsed->get("--size", ""), options.width, options.height)) {
-        std::fprintf(stderr, "rmsc view: --size: expected WxH with sides 1..16384, got '%s'\n",
-                     parsed->get("--size", "").c_str());
+    if (args.has("--size") && !parseSize(args.get("--size", ""), options.width, options.height)) {
+        std::fprintf(stderr, "rmsc view: --size: expected WxH with sides 1..%d, got '%s'\n",
+                     limits::kImageSize, args.get("--size", "").c_str());
         return kExitUsage;
     }
-    if (parsed->has("--target-ms")) {
-        const std::string text = parsed->get("--target-ms", "");
+    if (args.has("--target-ms")) {
+        const std::string text = args.get("--target-ms", "");
         char* end = nullptr;
         const double ms = std::strtod(text.c_str(), &end);
         if (text.empty() || *end != '\0' || !(ms >= 1.0 && ms <= 10000.0)) {
@@ -61,9 +54,9 @@ int runView(std::span<const std::string> args) {
         }
         options.targetMilliseconds = float(ms);
     }
-    options.script = parsed->get("--script", "");
-    options.watchShaders = !parsed->has("--embedded-shaders");
-    if (!parsed->positionals.empty()) options.scene = parsed->positionals[0];
+    options.script = args.get("--script", "");
+    options.watchShaders = !args.has("--embedded-shaders");
+    if (!args.positionals.empty()) options.scene = args.positionals[0];
     return runViewer(options);
 }
 

@@ -288,10 +288,10 @@ const std::vector<std::vector<std::string>> kModifierKeys = {
     {"type", "radius"},
     {"type", "thickness"},
     {"type", "amplitude", "frequency"}};
-constexpr int kMaxModifiers = 16;     // per node
-constexpr int kMaxPolarCopies = 1024; // polar repetition
-constexpr int kMaxRepeatCount = 1 << 20;
-constexpr int kMaxPolygonPoints = 256;
+constexpr int kMaxModifiers = limits::kSdfModifiers;   // per node
+constexpr int kMaxPolarCopies = limits::kPolarCopies;  // polar repetition
+constexpr int kMaxRepeatCount = limits::kRepeatCopies; // per axis
+constexpr int kMaxPolygonPoints = limits::kPolygonPoints;
 constexpr float kMaxLength = 1.0e4f; // lengths, as the catalogue's
 
 const std::vector<std::string> kProfileTypes = {"circle", "rectangle", "rounded_rectangle",

@@ -69,6 +69,16 @@ with tempfile.TemporaryDirectory() as tmp:
     for command in ["render", "validate", "bench", "primitives"]:
         expect(f"{command} --help", [command, "--help"], 0, stdout_has=["usage: rmsc " + command])
     expect("no command", [], 2, stderr_has=["usage"])
+    # Every command `rmsc --help` lists answers --help and refuses an unknown option the same way.
+    listing = run(["--help"]).stdout.split("commands:\n")[1].split("\n\n")[0]
+    listed = [line.split()[0] for line in listing.splitlines()]
+    check("help lists the commands", {"render", "validate", "bench", "view", "schema"} <= set(listed),
+          str(listed))
+    for command in listed:
+        expect(f"{command} --help (listed)", [command, "--help"], 0,
+               stdout_has=["usage: rmsc " + command, "-h, --help"])
+        expect(f"{command} unknown option", [command, "--frobnicate"], 2,
+               stderr_has=[f"rmsc {command}: unknown option --frobnicate (see rmsc {command} --help)"])
     expect("unknown command", ["paint"], 2, stderr_has=["unknown command 'paint'"])
 
     # The built-in demo, every AOV.
@@ -101,6 +111,8 @@ with tempfile.TemporaryDirectory() as tmp:
 
     # Bad usage: exit 2.
     expect("bad size", ["render", "-o", out, "--size", "0x10"], 2, stderr_has=["--size"])
+    expect("size over the limit", ["render", "-o", out, "--size", "16385x8"], 2,
+           stderr_has=["--size: expected WxH with sides 1..16384, got '16385x8'"])
     expect("bad backend", ["render", "-o", out, "--backend", "vulkan"], 2, stderr_has=["--backend"])
     expect("bad aov", ["render", "-o", out, "--aov", "albedo"], 2, stderr_has=["--aov"])
     expect("no output", ["render"], 2, stderr_has=["-o"])
@@ -262,6 +274,22 @@ else:
                       ("bad colour", {"version": 1, "render": {"background": "#12345"}}),
                       ("too many steps", {"version": 1, "render": {"max_steps": 5000}})]:
         check(f"schema refuses {name}", not validator.is_valid(bad), json.dumps(bad))
+
+# The limit table: docs/limits.md shows `rmsc limits --markdown` exactly, and `rmsc limits`
+# lists the same rows with their values.
+r = run(["limits", "--markdown"])
+check("limits command", r.returncode == 0, r.stderr.strip()[:600])
+with open(os.path.join(ROOT, "docs", "limits.md"), encoding="utf-8") as f:
+    limits_doc = f.read()
+shipped_table = limits_doc.split("<!-- limits:begin -->\n")[-1].split("<!-- limits:end -->")[0]
+check("limits table is up to date", r.stdout == shipped_table,
+      "docs/limits.md differs from `rmsc limits --markdown`; paste its output between the markers")
+rows = [line.split(" | ") for line in r.stdout.splitlines()[2:]]
+check("limits table has rows", len(rows) > 20, str(len(rows)))
+text = run(["limits"]).stdout
+for cells in rows:
+    name, value = cells[0].lstrip("| "), cells[1]
+    check(f"limits lists {name}", f"\n{name}: {value} (limits::" in "\n" + text, text[:300])
 
 print(f"{passed} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)

@@ -1,7 +1,9 @@
-// Every size limit on what rmsc reads, in one place. The readers refuse input over a limit with
-// an error naming the limit (never truncating silently); docs/limits.md lists them for users
-// and must be updated with this file. Limits exist so a hostile or broken file cannot exhaust
-// memory, hang the GPU or overflow the stack.
+// Every hard limit of rmsc, in one place: sizes and counts of what it reads, and the fixed
+// budgets of the shaders and the renderer. The readers refuse input over a limit with an error
+// naming the limit (never truncating silently). Each constant has a row in the limit catalogue
+// (core/limit_catalogue.hpp), which `rmsc limits` prints and docs/limits.md shows; a unit test
+// fails when a constant here has no row. Limits exist so a hostile or broken file cannot
+// exhaust memory, hang the GPU or overflow the stack.
 #pragma once
 
 #include <cstdint>
@@ -13,14 +15,36 @@ constexpr std::uint64_t kSceneFileBytes = 64u << 20; // scene JSON text
 constexpr int kSceneJsonDepth = 256;                 // nesting of JSON arrays and objects
 constexpr int kSdfNodes = 100000;                    // nodes in the SDF tree (groups and shapes)
 constexpr int kSdfGroupDepth = 128;                  // SDF groups nested in groups
+constexpr int kSdfModifiers = 16;                    // entries of one node's "modifiers"
+constexpr int kPolarCopies = 1024;                   // "count" of a polar modifier
+constexpr int kRepeatCopies = 1 << 20;               // "count" of a repeat modifier, per axis
+constexpr int kPolygonPoints = 256;                  // "points" of one polygon profile
 constexpr int kLights = 16; // lights of a scene: "lights" plus glTF KHR_lights_punctual ones
 constexpr int kMeshInstances = 4096;    // entries of "meshes"
 constexpr int kMaterials = 4096;        // entries of "materials"
 constexpr int kSdfMaterialTextures = 8; // distinct textures of the SDF materials
 constexpr int kMarchSteps = 4096;       // "render.max_steps": bounds each GPU ray
 
+// ---- The compiled SDF tree (engine/sdf/compiler.cpp; the shader's fixed arrays) ----
+// The same numbers are written in shaders/common/sdf_functions.glsl (SDF_MAX_STACK,
+// SDF_MAX_POINT_STACK); sdf/program.hpp names them for the SDF code.
+constexpr int kSdfInstructions = 1 << 16; // instructions one tree may compile to
+constexpr int kSdfStack = 24;             // value stack of the GLSL interpreter
+constexpr int kSdfPointStack = 16;        // point stack: how deep saved points may nest
+constexpr int kSdfData = 1 << 16;         // entries of the SDF data buffer (polygon points)
+constexpr int kShellShapes = 160;         // shapes in one shell (its map is generated code)
+// Shapes of a tree drawn by generated code; above it the renderer draws the tree with the
+// interpreter (generated code costs compile time in proportion to the scene).
+constexpr int kGeneratedCodeShapes = 160;
+
+// ---- Rendering (engine/render) ----
+constexpr int kShadowViews = 12; // shadow-map layers of a scene (a point light takes six)
+
 // ---- Images and textures (glTF images, scene textures) ----
 constexpr int kTextureDimension = 8192; // width and height, each, in pixels
+
+// ---- The rmsc command (engine/app) ----
+constexpr int kImageSize = 16384; // --size of render, bench and view, each side in pixels
 
 // ---- Any input file read from disk (core/file_source.cpp) ----
 constexpr std::uint64_t kInputFileBytes = std::uint64_t(1) << 30;

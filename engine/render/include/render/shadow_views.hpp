@@ -4,6 +4,7 @@
 // order +X, -X, +Y, -Y, +Z, -Z that shaders/common/shadows.glsl selects from). GL-free.
 #pragma once
 
+#include "core/limits.hpp"
 #include "render/gpu_layout.hpp"
 #include "scene/scene.hpp"
 
@@ -14,7 +15,7 @@
 namespace rmsc {
 
 // The most shadow-map layers a scene gets; lights past the budget cast no mesh shadows.
-constexpr int kMaxShadowViews = 12;
+constexpr int kMaxShadowViews = limits::kShadowViews;
 
 struct ShadowViewPlan {
     std::vector<GpuShadowView> views; // view i renders into layer i

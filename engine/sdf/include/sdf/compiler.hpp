@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/diagnostics.hpp"
+#include "core/limits.hpp"
 #include "core/material.hpp"
 #include "sdf/program.hpp"
 #include "sdf/sdf_tree.hpp"
@@ -40,7 +41,7 @@ std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultM
                                      const SdfCompileOptions& options = {});
 
 // The most shapes one shell may hold: its map is always generated code (kMaxGeneratedLeaves).
-constexpr int kMaxShellShapes = 160;
+constexpr int kMaxShellShapes = limits::kShellShapes;
 
 // A subtree marked as a shell, compiled on its own in the node's frame ("object space": the
 // node's transform and its groups' are not applied; objectToWorld applies them). Object ids are

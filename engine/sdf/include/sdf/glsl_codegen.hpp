@@ -4,6 +4,7 @@
 // instruction, so the shader compiler sees only the primitives and operations the scene uses.
 #pragma once
 
+#include "core/limits.hpp"
 #include "sdf/program.hpp"
 
 #include <cstdint>
@@ -27,7 +28,7 @@ std::optional<SdfStrategy> parseSdfStrategy(std::string_view name);
 // and on llvmpipe each leaf costs about 0.2 s of compiling and 15 MiB of compiler memory.
 // Above this many leaves the renderer falls back to the interpreter, whose compile cost does
 // not grow with the scene (about 40 s on llvmpipe).
-constexpr int kMaxGeneratedLeaves = 160;
+constexpr int kMaxGeneratedLeaves = limits::kGeneratedCodeShapes;
 
 // The strategy used for `program` when `requested` is asked for (see kMaxGeneratedLeaves).
 SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requested);

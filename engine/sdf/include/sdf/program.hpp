@@ -3,6 +3,8 @@
 // (sdf/cpu_eval.hpp) and by the GLSL interpreter (shaders/common/sdf_scene.glsl).
 #pragma once
 
+#include "core/limits.hpp"
+
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -13,11 +15,11 @@
 namespace rmsc {
 
 // Stack size of the GLSL interpreter (SDF_MAX_STACK in shaders/common/sdf_scene.glsl).
-constexpr int kSdfMaxStack = 24;
+constexpr int kSdfMaxStack = limits::kSdfStack;
 // Most instructions one scene may compile to.
-constexpr int kSdfMaxInstructions = 1 << 16;
+constexpr int kSdfMaxInstructions = limits::kSdfInstructions;
 // Point stack of the GLSL interpreter (SDF_MAX_POINT_STACK): how deep PushPoint may nest.
-constexpr int kSdfMaxPointStack = 16;
+constexpr int kSdfMaxPointStack = limits::kSdfPointStack;
 // The program buffer's header and first instructions are also bound as a uniform block
 // (SdfProgramUniforms in shaders/common/sdf_functions.glsl): 16 + 511 * 128 bytes, within the
 // 64 KiB uniform blocks of desktop GL 4.5 drivers. Generated code reads the instructions it can
@@ -26,7 +28,7 @@ constexpr int kSdfMaxPointStack = 16;
 constexpr int kSdfUniformInstructions = 511;
 constexpr int kSdfUniformBlockBytes = 16 + kSdfUniformInstructions * 128;
 // Most vec4 entries of the SDF data buffer (polygon points, one per entry).
-constexpr int kSdfMaxData = 1 << 16;
+constexpr int kSdfMaxData = limits::kSdfData;
 
 // The interpreter keeps a current point p (world space at the start) and a stack of saved
 // points. Shapes read p through their worldToLocal; nodes with point modifiers save p, move it
