@@ -18,7 +18,9 @@ struct FileSource {
         read;
 };
 
-// Reads from the local file system; refuses files larger than maxBytes.
+// Reads regular files from the local file system (through symbolic links); refuses files
+// larger than maxBytes and anything that is not a regular file (devices, FIFOs, sockets,
+// folders) before reading a byte.
 FileSource diskFileSource(std::uintmax_t maxBytes = limits::kInputFileBytes);
 
 // Reads the files embedded at build time from samples/ (paths like "samples/scenes/demo.json").
