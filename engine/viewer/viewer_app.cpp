@@ -1,7 +1,7 @@
 // `rmsc view`: the frame loop, the GPU copy of the scene, rendering with adaptive resolution,
-// picking by CPU ray casts, screenshots and the scene / shader files (see viewer.hpp).
+// picking by CPU ray casts, screenshots and the scene / shader files (see viewer_app.hpp).
+#include "viewer_app.hpp"
 #include "editor/recovery.hpp"
-#include "viewer/viewer.hpp"
 
 #include "core/exit_code.hpp"
 #include "core/image_io.hpp"

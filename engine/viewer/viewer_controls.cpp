@@ -1,8 +1,8 @@
 // Viewer gestures: keyboard shortcuts, the fly / orbit camera, picking by clicking in the
 // viewport, and move / rotate / scale of the selected object with the mouse (G / R / S, then
 // X / Y / Z to constrain to an axis, like Blender; the math is editor/transform_gesture.hpp).
-// See viewer.hpp.
-#include "viewer/viewer.hpp"
+// See viewer_app.hpp.
+#include "viewer_app.hpp"
 
 #include "editor/scene_edits.hpp"
 #include "render/frame.hpp"

@@ -1,9 +1,9 @@
 // The viewer's Dear ImGui panels: menu bar, hierarchy (with drag and drop), inspector (object,
 // material, light, render settings, camera, view), the overlay with timings and messages, and
-// the modal dialogs (see viewer.hpp). Widgets edit the document's scene in place and mark it
+// the modal dialogs (see viewer_app.hpp). Widgets edit the document's scene in place and mark it
 // changed; the frame loop commits one undo step when no widget is active any more.
 #include "editor/recovery.hpp"
-#include "viewer/viewer.hpp"
+#include "viewer_app.hpp"
 
 #include "editor/material_texture_edits.hpp"
 #include "editor/scene_edits.hpp"

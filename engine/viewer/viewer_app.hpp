@@ -1,0 +1,190 @@
+// The viewer (`rmsc view`, started by runViewer in viewer/viewer.hpp). One class holds the
+// window, the editor document, the GPU copy of the scene and the UI state; its parts live in
+// viewer_app.cpp (the frame loop, rendering, picking, files), viewer_panels.cpp (the Dear ImGui
+// panels) and viewer_controls.cpp (camera and viewport gestures).
+#pragma once
+
+#include "display_pass.hpp"
+#include "editor/adaptive_scale.hpp"
+#include "editor/document.hpp"
+#include "editor/editing_map.hpp"
+#include "editor/file_watcher.hpp"
+#include "editor/fly_camera.hpp"
+#include "editor/transform_gesture.hpp"
+#include "imgui_platform.hpp"
+#include "input_state.hpp"
+#include "render/renderer.hpp"
+#include "render/shader_warmer.hpp"
+#include "replay_script.hpp"
+#include "viewer/viewer.hpp"
+#include "window.hpp"
+
+#include <array>
+#include <chrono>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace rmsc::app {
+
+// A rectangle of the window in window pixels (top-left origin).
+struct Rect {
+    float x = 0, y = 0, width = 0, height = 0;
+    bool contains(glm::vec2 p) const {
+        return p.x >= x && p.y >= y && p.x < x + width && p.y < y + height;
+    }
+};
+
+class Viewer {
+  public:
+    Viewer(const ViewerOptions& options, std::unique_ptr<Window> window);
+    ~Viewer();
+    int run(); // the frame loop; returns the exit code
+
+    // --- state shared by the parts ---
+    ViewerOptions options;
+    std::unique_ptr<Window> window;
+    InputState input;
+    std::optional<Script> script;
+    int frameNumber = 0;
+
+    editor::Document document;
+    editor::FlyCamera camera;
+    Camera sceneCameraBase; // fov and planes for the view
+    editor::AdaptiveScale adaptive;
+    ViewMode viewMode = ViewMode::Color;
+    bool showOverlay = true;
+
+    // GPU side
+    ShaderFiles shaderFiles;
+    std::optional<Renderer> renderer;
+    std::optional<DisplayPass> display;
+    std::optional<GpuScene> gpuScene;      // what is drawn
+    std::optional<PreparedScene> prepared; // last scene that compiled (the newest), its SDF
+                                           // without the bounding hierarchy (generated code's)
+    SdfProgram boundedSdf;                 // the same SDF with it, what the interpreter runs
+    bool sceneChanged = false; // `prepared` is newer than what is drawn: it shows once a map
+                               // for it is ready
+    bool drawnBounded = false; // gpuScene holds boundedSdf (the interpreter draws)
+    std::uint64_t uploadedRevision = 0;
+    // The SDF map drawn (editor/editing_map.hpp): the best one that is ready; the warmer builds
+    // better ones on its hidden window's context meanwhile.
+    std::unique_ptr<Window> warmerWindow;
+    std::unique_ptr<ShaderWarmer> warmer; // after warmerWindow: goes first
+    editor::EditingMapKind drawnMap = editor::EditingMapKind::Buffer;
+    // What the map choice was made for: the revision, the selection, the warmer's finished maps.
+    std::uint64_t choiceRevision = 0;
+    std::size_t choiceBuilt = 0;
+    SdfLiveRange choiceLive;
+    std::optional<FrameTargets> targets;
+    float lastRenderMilliseconds = 0.0f;
+    float lastRenderScale = 1.0f;
+    float frameMilliseconds = 0.0f;
+    bool viewChanged = true;
+    Camera lastRenderedCamera;
+    std::uint64_t lastRenderedRevision = 0;
+    int lastViewMode = -1;
+
+    // Messages
+    std::string openError;   // the scene named on the command line could not be opened
+    std::string sceneError;  // the current scene does not compile / a reload failed
+    std::string shaderError; // the shaders on disk do not compile
+    std::string fileError;   // the last save / open failed
+    std::deque<std::pair<std::string, double>> notices; // short messages with their time
+
+    // Files
+    editor::FileWatcher sceneWatcher, shaderWatcher;
+    double lastPoll = 0.0;
+    bool externalChangePending = false;
+
+    // Gestures: move (G), rotate (R) and scale (S) of the selection with the mouse; the math
+    // is editor/transform_gesture.hpp. X / Y / Z constrain, click / Enter keeps, Esc cancels.
+    struct Gesture {
+        bool active = false;
+        editor::TransformGesture math; // the start; its axis and space change while it runs
+        glm::vec2 lastMouse{0.0f};     // viewport pixels last applied
+        bool needsApply = false;       // apply even if the mouse did not move (axis changed)
+    } gesture;
+    // Inspector setting: positions shown in world coordinates, gesture axes are the world's
+    // (otherwise the object's own).
+    bool worldCoordinates = false;
+    bool orbiting = false;
+    bool looking = false;
+
+    // Modal dialogs
+    bool askClose = false;
+    enum class AfterDiscard { Quit, New } afterDiscard = AfterDiscard::Quit;
+    bool askPath = false;
+    enum class PathPurpose { Open, SaveAs, AddMesh } pathPurpose = PathPurpose::Open;
+    std::string pathBuffer;
+    bool quitRequested = false;
+    bool quitNow = false;
+    // Crash recovery (editor/recovery.hpp): a recovery file found at start, offered once.
+    std::optional<std::filesystem::path> offeredRecovery;
+    bool askRecover = false;
+    std::uint64_t recoveryRevision = 0; // document revision last written to the recovery file
+    double lastRecoveryWrite = -1e9;
+
+    // Inspector: the file fields of the selected material's textures, one per slot
+    // (editor/material_texture_edits.hpp); the file changes only when "apply" loads it.
+    struct TextureFileField {
+        int material = -1;     // the material the text belongs to
+        std::string shownFile; // the slot's file when the text was last filled from it
+        std::string text;      // the file name being typed
+        std::string error;     // why the last apply failed ("" = it did not)
+    };
+    std::array<TextureFileField, 3> textureFileFields;
+
+    // Layout (window pixels)
+    Rect viewport;
+    float leftPanelWidth = 270.0f, rightPanelWidth = 340.0f;
+
+    // --- parts ---
+    void notice(const std::string& text);
+    double now() const;
+    Camera viewCamera() const { return camera.toCamera(sceneCameraBase); }
+
+    // viewer_app.cpp
+    bool loadShaders(bool initial);
+    void syncGpuScene();
+    void startWarmer();
+    void chooseSdfMap(bool waitForBuilds); // after syncGpuScene
+    void renderView();
+    void pick(glm::vec2 windowPixel);
+    bool writeScreenshot(const std::string& path, std::string& error);
+    bool writeWindowShot(const std::string& path, std::string& error);
+    void screenshotToDefaultFile();
+    void pollFiles();
+    void openFile(const std::filesystem::path& path);
+    void newScene();
+    void save();
+    void autosave(); // unsaved edits to the recovery file, at most every few seconds
+    void saveAs(const std::filesystem::path& path);
+    void resetCameraToScene();
+    void saveCameraToScene();
+    void requestClose();
+
+    // viewer_panels.cpp
+    void drawUi();
+    void drawMenuBar();
+    void drawHierarchy();
+    void drawInspector();
+    void drawMaterialTextures(int material); // the texture slots of scene.materials[material]
+    void drawOverlay();
+    void drawModals();
+
+    // viewer_controls.cpp
+    void handleShortcuts();
+    void handleCamera(float seconds);
+    void handleViewportMouse();
+    void startGesture();  // G, R or S pressed with a movable selection
+    void updateGesture(); // follows the mouse; keeps, cancels or changes the axis
+    void frameSelection();
+
+  private:
+    std::chrono::steady_clock::time_point start_;
+};
+
+} // namespace rmsc::app
