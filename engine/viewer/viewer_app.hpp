@@ -1,7 +1,8 @@
 // The viewer (`rmsc view`, started by runViewer in viewer/viewer.hpp). One class holds the
-// window, the editor document, the GPU copy of the scene and the UI state; its parts live in
-// viewer_app.cpp (the frame loop, rendering, picking, files), viewer_panels.cpp (the Dear ImGui
-// panels) and viewer_controls.cpp (camera and viewport gestures).
+// window, the editor document and the UI state, with the GPU side in a ViewRenderer
+// (view_renderer.hpp); its parts live in viewer_app.cpp (the frame loop, files),
+// viewer_panels.cpp (the Dear ImGui panels) and viewer_controls.cpp (camera and viewport
+// gestures).
 #pragma once
 
 #include "display_pass.hpp"
@@ -13,9 +14,9 @@
 #include "editor/transform_gesture.hpp"
 #include "imgui_platform.hpp"
 #include "input_state.hpp"
-#include "render/renderer.hpp"
-#include "render/shader_warmer.hpp"
+#include "panel_layout.hpp"
 #include "replay_script.hpp"
+#include "view_renderer.hpp"
 #include "viewer/viewer.hpp"
 #include "window.hpp"
 
@@ -28,14 +29,6 @@
 #include <string>
 
 namespace rmsc::app {
-
-// A rectangle of the window in window pixels (top-left origin).
-struct Rect {
-    float x = 0, y = 0, width = 0, height = 0;
-    bool contains(glm::vec2 p) const {
-        return p.x >= x && p.y >= y && p.x < x + width && p.y < y + height;
-    }
-};
 
 class Viewer {
   public:
@@ -58,34 +51,8 @@ class Viewer {
     bool showOverlay = true;
 
     // GPU side
-    ShaderFiles shaderFiles;
-    std::optional<Renderer> renderer;
-    std::optional<DisplayPass> display;
-    std::optional<GpuScene> gpuScene;      // what is drawn
-    std::optional<PreparedScene> prepared; // last scene that compiled (the newest), its SDF
-                                           // without the bounding hierarchy (generated code's)
-    SdfProgram boundedSdf;                 // the same SDF with it, what the interpreter runs
-    bool sceneChanged = false; // `prepared` is newer than what is drawn: it shows once a map
-                               // for it is ready
-    bool drawnBounded = false; // gpuScene holds boundedSdf (the interpreter draws)
-    std::uint64_t uploadedRevision = 0;
-    // The SDF map drawn (editor/editing_map.hpp): the best one that is ready; the warmer builds
-    // better ones on its hidden window's context meanwhile.
-    std::unique_ptr<Window> warmerWindow;
-    std::unique_ptr<ShaderWarmer> warmer; // after warmerWindow: goes first
-    editor::EditingMapKind drawnMap = editor::EditingMapKind::Buffer;
-    // What the map choice was made for: the revision, the selection, the warmer's finished maps.
-    std::uint64_t choiceRevision = 0;
-    std::size_t choiceBuilt = 0;
-    SdfLiveRange choiceLive;
-    std::optional<FrameTargets> targets;
-    float lastRenderMilliseconds = 0.0f;
-    float lastRenderScale = 1.0f;
+    ViewRenderer gpu;
     float frameMilliseconds = 0.0f;
-    bool viewChanged = true;
-    Camera lastRenderedCamera;
-    std::uint64_t lastRenderedRevision = 0;
-    int lastViewMode = -1;
 
     // Messages
     std::string openError;   // the scene named on the command line could not be opened
@@ -138,8 +105,7 @@ class Viewer {
     std::array<TextureFileField, 3> textureFileFields;
 
     // Layout (window pixels)
-    Rect viewport;
-    float leftPanelWidth = 270.0f, rightPanelWidth = 340.0f;
+    PanelLayout layout;
 
     // --- parts ---
     void notice(const std::string& text);
@@ -148,13 +114,8 @@ class Viewer {
 
     // viewer_app.cpp
     bool loadShaders(bool initial);
-    void syncGpuScene();
-    void startWarmer();
-    void chooseSdfMap(bool waitForBuilds); // after syncGpuScene
+    ViewInput viewInput() const; // what the view shows this frame
     void renderView();
-    void pick(glm::vec2 windowPixel);
-    bool writeScreenshot(const std::string& path, std::string& error);
-    bool writeWindowShot(const std::string& path, std::string& error);
     void screenshotToDefaultFile();
     void pollFiles();
     void openFile(const std::filesystem::path& path);

@@ -3,6 +3,7 @@
 // X / Y / Z to constrain to an axis, like Blender; the math is editor/transform_gesture.hpp).
 // See viewer_app.hpp.
 #include "viewer_app.hpp"
+#include "viewport_pick.hpp"
 
 #include "editor/scene_edits.hpp"
 #include "render/frame.hpp"
@@ -77,7 +78,7 @@ void Viewer::handleCamera(float seconds) {
             fly.fast = input.shift();
         fly.roll = float(input.held(GLFW_KEY_E)) - float(input.held(GLFW_KEY_Q));
     }
-    const bool inViewport = viewport.contains(input.mouse) && !io.WantCaptureMouse;
+    const bool inViewport = layout.viewport.contains(input.mouse) && !io.WantCaptureMouse;
     if (input.clicked[1] && inViewport && !gesture.active) looking = true;
     if (!input.buttons[1]) looking = false;
     if (looking) fly.look = input.mouseDelta;
@@ -98,8 +99,10 @@ void Viewer::handleCamera(float seconds) {
 void Viewer::handleViewportMouse() {
     const ImGuiIO& io = ImGui::GetIO();
     if (gesture.active || !input.clicked[0] || input.alt()) return;
-    if (!viewport.contains(input.mouse) || io.WantCaptureMouse) return;
-    pick(input.mouse);
+    if (!layout.viewport.contains(input.mouse) || io.WantCaptureMouse) return;
+    if (const PreparedScene* prepared = gpu.newestScene())
+        document.selection =
+            pickAt(*prepared, document.scene(), viewCamera(), layout.viewport, input.mouse);
 }
 
 void Viewer::frameSelection() {
@@ -157,11 +160,11 @@ void Viewer::startGesture() {
     if (selection.kind == editor::SelectionKind::Sdf)
         g.parentWorld = editor::sdfParentWorldMatrix(document.scene(), selection.sdfPath);
     const FrameCamera frame =
-        makeFrameCamera(viewCamera(), int(viewport.width), int(viewport.height));
+        makeFrameCamera(viewCamera(), int(layout.viewport.width), int(layout.viewport.height));
     g.view.viewProjection = frame.viewProjection;
-    g.view.viewportSize = glm::vec2(viewport.width, viewport.height);
+    g.view.viewportSize = glm::vec2(layout.viewport.width, layout.viewport.height);
     g.view.forward = frame.forward;
-    g.startMouse = input.mouse - glm::vec2(viewport.x, viewport.y);
+    g.startMouse = input.mouse - glm::vec2(layout.viewport.x, layout.viewport.y);
     gesture.lastMouse = g.startMouse;
     gesture.needsApply = false;
     gesture.active = true;
@@ -186,7 +189,7 @@ void Viewer::updateGesture() {
         gesture.active = false;
         return;
     }
-    const glm::vec2 mouse = input.mouse - glm::vec2(viewport.x, viewport.y);
+    const glm::vec2 mouse = input.mouse - glm::vec2(layout.viewport.x, layout.viewport.y);
     if (mouse != gesture.lastMouse || gesture.needsApply) {
         gesture.lastMouse = mouse;
         gesture.needsApply = false;

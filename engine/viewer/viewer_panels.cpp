@@ -201,7 +201,7 @@ void Viewer::drawHierarchy() {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(0, top));
-    ImGui::SetNextWindowSize(ImVec2(leftPanelWidth, io.DisplaySize.y - top));
+    ImGui::SetNextWindowSize(ImVec2(layout.leftPanelWidth, io.DisplaySize.y - top));
     ImGui::Begin("Scene", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
 
@@ -575,8 +575,8 @@ bool editModifiers(SdfNode& node, float size) {
 void Viewer::drawInspector() {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - rightPanelWidth, top));
-    ImGui::SetNextWindowSize(ImVec2(rightPanelWidth, io.DisplaySize.y - top));
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - layout.rightPanelWidth, top));
+    ImGui::SetNextWindowSize(ImVec2(layout.rightPanelWidth, io.DisplaySize.y - top));
     ImGui::Begin("Inspector", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(-90);
@@ -876,22 +876,21 @@ void Viewer::drawOverlay() {
                                    ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (showOverlay) {
-        ImGui::SetNextWindowPos(ImVec2(viewport.x + 8, viewport.y + 8));
+        ImGui::SetNextWindowPos(ImVec2(layout.viewport.x + 8, layout.viewport.y + 8));
         ImGui::SetNextWindowBgAlpha(0.55f);
         ImGui::Begin("overlay", nullptr, fixed | ImGuiWindowFlags_NoInputs);
-        const int w = targets ? targets->display.width : 0,
-                  h = targets ? targets->display.height : 0;
-        ImGui::Text("frame %.1f ms   render %.1f ms", frameMilliseconds, lastRenderMilliseconds);
-        ImGui::Text("render scale %.0f%% (%dx%d)%s", lastRenderScale * 100.0f, w, h,
-                    adaptive.enabled ? "" : "  adaptive off");
-        const std::string_view map = editor::editingMapName(drawnMap);
-        ImGui::Text("SDF map: %.*s%s%s", int(map.size()), map.data(),
-                    drawnMap == editor::EditingMapKind::Baked && choiceLive.first <= choiceLive.last
-                        ? ", selection live"
-                        : "",
-                    sceneChanged ? " (the newest scene shows once its shaders are built)"
-                    : warmer && !warmer->idle() ? " (building better ones)"
-                                                : "");
+        const ViewStatus status = gpu.status();
+        ImGui::Text("frame %.1f ms   render %.1f ms", frameMilliseconds, status.renderMilliseconds);
+        ImGui::Text("render scale %.0f%% (%dx%d)%s", status.renderScale * 100.0f, status.width,
+                    status.height, adaptive.enabled ? "" : "  adaptive off");
+        const std::string_view map = editor::editingMapName(status.map);
+        ImGui::Text(
+            "SDF map: %.*s%s%s", int(map.size()), map.data(),
+            status.map == editor::EditingMapKind::Baked && status.selectionLive ? ", selection live"
+                                                                                : "",
+            status.newestScenePending ? " (the newest scene shows once its shaders are built)"
+            : status.buildingMaps     ? " (building better ones)"
+                                      : "");
         const char* names[] = {"colour", "normals", "depth", "object id"};
         ImGui::Text("view: %s   speed %.2f m/s", names[int(viewMode)], camera.speed);
         if (gesture.active) {
@@ -923,14 +922,15 @@ void Viewer::drawOverlay() {
     for (const std::string* e : {&openError, &sceneError, &shaderError, &fileError})
         if (!e->empty()) errors += (errors.empty() ? "" : "\n") + *e;
     if (!errors.empty()) {
-        ImGui::SetNextWindowPos(ImVec2(viewport.x + 8, viewport.y + viewport.height - 8), 0,
-                                ImVec2(0, 1));
-        ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
-                                            ImVec2(viewport.width - 16, viewport.height * 0.5f));
+        ImGui::SetNextWindowPos(
+            ImVec2(layout.viewport.x + 8, layout.viewport.y + layout.viewport.height - 8), 0,
+            ImVec2(0, 1));
+        ImGui::SetNextWindowSizeConstraints(
+            ImVec2(0, 0), ImVec2(layout.viewport.width - 16, layout.viewport.height * 0.5f));
         ImGui::SetNextWindowBgAlpha(0.85f);
         ImGui::Begin("problems", nullptr, fixed & ~ImGuiWindowFlags_NoDecoration);
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::PushTextWrapPos(viewport.width - 40);
+        ImGui::PushTextWrapPos(layout.viewport.width - 40);
         ImGui::TextUnformatted(errors.c_str());
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();

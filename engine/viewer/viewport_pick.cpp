@@ -1,0 +1,31 @@
+// Picking by a CPU ray cast through the clicked pixel (see viewport_pick.hpp).
+#include "viewport_pick.hpp"
+
+#include "editor/picking.hpp"
+#include "editor/scene_edits.hpp"
+#include "render/frame.hpp"
+
+#include <algorithm>
+
+namespace rmsc::app {
+
+editor::Selection pickAt(const PreparedScene& prepared, const Scene& scene, const Camera& camera,
+                         const Rect& viewport, glm::vec2 point) {
+    // A ray from the eye through the clicked point, built as the march pass builds its rays
+    // (pixelRayDirection adds half a pixel, so the point itself is the pixel's centre).
+    const int w = std::max(1, int(viewport.width)), h = std::max(1, int(viewport.height));
+    const FrameCamera frame = makeFrameCamera(camera, w, h);
+    const float x = point.x - viewport.x - 0.5f;
+    const float y = viewport.height - (point.y - viewport.y) - 0.5f;  // rows from the bottom
+    const glm::vec3 direction = pixelRayDirection(frame, x, y, w, h); // forward component 1
+    const float length = glm::length(direction);
+    editor::PickRay ray;
+    ray.origin = camera.position;
+    ray.direction = direction / length;
+    ray.tMin = camera.nearPlane * length; // the near and far planes are view depths
+    ray.tMax = camera.farPlane * length;
+    const std::optional<editor::PickHit> hit = editor::pick(prepared, ray);
+    return hit ? editor::selectionForObjectId(scene, hit->objectId) : editor::Selection::none();
+}
+
+} // namespace rmsc::app
