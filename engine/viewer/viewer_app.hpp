@@ -5,6 +5,7 @@
 // gestures).
 #pragma once
 
+#include "dialogs.hpp"
 #include "display_pass.hpp"
 #include "editor/adaptive_scale.hpp"
 #include "editor/document.hpp"
@@ -12,11 +13,15 @@
 #include "editor/file_watcher.hpp"
 #include "editor/fly_camera.hpp"
 #include "editor/transform_gesture.hpp"
+#include "editor_session.hpp"
 #include "imgui_platform.hpp"
 #include "input_state.hpp"
+#include "messages.hpp"
 #include "panel_layout.hpp"
 #include "replay_script.hpp"
+#include "scene_files.hpp"
 #include "view_renderer.hpp"
+#include "view_settings.hpp"
 #include "viewer/viewer.hpp"
 #include "window.hpp"
 
@@ -42,29 +47,16 @@ class Viewer {
     InputState input;
     std::optional<Script> script;
     int frameNumber = 0;
-
-    editor::Document document;
-    editor::FlyCamera camera;
-    Camera sceneCameraBase; // fov and planes for the view
-    editor::AdaptiveScale adaptive;
-    ViewMode viewMode = ViewMode::Color;
-    bool showOverlay = true;
-
-    // GPU side
-    ViewRenderer gpu;
     float frameMilliseconds = 0.0f;
 
-    // Messages
-    std::string openError;   // the scene named on the command line could not be opened
-    std::string sceneError;  // the current scene does not compile / a reload failed
-    std::string shaderError; // the shaders on disk do not compile
-    std::string fileError;   // the last save / open failed
-    std::deque<std::pair<std::string, double>> notices; // short messages with their time
-
-    // Files
-    editor::FileWatcher sceneWatcher, shaderWatcher;
-    double lastPoll = 0.0;
-    bool externalChangePending = false;
+    EditorSession session; // the document and the view's camera
+    ViewSettings view;
+    ViewRenderer gpu; // after window: goes first
+    Messages messages;
+    SceneFiles files;
+    Dialogs dialogs;
+    editor::FileWatcher shaderWatcher;
+    double lastPoll = 0.0; // when the files were last looked at
 
     // Gestures: move (G), rotate (R) and scale (S) of the selection with the mouse; the math
     // is editor/transform_gesture.hpp. X / Y / Z constrain, click / Enter keeps, Esc cancels.
@@ -80,20 +72,6 @@ class Viewer {
     bool orbiting = false;
     bool looking = false;
 
-    // Modal dialogs
-    bool askClose = false;
-    enum class AfterDiscard { Quit, New } afterDiscard = AfterDiscard::Quit;
-    bool askPath = false;
-    enum class PathPurpose { Open, SaveAs, AddMesh } pathPurpose = PathPurpose::Open;
-    std::string pathBuffer;
-    bool quitRequested = false;
-    bool quitNow = false;
-    // Crash recovery (editor/recovery.hpp): a recovery file found at start, offered once.
-    std::optional<std::filesystem::path> offeredRecovery;
-    bool askRecover = false;
-    std::uint64_t recoveryRevision = 0; // document revision last written to the recovery file
-    double lastRecoveryWrite = -1e9;
-
     // Inspector: the file fields of the selected material's textures, one per slot
     // (editor/material_texture_edits.hpp); the file changes only when "apply" loads it.
     struct TextureFileField {
@@ -108,9 +86,7 @@ class Viewer {
     PanelLayout layout;
 
     // --- parts ---
-    void notice(const std::string& text);
     double now() const;
-    Camera viewCamera() const { return camera.toCamera(sceneCameraBase); }
 
     // viewer_app.cpp
     bool loadShaders(bool initial);
@@ -118,14 +94,6 @@ class Viewer {
     void renderView();
     void screenshotToDefaultFile();
     void pollFiles();
-    void openFile(const std::filesystem::path& path);
-    void newScene();
-    void save();
-    void autosave(); // unsaved edits to the recovery file, at most every few seconds
-    void saveAs(const std::filesystem::path& path);
-    void resetCameraToScene();
-    void saveCameraToScene();
-    void requestClose();
 
     // viewer_panels.cpp
     void drawUi();
@@ -134,7 +102,6 @@ class Viewer {
     void drawInspector();
     void drawMaterialTextures(int material); // the texture slots of scene.materials[material]
     void drawOverlay();
-    void drawModals();
 
     // viewer_controls.cpp
     void handleShortcuts();

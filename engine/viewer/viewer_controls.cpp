@@ -25,37 +25,35 @@ bool keyboardFree(const InputState& input) {
 void Viewer::handleShortcuts() {
     const ImGuiIO& io = ImGui::GetIO();
     if (input.pressed(GLFW_KEY_F12)) screenshotToDefaultFile();
-    if (input.ctrl() && !io.WantTextInput && !askPath) {
+    if (input.ctrl() && !io.WantTextInput && !dialogs.askPath) {
         if (input.pressed(GLFW_KEY_Z)) {
             gesture.active = false;
             if (input.shift())
-                document.redo();
+                session.document.redo();
             else
-                document.undo();
+                session.document.undo();
         }
-        if (input.pressed(GLFW_KEY_Y)) document.redo();
+        if (input.pressed(GLFW_KEY_Y)) session.document.redo();
         if (input.pressed(GLFW_KEY_S)) {
-            if (input.shift() || document.file().empty()) {
-                askPath = true;
-                pathPurpose = PathPurpose::SaveAs;
-                pathBuffer = document.file().empty() ? "scene.json" : document.file().string();
+            if (input.shift() || session.document.file().empty()) {
+                dialogs.askForPath(PathPurpose::SaveAs, session.document.file().empty()
+                                                            ? "scene.json"
+                                                            : session.document.file().string());
             } else {
-                save();
+                saveScene(session, files, messages, dialogs);
             }
         }
         if (input.pressed(GLFW_KEY_O)) {
-            askPath = true;
-            pathPurpose = PathPurpose::Open;
-            pathBuffer = document.file().string();
+            dialogs.askForPath(PathPurpose::Open, session.document.file().string());
         }
         if (input.pressed(GLFW_KEY_D))
-            document.apply("Duplicate", [](Scene& scene, editor::Selection& selection) {
+            session.document.apply("Duplicate", [](Scene& scene, editor::Selection& selection) {
                 selection = editor::duplicateSelected(scene, selection);
             });
     }
     if (!keyboardFree(input) || gesture.active) return;
-    if (input.pressed(GLFW_KEY_DELETE) && !document.selection.empty())
-        document.apply("Delete", [](Scene& scene, editor::Selection& selection) {
+    if (input.pressed(GLFW_KEY_DELETE) && !session.document.selection.empty())
+        session.document.apply("Delete", [](Scene& scene, editor::Selection& selection) {
             selection = editor::deleteSelected(scene, selection);
         });
     if (input.pressed(GLFW_KEY_F)) frameSelection();
@@ -82,18 +80,19 @@ void Viewer::handleCamera(float seconds) {
     if (input.clicked[1] && inViewport && !gesture.active) looking = true;
     if (!input.buttons[1]) looking = false;
     if (looking) fly.look = input.mouseDelta;
-    if (input.wheel != 0.0f && inViewport) camera.changeSpeed(input.wheel);
+    if (input.wheel != 0.0f && inViewport) session.camera.changeSpeed(input.wheel);
 
     if (input.clicked[0] && input.alt() && inViewport && !gesture.active) orbiting = true;
     if (!input.buttons[0]) orbiting = false;
     if (orbiting && input.mouseDelta != glm::vec2(0.0f)) {
         const std::optional<editor::Bounds> bounds =
-            editor::selectionBounds(document.scene(), document.selection);
-        const glm::vec3 pivot =
-            bounds ? bounds->center : camera.position + camera.forward() * camera.focusDistance;
-        camera.orbit(pivot, input.mouseDelta);
+            editor::selectionBounds(session.document.scene(), session.document.selection);
+        const glm::vec3 pivot = bounds ? bounds->center
+                                       : session.camera.position + session.camera.forward() *
+                                                                       session.camera.focusDistance;
+        session.camera.orbit(pivot, input.mouseDelta);
     }
-    camera.update(fly, seconds);
+    session.camera.update(fly, seconds);
 }
 
 void Viewer::handleViewportMouse() {
@@ -101,16 +100,17 @@ void Viewer::handleViewportMouse() {
     if (gesture.active || !input.clicked[0] || input.alt()) return;
     if (!layout.viewport.contains(input.mouse) || io.WantCaptureMouse) return;
     if (const PreparedScene* prepared = gpu.newestScene())
-        document.selection =
-            pickAt(*prepared, document.scene(), viewCamera(), layout.viewport, input.mouse);
+        session.document.selection = pickAt(*prepared, session.document.scene(),
+                                            session.viewCamera(), layout.viewport, input.mouse);
 }
 
 void Viewer::frameSelection() {
     std::optional<editor::Bounds> bounds =
-        editor::selectionBounds(document.scene(), document.selection);
-    if (!bounds) bounds = editor::selectionBounds(document.scene(), editor::Selection::sdf({}));
+        editor::selectionBounds(session.document.scene(), session.document.selection);
+    if (!bounds)
+        bounds = editor::selectionBounds(session.document.scene(), editor::Selection::sdf({}));
     if (!bounds) return;
-    camera.frame(bounds->center, bounds->radius, sceneCameraBase.fovYDegrees);
+    session.camera.frame(bounds->center, bounds->radius, session.sceneCamera.fovYDegrees);
 }
 
 namespace {
@@ -148,19 +148,19 @@ void Viewer::startGesture() {
         kind = editor::GestureKind::Scale;
     else
         return;
-    const editor::Selection& selection = document.selection;
-    const Transform* transform = selectedTransform(document.editScene(), selection);
+    const editor::Selection& selection = session.document.selection;
+    const Transform* transform = selectedTransform(session.document.editScene(), selection);
     if (!transform) return; // nothing movable selected (S then flies back as usual)
-    document.commit();
+    session.document.commit();
     editor::TransformGesture& g = gesture.math;
     g = {};
     g.kind = kind;
     g.space = worldCoordinates ? editor::AxisSpace::World : editor::AxisSpace::Local;
     g.start = *transform;
     if (selection.kind == editor::SelectionKind::Sdf)
-        g.parentWorld = editor::sdfParentWorldMatrix(document.scene(), selection.sdfPath);
-    const FrameCamera frame =
-        makeFrameCamera(viewCamera(), int(layout.viewport.width), int(layout.viewport.height));
+        g.parentWorld = editor::sdfParentWorldMatrix(session.document.scene(), selection.sdfPath);
+    const FrameCamera frame = makeFrameCamera(session.viewCamera(), int(layout.viewport.width),
+                                              int(layout.viewport.height));
     g.view.viewProjection = frame.viewProjection;
     g.view.viewportSize = glm::vec2(layout.viewport.width, layout.viewport.height);
     g.view.forward = frame.forward;
@@ -172,8 +172,8 @@ void Viewer::startGesture() {
 
 void Viewer::updateGesture() {
     if (!gesture.active) return;
-    const editor::Selection& selection = document.selection;
-    if (!selectedTransform(document.editScene(), selection)) {
+    const editor::Selection& selection = session.document.selection;
+    if (!selectedTransform(session.document.editScene(), selection)) {
         gesture.active = false;
         return;
     }
@@ -185,7 +185,7 @@ void Viewer::updateGesture() {
         }
     }
     if (input.pressed(GLFW_KEY_ESCAPE) || input.clicked[1]) {
-        document.revertPending();
+        session.document.revertPending();
         gesture.active = false;
         return;
     }
@@ -193,11 +193,12 @@ void Viewer::updateGesture() {
     if (mouse != gesture.lastMouse || gesture.needsApply) {
         gesture.lastMouse = mouse;
         gesture.needsApply = false;
-        *selectedTransform(document.editScene(), selection) = editor::gestureTransform(g, mouse);
-        document.markChanged(gestureLabel(g));
+        *selectedTransform(session.document.editScene(), selection) =
+            editor::gestureTransform(g, mouse);
+        session.document.markChanged(gestureLabel(g));
     }
     if (input.pressed(GLFW_KEY_ENTER) || input.clicked[0]) {
-        document.commit();
+        session.document.commit();
         gesture.active = false;
     }
 }

@@ -62,13 +62,6 @@ float stepFor(float size) {
     return std::max(0.001f, std::abs(size) * 0.01f);
 }
 
-// Dialogs open in the middle of the window.
-void centerNextWindow() {
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Appearing,
-                            ImVec2(0.5f, 0.5f));
-}
-
 void helpTooltip(std::string_view text) {
     if (!text.empty() && ImGui::IsItemHovered())
         ImGui::SetTooltip("%.*s", int(text.size()), text.data());
@@ -81,54 +74,53 @@ void Viewer::drawUi() {
     drawHierarchy();
     drawInspector();
     drawOverlay();
-    drawModals();
+    drawDialogs(dialogs, session, files, messages);
 }
 
 void Viewer::drawMenuBar() {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
         if (ImGui::MenuItem("New")) {
-            if (document.dirty()) {
-                askClose = true;
-                afterDiscard = AfterDiscard::New;
+            if (session.document.dirty()) {
+                dialogs.askClose = true;
+                dialogs.afterDiscard = AfterDiscard::New;
             } else {
-                newScene();
+                newScene(session, files, messages);
             }
         }
         if (ImGui::MenuItem("Open...", "Ctrl+O")) {
-            askPath = true;
-            pathPurpose = PathPurpose::Open;
-            pathBuffer = document.file().string();
+            dialogs.askForPath(PathPurpose::Open, session.document.file().string());
         }
-        if (ImGui::MenuItem("Save", "Ctrl+S")) save();
+        if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(session, files, messages, dialogs);
         if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) {
-            askPath = true;
-            pathPurpose = PathPurpose::SaveAs;
-            pathBuffer = document.file().empty() ? "scene.json" : document.file().string();
+            dialogs.askForPath(PathPurpose::SaveAs, session.document.file().empty()
+                                                        ? "scene.json"
+                                                        : session.document.file().string());
         }
         ImGui::Separator();
         if (ImGui::MenuItem("Screenshot", "F12")) screenshotToDefaultFile();
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) {
-            afterDiscard = AfterDiscard::Quit;
-            requestClose();
+            dialogs.afterDiscard = AfterDiscard::Quit;
+            requestClose(dialogs, session.document);
         }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        const std::string undo = "Undo " + document.undoLabel();
-        const std::string redo = "Redo " + document.redoLabel();
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, document.canUndo())) document.undo();
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, document.canRedo()))
-            document.redo();
+        const std::string undo = "Undo " + session.document.undoLabel();
+        const std::string redo = "Redo " + session.document.redoLabel();
+        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, session.document.canUndo()))
+            session.document.undo();
+        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, session.document.canRedo()))
+            session.document.redo();
         ImGui::Separator();
-        const bool selected = !document.selection.empty();
+        const bool selected = !session.document.selection.empty();
         if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, selected))
-            document.apply("Duplicate", [](Scene& scene, Selection& selection) {
+            session.document.apply("Duplicate", [](Scene& scene, Selection& selection) {
                 selection = editor::duplicateSelected(scene, selection);
             });
         if (ImGui::MenuItem("Delete", "Del", false, selected))
-            document.apply("Delete", [](Scene& scene, Selection& selection) {
+            session.document.apply("Delete", [](Scene& scene, Selection& selection) {
                 selection = editor::deleteSelected(scene, selection);
             });
         if (ImGui::MenuItem("Move (grab)", "G, then X/Y/Z", false, false)) {
@@ -143,11 +135,11 @@ void Viewer::drawMenuBar() {
         if (ImGui::BeginMenu("Shape")) {
             for (const PrimitiveSpec& spec : primitiveCatalogue()) {
                 if (ImGui::MenuItem(std::string(spec.name).c_str()))
-                    document.apply("Add " + std::string(spec.name),
-                                   [&](Scene& scene, Selection& selection) {
-                                       selection = Selection::sdf(editor::insertSdfNode(
-                                           scene, selection, editor::makeShape(spec.id)));
-                                   });
+                    session.document.apply("Add " + std::string(spec.name),
+                                           [&](Scene& scene, Selection& selection) {
+                                               selection = Selection::sdf(editor::insertSdfNode(
+                                                   scene, selection, editor::makeShape(spec.id)));
+                                           });
                 helpTooltip(spec.description);
             }
             ImGui::EndMenu();
@@ -155,43 +147,42 @@ void Viewer::drawMenuBar() {
         if (ImGui::BeginMenu("Group")) {
             for (const OpName& op : kOps)
                 if (ImGui::MenuItem(op.label))
-                    document.apply("Add group", [&](Scene& scene, Selection& selection) {
+                    session.document.apply("Add group", [&](Scene& scene, Selection& selection) {
                         selection = Selection::sdf(
                             editor::insertSdfNode(scene, selection, editor::makeGroup(op.op)));
                     });
             ImGui::EndMenu();
         }
         if (ImGui::MenuItem("Directional light"))
-            document.apply("Add light", [](Scene& scene, Selection& selection) {
+            session.document.apply("Add light", [](Scene& scene, Selection& selection) {
                 selection = Selection::light(editor::addLight(scene));
             });
         if (ImGui::MenuItem("glTF mesh from a file...")) {
-            askPath = true;
-            pathPurpose = PathPurpose::AddMesh;
-            pathBuffer.clear();
+            dialogs.askForPath(PathPurpose::AddMesh, "");
         }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
         const char* names[] = {"Colour", "Normals", "Depth", "Object id", "March steps"};
         for (int i = 0; i < 5; ++i)
-            if (ImGui::MenuItem(names[i], nullptr, int(viewMode) == i)) viewMode = ViewMode(i);
+            if (ImGui::MenuItem(names[i], nullptr, int(view.mode) == i)) view.mode = ViewMode(i);
         ImGui::Separator();
-        ImGui::MenuItem("Overlay", nullptr, &showOverlay);
-        ImGui::MenuItem("Adaptive resolution", nullptr, &adaptive.enabled);
+        ImGui::MenuItem("Overlay", nullptr, &view.showOverlay);
+        ImGui::MenuItem("Adaptive resolution", nullptr, &view.adaptive.enabled);
         ImGui::SetNextItemWidth(120);
-        ImGui::DragFloat("target ms", &adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f, "%.0f ms");
+        ImGui::DragFloat("target ms", &view.adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f,
+                         "%.0f ms");
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Camera")) {
         if (ImGui::MenuItem("Frame selection", "F")) frameSelection();
-        if (ImGui::MenuItem("Save camera to scene")) saveCameraToScene();
-        if (ImGui::MenuItem("Reset to scene camera")) resetCameraToScene();
+        if (ImGui::MenuItem("Save camera to scene")) session.saveCameraToScene();
+        if (ImGui::MenuItem("Reset to scene camera")) session.resetCamera();
         ImGui::EndMenu();
     }
-    const std::string title =
-        (document.file().empty() ? std::string("(unsaved scene)") : document.file().string()) +
-        (document.dirty() ? " *" : "");
+    const std::string title = (session.document.file().empty() ? std::string("(unsaved scene)")
+                                                               : session.document.file().string()) +
+                              (session.document.dirty() ? " *" : "");
     ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(title.c_str()).x - 16);
     ImGui::TextDisabled("%s", title.c_str());
     ImGui::EndMainMenuBar();
@@ -209,7 +200,7 @@ void Viewer::drawHierarchy() {
     if (ImGui::BeginPopup("add shape")) {
         for (const PrimitiveSpec& spec : primitiveCatalogue())
             if (ImGui::Selectable(std::string(spec.name).c_str()))
-                document.apply(
+                session.document.apply(
                     "Add " + std::string(spec.name), [&](Scene& scene, Selection& selection) {
                         selection = Selection::sdf(
                             editor::insertSdfNode(scene, selection, editor::makeShape(spec.id)));
@@ -221,7 +212,7 @@ void Viewer::drawHierarchy() {
     if (ImGui::BeginPopup("add group")) {
         for (const OpName& op : kOps)
             if (ImGui::Selectable(op.label))
-                document.apply("Add group", [&](Scene& scene, Selection& selection) {
+                session.document.apply("Add group", [&](Scene& scene, Selection& selection) {
                     selection = Selection::sdf(
                         editor::insertSdfNode(scene, selection, editor::makeGroup(op.op)));
                 });
@@ -229,14 +220,12 @@ void Viewer::drawHierarchy() {
     }
     ImGui::SameLine();
     if (ImGui::Button("+ Light"))
-        document.apply("Add light", [](Scene& scene, Selection& selection) {
+        session.document.apply("Add light", [](Scene& scene, Selection& selection) {
             selection = Selection::light(editor::addLight(scene));
         });
     ImGui::SameLine();
     if (ImGui::Button("+ Mesh")) {
-        askPath = true;
-        pathPurpose = PathPurpose::AddMesh;
-        pathBuffer.clear();
+        dialogs.askForPath(PathPurpose::AddMesh, "");
     }
     ImGui::Separator();
 
@@ -246,20 +235,21 @@ void Viewer::drawHierarchy() {
         int index = -1;
     };
     std::optional<PendingMove> move;
-    const Scene& scene = document.scene();
+    const Scene& scene = session.document.scene();
     std::function<void(const SdfNode&, std::vector<int>&)> drawNode = [&](const SdfNode& node,
                                                                           std::vector<int>& path) {
         ImGuiTreeNodeFlags flags =
             ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth |
             ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_OpenOnDoubleClick;
         if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
-        if (document.selection == Selection::sdf(path)) flags |= ImGuiTreeNodeFlags_Selected;
+        if (session.document.selection == Selection::sdf(path))
+            flags |= ImGuiTreeNodeFlags_Selected;
         const std::string label =
             (node.isGroup ? std::string("[") + opLabel(node.op) + "] " : std::string()) +
             editor::displayName(node) + "##" + pathId(path);
         const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
         if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen())
-            document.selection = Selection::sdf(path);
+            session.document.selection = Selection::sdf(path);
         if (!path.empty() && ImGui::BeginDragDropSource()) {
             ImGui::SetDragDropPayload(kNodePayload, path.data(), path.size() * sizeof(int));
             ImGui::TextUnformatted(editor::displayName(node).c_str());
@@ -295,7 +285,7 @@ void Viewer::drawHierarchy() {
     }
     if (move) {
         const PendingMove m = *move;
-        document.apply("Reorder", [m](Scene& s, Selection& selection) {
+        session.document.apply("Reorder", [m](Scene& s, Selection& selection) {
             if (auto to = editor::moveSdfNode(s, m.from, m.into, m.index))
                 selection = Selection::sdf(*to);
         });
@@ -312,8 +302,8 @@ void Viewer::drawHierarchy() {
         const Selection itemSelection =
             kind == SelectionKind::Mesh ? Selection::mesh(index) : Selection::light(index);
         const std::string label = name + "##" + payloadType + std::to_string(index);
-        if (ImGui::Selectable(label.c_str(), document.selection == itemSelection))
-            document.selection = itemSelection;
+        if (ImGui::Selectable(label.c_str(), session.document.selection == itemSelection))
+            session.document.selection = itemSelection;
         if (ImGui::BeginDragDropSource()) {
             ImGui::SetDragDropPayload(payloadType, &index, sizeof(index));
             ImGui::TextUnformatted(name.c_str());
@@ -338,15 +328,16 @@ void Viewer::drawHierarchy() {
                  SelectionKind::Light, int(i), kLightPayload);
     if (reorder && reorder->from != reorder->to) {
         const PendingReorder r = *reorder;
-        document.apply(r.kind == SelectionKind::Mesh ? "Reorder meshes" : "Reorder lights",
-                       [r](Scene& s, Selection& selection) {
-                           if (r.kind == SelectionKind::Mesh) {
-                               if (const int to = editor::moveMesh(s, r.from, r.to); to >= 0)
-                                   selection = Selection::mesh(to);
-                           } else if (const int to = editor::moveLight(s, r.from, r.to); to >= 0) {
-                               selection = Selection::light(to);
-                           }
-                       });
+        session.document.apply(
+            r.kind == SelectionKind::Mesh ? "Reorder meshes" : "Reorder lights",
+            [r](Scene& s, Selection& selection) {
+                if (r.kind == SelectionKind::Mesh) {
+                    if (const int to = editor::moveMesh(s, r.from, r.to); to >= 0)
+                        selection = Selection::mesh(to);
+                } else if (const int to = editor::moveLight(s, r.from, r.to); to >= 0) {
+                    selection = Selection::light(to);
+                }
+            });
     }
     ImGui::Spacing();
     ImGui::Separator();
@@ -582,14 +573,14 @@ void Viewer::drawInspector() {
     ImGui::PushItemWidth(-90);
     if (ImGui::BeginTabBar("inspector tabs")) {
         if (ImGui::BeginTabItem("Object")) {
-            Scene& scene = document.editScene();
-            const Selection selection = document.selection;
+            Scene& scene = session.document.editScene();
+            const Selection selection = session.document.selection;
             if (selection.kind == SelectionKind::Sdf) {
                 SdfNode* node = editor::findSdfNode(scene, selection.sdfPath);
                 const std::optional<editor::Bounds> bounds =
                     editor::selectionBounds(scene, selection);
                 const float size = bounds ? bounds->radius : 1.0f;
-                if (ImGui::InputText("name", &node->name)) document.markChanged("Rename");
+                if (ImGui::InputText("name", &node->name)) session.document.markChanged("Rename");
                 ImGui::Checkbox("world coordinates", &worldCoordinates);
                 helpTooltip("Position in world coordinates; R / G with X, Y or Z use the world's "
                             "axes. Off: the position in the parent group and the object's own "
@@ -598,7 +589,7 @@ void Viewer::drawInspector() {
                 ImGui::TextDisabled("Transform");
                 if (editTransform(node->transform, worldCoordinates,
                                   editor::sdfParentWorldMatrix(scene, selection.sdfPath), size))
-                    document.markChanged("Transform");
+                    session.document.markChanged("Transform");
                 ImGui::Separator();
                 if (node->isGroup) {
                     ImGui::TextDisabled("Group");
@@ -608,7 +599,7 @@ void Viewer::drawInspector() {
                                 node->op = op.op;
                                 if (isSmooth(op.op) && node->smoothness <= 0.0f)
                                     node->smoothness = size * 0.1f;
-                                document.markChanged("Operation");
+                                session.document.markChanged("Operation");
                             }
                         }
                         ImGui::EndCombo();
@@ -616,7 +607,7 @@ void Viewer::drawInspector() {
                     if (isSmooth(node->op) &&
                         ImGui::DragFloat("smoothness", &node->smoothness, stepFor(size) * 0.5f,
                                          0.0f, size * 4.0f, "%.4f", ImGuiSliderFlags_AlwaysClamp))
-                        document.markChanged("Smoothness");
+                        session.document.markChanged("Smoothness");
                     helpTooltip("Blend distance of the smooth operation, in world units; the drag "
                                 "step follows the group's size.");
                 } else {
@@ -643,7 +634,7 @@ void Viewer::drawInspector() {
                                 if (node->name == spec.name) node->name = std::string(other.name);
                                 node->primitive = other.id;
                                 node->params = params;
-                                document.markChanged("Shape type");
+                                session.document.markChanged("Shape type");
                             }
                             helpTooltip(other.description);
                         }
@@ -666,33 +657,34 @@ void Viewer::drawInspector() {
                                                 : ImGui::DragFloat(name.c_str(), value, step,
                                                                    p.minValue, p.maxValue, "%.3f",
                                                                    ImGuiSliderFlags_AlwaysClamp);
-                        if (edited) document.markChanged("Edit " + name);
+                        if (edited) session.document.markChanged("Edit " + name);
                         helpTooltip(p.description);
                     }
                 }
                 ImGui::Separator();
                 ImGui::TextDisabled("Material");
                 if (chooseMaterial(scene, node->material, "(inherit)"))
-                    document.markChanged("Material");
+                    session.document.markChanged("Material");
                 ImGui::Separator();
-                if (editModifiers(*node, size)) document.markChanged("Modifiers");
+                if (editModifiers(*node, size)) session.document.markChanged("Modifiers");
                 ImGui::Separator();
-                if (editShell(*node, scene.file.parent_path())) document.markChanged("Shell");
+                if (editShell(*node, scene.file.parent_path()))
+                    session.document.markChanged("Shell");
                 ImGui::Separator();
                 drawMaterialTextures(node->material);
                 ImGui::Spacing();
                 if (ImGui::Button("Duplicate"))
-                    document.apply("Duplicate", [](Scene& s, Selection& sel) {
+                    session.document.apply("Duplicate", [](Scene& s, Selection& sel) {
                         sel = editor::duplicateSelected(s, sel);
                     });
                 ImGui::SameLine();
                 if (ImGui::Button("Delete"))
-                    document.apply("Delete", [](Scene& s, Selection& sel) {
+                    session.document.apply("Delete", [](Scene& s, Selection& sel) {
                         sel = editor::deleteSelected(s, sel);
                     });
             } else if (selection.kind == SelectionKind::Mesh) {
                 MeshInstance& mesh = scene.meshes[std::size_t(selection.index)];
-                if (ImGui::InputText("name", &mesh.name)) document.markChanged("Rename");
+                if (ImGui::InputText("name", &mesh.name)) session.document.markChanged("Rename");
                 ImGui::TextDisabled("file: %s", mesh.file.c_str());
                 ImGui::Checkbox("world coordinates", &worldCoordinates);
                 helpTooltip("R / G with X, Y or Z: the world's axes when on, the mesh's own "
@@ -701,22 +693,22 @@ void Viewer::drawInspector() {
                 const float size = std::max(
                     {mesh.transform.scale.x, mesh.transform.scale.y, mesh.transform.scale.z});
                 if (editTransform(mesh.transform, false, glm::mat4(1.0f), size))
-                    document.markChanged("Transform");
+                    session.document.markChanged("Transform");
                 ImGui::Separator();
                 if (chooseMaterial(scene, mesh.materialOverride, "(glTF materials)"))
-                    document.markChanged("Material");
+                    session.document.markChanged("Material");
                 if (ImGui::Button("Duplicate"))
-                    document.apply("Duplicate", [](Scene& s, Selection& sel) {
+                    session.document.apply("Duplicate", [](Scene& s, Selection& sel) {
                         sel = editor::duplicateSelected(s, sel);
                     });
                 ImGui::SameLine();
                 if (ImGui::Button("Delete"))
-                    document.apply("Delete", [](Scene& s, Selection& sel) {
+                    session.document.apply("Delete", [](Scene& s, Selection& sel) {
                         sel = editor::deleteSelected(s, sel);
                     });
             } else if (selection.kind == SelectionKind::Light) {
                 Light& light = scene.lights[std::size_t(selection.index)];
-                if (ImGui::InputText("name", &light.name)) document.markChanged("Rename");
+                if (ImGui::InputText("name", &light.name)) session.document.markChanged("Rename");
                 ImGui::TextDisabled("directional light");
                 // Direction as azimuth / elevation: dragging stays on the unit sphere.
                 const glm::vec3 d = glm::normalize(light.direction);
@@ -731,20 +723,20 @@ void Viewer::drawInspector() {
                     const float a = glm::radians(azimuth), e = glm::radians(elevation);
                     light.direction = glm::vec3(std::sin(a) * std::cos(e), -std::sin(e),
                                                 std::cos(a) * std::cos(e));
-                    document.markChanged("Light direction");
+                    session.document.markChanged("Light direction");
                 }
                 if (ImGui::ColorEdit3("colour", &light.color.x, ImGuiColorEditFlags_Float))
-                    document.markChanged("Light colour");
+                    session.document.markChanged("Light colour");
                 if (ImGui::DragFloat("intensity", &light.intensity, 0.02f, 0.0f, 1000.0f, "%.2f",
                                      ImGuiSliderFlags_AlwaysClamp))
-                    document.markChanged("Light intensity");
+                    session.document.markChanged("Light intensity");
                 if (ImGui::Button("Duplicate"))
-                    document.apply("Duplicate", [](Scene& s, Selection& sel) {
+                    session.document.apply("Duplicate", [](Scene& s, Selection& sel) {
                         sel = editor::duplicateSelected(s, sel);
                     });
                 ImGui::SameLine();
                 if (ImGui::Button("Delete"))
-                    document.apply("Delete", [](Scene& s, Selection& sel) {
+                    session.document.apply("Delete", [](Scene& s, Selection& sel) {
                         sel = editor::deleteSelected(s, sel);
                     });
             } else {
@@ -754,7 +746,7 @@ void Viewer::drawInspector() {
             ImGui::EndTabItem();
         }
         if (ImGui::BeginTabItem("Render")) {
-            RenderSettings& r = document.editScene().render;
+            RenderSettings& r = session.document.editScene().render;
             bool changed = false;
             changed |= ImGui::DragInt("max steps", &r.maxSteps, 1.0f, 1, 4096, "%d",
                                       ImGuiSliderFlags_AlwaysClamp);
@@ -767,10 +759,10 @@ void Viewer::drawInspector() {
             changed |= ImGui::ColorEdit3("ambient", &r.ambient.x, ImGuiColorEditFlags_Float);
             changed |= ImGui::DragFloat("exposure", &r.exposure, 0.01f, 0.0f, 100.0f, "%.2f",
                                         ImGuiSliderFlags_AlwaysClamp);
-            if (changed) document.markChanged("Render settings");
+            if (changed) session.document.markChanged("Render settings");
             ImGui::Separator();
             ImGui::TextDisabled("Camera");
-            Camera& c = document.editScene().camera;
+            Camera& c = session.document.editScene().camera;
             bool cameraChanged = ImGui::DragFloat("fov", &c.fovYDegrees, 0.2f, 1.0f, 170.0f,
                                                   "%.1f°", ImGuiSliderFlags_AlwaysClamp);
             cameraChanged |=
@@ -779,22 +771,22 @@ void Viewer::drawInspector() {
             cameraChanged |= ImGui::DragFloat("far", &c.farPlane, 0.5f, c.nearPlane * 2.0f,
                                               100000.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
             if (cameraChanged) {
-                sceneCameraBase.fovYDegrees = c.fovYDegrees;
-                sceneCameraBase.nearPlane = c.nearPlane;
-                sceneCameraBase.farPlane = c.farPlane;
-                document.markChanged("Camera lens");
+                session.sceneCamera.fovYDegrees = c.fovYDegrees;
+                session.sceneCamera.nearPlane = c.nearPlane;
+                session.sceneCamera.farPlane = c.farPlane;
+                session.document.markChanged("Camera lens");
             }
-            if (ImGui::Button("Save camera to scene")) saveCameraToScene();
+            if (ImGui::Button("Save camera to scene")) session.saveCameraToScene();
             ImGui::SameLine();
-            if (ImGui::Button("Reset to scene camera")) resetCameraToScene();
-            ImGui::DragFloat("fly speed", &camera.speed, 0.05f, 0.01f, 1000.0f, "%.2f m/s");
+            if (ImGui::Button("Reset to scene camera")) session.resetCamera();
+            ImGui::DragFloat("fly speed", &session.camera.speed, 0.05f, 0.01f, 1000.0f, "%.2f m/s");
             ImGui::Separator();
             ImGui::TextDisabled("View");
             const char* names[] = {"colour", "normals", "depth", "object id", "march steps"};
-            int mode = int(viewMode);
-            if (ImGui::Combo("show", &mode, names, 5)) viewMode = ViewMode(mode);
-            ImGui::Checkbox("adaptive resolution", &adaptive.enabled);
-            ImGui::DragFloat("target", &adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f,
+            int mode = int(view.mode);
+            if (ImGui::Combo("show", &mode, names, 5)) view.mode = ViewMode(mode);
+            ImGui::Checkbox("adaptive resolution", &view.adaptive.enabled);
+            ImGui::DragFloat("target", &view.adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f,
                              "%.0f ms/frame");
             ImGui::EndTabItem();
         }
@@ -806,7 +798,7 @@ void Viewer::drawInspector() {
 
 void Viewer::drawMaterialTextures(int material) {
     ImGui::TextDisabled("Material textures");
-    if (material < 0 || material >= int(document.scene().materials.size())) {
+    if (material < 0 || material >= int(session.document.scene().materials.size())) {
         ImGui::TextWrapped("The shape inherits its material: choose or create one above to give "
                            "it textures.");
         return;
@@ -818,7 +810,7 @@ void Viewer::drawMaterialTextures(int material) {
         // Refill the text from the scene when another material is shown or the file changed
         // by other means (undo, reload).
         const std::string& file =
-            (document.scene().materials[std::size_t(material)].*slot.member).file;
+            (session.document.scene().materials[std::size_t(material)].*slot.member).file;
         if (field.material != material || field.shownFile != file) {
             field.material = material;
             field.shownFile = file;
@@ -832,12 +824,13 @@ void Viewer::drawMaterialTextures(int material) {
                     "Enter or apply loads it; a file that does not load changes nothing.");
         ImGui::SameLine();
         if (ImGui::SmallButton("apply") || entered) {
-            Scene candidate = document.scene();
+            Scene candidate = session.document.scene();
             std::string error;
             if (editor::setMaterialTextureFile(candidate, material, slot.slot, field.text,
                                                diskFileSource(), error)) {
-                document.apply(field.text.empty() ? "Remove texture" : "Texture file",
-                               [&](Scene& scene, Selection&) { scene = std::move(candidate); });
+                session.document.apply(
+                    field.text.empty() ? "Remove texture" : "Texture file",
+                    [&](Scene& scene, Selection&) { scene = std::move(candidate); });
                 field.error.clear();
             } else {
                 field.error = error;
@@ -849,7 +842,7 @@ void Viewer::drawMaterialTextures(int material) {
             ImGui::PopStyleColor();
         }
         MaterialTexture& texture =
-            document.editScene().materials[std::size_t(material)].*slot.member;
+            session.document.editScene().materials[std::size_t(material)].*slot.member;
         if (texture.present()) {
             bool changed =
                 ImGui::DragFloat("scale", &texture.scale, 0.01f, 0.001f, 1e4f, "%.3f",
@@ -864,7 +857,7 @@ void Viewer::drawMaterialTextures(int material) {
                                             "%.2f", ImGuiSliderFlags_AlwaysClamp);
                 helpTooltip("Scales the normal map's bumps (0: flat).");
             }
-            if (changed) document.markChanged("Texture " + std::string(slot.label));
+            if (changed) session.document.markChanged("Texture " + std::string(slot.label));
         }
         ImGui::PopID();
     }
@@ -875,14 +868,14 @@ void Viewer::drawOverlay() {
                                    ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
-    if (showOverlay) {
+    if (view.showOverlay) {
         ImGui::SetNextWindowPos(ImVec2(layout.viewport.x + 8, layout.viewport.y + 8));
         ImGui::SetNextWindowBgAlpha(0.55f);
         ImGui::Begin("overlay", nullptr, fixed | ImGuiWindowFlags_NoInputs);
         const ViewStatus status = gpu.status();
         ImGui::Text("frame %.1f ms   render %.1f ms", frameMilliseconds, status.renderMilliseconds);
         ImGui::Text("render scale %.0f%% (%dx%d)%s", status.renderScale * 100.0f, status.width,
-                    status.height, adaptive.enabled ? "" : "  adaptive off");
+                    status.height, view.adaptive.enabled ? "" : "  adaptive off");
         const std::string_view map = editor::editingMapName(status.map);
         ImGui::Text(
             "SDF map: %.*s%s%s", int(map.size()), map.data(),
@@ -892,7 +885,7 @@ void Viewer::drawOverlay() {
             : status.buildingMaps     ? " (building better ones)"
                                       : "");
         const char* names[] = {"colour", "normals", "depth", "object id"};
-        ImGui::Text("view: %s   speed %.2f m/s", names[int(viewMode)], camera.speed);
+        ImGui::Text("view: %s   speed %.2f m/s", names[int(view.mode)], session.camera.speed);
         if (gesture.active) {
             const editor::TransformGesture& g = gesture.math;
             const char* what = g.kind == editor::GestureKind::Move     ? "Move"
@@ -913,13 +906,15 @@ void Viewer::drawOverlay() {
                                "%s %s: mouse drives it, X/Y/Z axis, click/Enter keeps, Esc cancels",
                                what, axis.c_str());
         }
-        const double t = now();
-        for (const auto& [text, when] : notices)
-            if (t - when < 4.0) ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", text.c_str());
+        const auto t = std::chrono::steady_clock::now();
+        for (const auto& [text, when] : messages.notices)
+            if (t - when < std::chrono::seconds(4))
+                ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", text.c_str());
         ImGui::End();
     }
     std::string errors;
-    for (const std::string* e : {&openError, &sceneError, &shaderError, &fileError})
+    for (const std::string* e :
+         {&messages.openError, &messages.sceneError, &messages.shaderError, &messages.fileError})
         if (!e->empty()) errors += (errors.empty() ? "" : "\n") + *e;
     if (!errors.empty()) {
         ImGui::SetNextWindowPos(
@@ -935,137 +930,10 @@ void Viewer::drawOverlay() {
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
         if (ImGui::SmallButton("dismiss")) {
-            openError.clear();
-            fileError.clear();
+            messages.openError.clear();
+            messages.fileError.clear();
         }
         ImGui::End();
-    }
-}
-
-void Viewer::drawModals() {
-    if (askRecover) {
-        ImGui::OpenPopup("Recover unsaved edits");
-        askRecover = false;
-    }
-    centerNextWindow();
-    if (ImGui::BeginPopupModal("Recover unsaved edits", nullptr,
-                               ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("Edits that were never saved were found in\n%s",
-                    offeredRecovery ? offeredRecovery->string().c_str() : "");
-        if (ImGui::Button("Recover")) {
-            Diagnostics diagnostics;
-            std::optional<Scene> recovered =
-                offeredRecovery ? editor::loadSceneForEditing(*offeredRecovery, diagnostics)
-                                : std::nullopt;
-            if (recovered) {
-                recovered->file = document.scene().file;
-                document.apply("Recover unsaved edits",
-                               [&](Scene& scene, editor::Selection&) { scene = *recovered; });
-                notice("recovered the unsaved edits; save to keep them");
-            } else {
-                fileError = "The recovery file does not load:\n" + diagnostics.format();
-            }
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Discard them")) {
-            editor::removeRecovery(document.file());
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
-    }
-
-    if (askClose) {
-        ImGui::OpenPopup("Unsaved changes");
-        askClose = false;
-    }
-    centerNextWindow();
-    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("The scene has unsaved changes.");
-        if (ImGui::Button("Save")) {
-            save();
-            if (!document.dirty()) {
-                if (afterDiscard == AfterDiscard::Quit)
-                    quitNow = true;
-                else
-                    newScene();
-            }
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Discard changes")) {
-            editor::removeRecovery(document.file());
-            if (afterDiscard == AfterDiscard::Quit)
-                quitNow = true;
-            else
-                newScene();
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
-            ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
-
-    if (askPath) {
-        ImGui::OpenPopup("File");
-        askPath = false;
-    }
-    centerNextWindow();
-    if (ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const char* what = pathPurpose == PathPurpose::Open     ? "Open scene file (.json):"
-                           : pathPurpose == PathPurpose::SaveAs ? "Save scene as (.json):"
-                                                                : "Add a glTF mesh (.gltf / .glb):";
-        ImGui::TextUnformatted(what);
-        if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-        ImGui::SetNextItemWidth(420);
-        const bool entered =
-            ImGui::InputText("##path", &pathBuffer, ImGuiInputTextFlags_EnterReturnsTrue);
-        if ((ImGui::Button("OK") || entered) && !pathBuffer.empty()) {
-            const std::filesystem::path path = pathBuffer;
-            if (pathPurpose == PathPurpose::Open) {
-                openFile(path);
-            } else if (pathPurpose == PathPurpose::SaveAs) {
-                saveAs(path);
-            } else {
-                std::error_code ec;
-                if (!std::filesystem::exists(path, ec)) {
-                    fileError = path.string() + ": no such file";
-                } else {
-                    document.apply("Add mesh", [&](Scene& scene, Selection& selection) {
-                        const int index = editor::addMesh(scene, std::filesystem::absolute(path));
-                        selection = Selection::mesh(index);
-                    });
-                }
-            }
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
-            ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
-
-    if (externalChangePending) {
-        ImGui::OpenPopup("Changed on disk");
-        externalChangePending = false;
-    }
-    centerNextWindow();
-    if (ImGui::BeginPopupModal("Changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("%s changed on disk, and you have unsaved edits.",
-                    document.file().string().c_str());
-        if (ImGui::Button("Reload (lose my edits)")) {
-            Diagnostics diagnostics;
-            if (std::optional<Scene> scene =
-                    editor::loadSceneForEditing(document.file(), diagnostics))
-                document.reloadFromDisk(*scene);
-            else
-                sceneError = diagnostics.format();
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Keep my edits")) ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
     }
 }
 
