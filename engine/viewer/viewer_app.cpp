@@ -1,7 +1,11 @@
 // `rmsc view`: the frame loop, the scene and shader files (see viewer_app.hpp); the GPU side is
 // view_renderer.hpp.
 #include "viewer_app.hpp"
+#include "document_edits.hpp"
 #include "editor/recovery.hpp"
+#include "hierarchy_panel.hpp"
+#include "menu_bar.hpp"
+#include "overlay.hpp"
 #include "screenshots.hpp"
 
 #include "core/exit_code.hpp"
@@ -80,6 +84,82 @@ void Viewer::screenshotToDefaultFile() {
         messages.notice("screenshot written: " + path.string());
     else
         messages.fileError = "Screenshot failed: " + error;
+}
+
+void Viewer::drawUi() {
+    ViewerCommands commands;
+    if (ImGui::BeginMainMenuBar()) {
+        drawMenus(session.document, view, commands);
+        carryOut(commands); // before the title, which shows whether the scene is saved
+        drawMenuBarTitle(session.document);
+        ImGui::EndMainMenuBar();
+    }
+    drawHierarchyPanel(session.document, layout, commands);
+    carryOut(commands);
+    drawInspectorPanel(session, inspector, view, layout, commands);
+    carryOut(commands);
+    drawStatusOverlay(layout.viewport, gpu.status(), frameMilliseconds, view, session.camera.speed,
+                      gesture.active ? &gesture.math : nullptr, messages);
+    drawProblems(layout.viewport, messages);
+    drawDialogs(dialogs, session, files, messages);
+}
+
+void Viewer::carryOut(ViewerCommands& commands) {
+    editor::Document& document = session.document;
+    for (const ViewerCommand command : commands) {
+        switch (command) {
+        case ViewerCommand::Undo:
+            document.undo();
+            break;
+        case ViewerCommand::Redo:
+            document.redo();
+            break;
+        case ViewerCommand::Duplicate:
+            duplicateSelection(document);
+            break;
+        case ViewerCommand::Delete:
+            deleteSelection(document);
+            break;
+        case ViewerCommand::NewScene:
+            if (document.dirty()) {
+                dialogs.askClose = true;
+                dialogs.afterDiscard = AfterDiscard::New;
+            } else {
+                newScene(session, files, messages);
+            }
+            break;
+        case ViewerCommand::Open:
+            dialogs.askForPath(PathPurpose::Open, document.file().string());
+            break;
+        case ViewerCommand::Save:
+            saveScene(session, files, messages, dialogs);
+            break;
+        case ViewerCommand::SaveAs:
+            dialogs.askForPath(PathPurpose::SaveAs,
+                               document.file().empty() ? "scene.json" : document.file().string());
+            break;
+        case ViewerCommand::AddMesh:
+            dialogs.askForPath(PathPurpose::AddMesh, "");
+            break;
+        case ViewerCommand::Screenshot:
+            screenshotToDefaultFile();
+            break;
+        case ViewerCommand::Quit:
+            dialogs.afterDiscard = AfterDiscard::Quit;
+            requestClose(dialogs, document);
+            break;
+        case ViewerCommand::FrameSelection:
+            frameSelection();
+            break;
+        case ViewerCommand::SaveCamera:
+            session.saveCameraToScene();
+            break;
+        case ViewerCommand::ResetCamera:
+            session.resetCamera();
+            break;
+        }
+    }
+    commands.clear();
 }
 
 void Viewer::pollFiles() {

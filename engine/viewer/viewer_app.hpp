@@ -16,6 +16,7 @@
 #include "editor_session.hpp"
 #include "imgui_platform.hpp"
 #include "input_state.hpp"
+#include "inspector.hpp"
 #include "messages.hpp"
 #include "panel_layout.hpp"
 #include "replay_script.hpp"
@@ -23,6 +24,7 @@
 #include "view_renderer.hpp"
 #include "view_settings.hpp"
 #include "viewer/viewer.hpp"
+#include "viewer_commands.hpp"
 #include "window.hpp"
 
 #include <array>
@@ -66,21 +68,10 @@ class Viewer {
         glm::vec2 lastMouse{0.0f};     // viewport pixels last applied
         bool needsApply = false;       // apply even if the mouse did not move (axis changed)
     } gesture;
-    // Inspector setting: positions shown in world coordinates, gesture axes are the world's
-    // (otherwise the object's own).
-    bool worldCoordinates = false;
     bool orbiting = false;
     bool looking = false;
 
-    // Inspector: the file fields of the selected material's textures, one per slot
-    // (editor/material_texture_edits.hpp); the file changes only when "apply" loads it.
-    struct TextureFileField {
-        int material = -1;     // the material the text belongs to
-        std::string shownFile; // the slot's file when the text was last filled from it
-        std::string text;      // the file name being typed
-        std::string error;     // why the last apply failed ("" = it did not)
-    };
-    std::array<TextureFileField, 3> textureFileFields;
+    InspectorState inspector;
 
     // Layout (window pixels)
     PanelLayout layout;
@@ -95,13 +86,9 @@ class Viewer {
     void screenshotToDefaultFile();
     void pollFiles();
 
-    // viewer_panels.cpp
-    void drawUi();
-    void drawMenuBar();
-    void drawHierarchy();
-    void drawInspector();
-    void drawMaterialTextures(int material); // the texture slots of scene.materials[material]
-    void drawOverlay();
+    void drawUi(); // the menus, panels, overlay and dialogs
+    // Carries out the commands the part that just ran queued, and clears them.
+    void carryOut(ViewerCommands& commands);
 
     // viewer_controls.cpp
     void handleShortcuts();

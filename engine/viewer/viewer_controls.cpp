@@ -155,7 +155,7 @@ void Viewer::startGesture() {
     editor::TransformGesture& g = gesture.math;
     g = {};
     g.kind = kind;
-    g.space = worldCoordinates ? editor::AxisSpace::World : editor::AxisSpace::Local;
+    g.space = inspector.worldCoordinates ? editor::AxisSpace::World : editor::AxisSpace::Local;
     g.start = *transform;
     if (selection.kind == editor::SelectionKind::Sdf)
         g.parentWorld = editor::sdfParentWorldMatrix(session.document.scene(), selection.sdfPath);
