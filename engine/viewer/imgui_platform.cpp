@@ -60,4 +60,9 @@ void feedImGui(const InputState& input, int windowWidth, int windowHeight, int f
         io.AddInputCharacter(c);
 }
 
+bool keyboardFree(const InputState& input) {
+    const ImGuiIO& io = ImGui::GetIO();
+    return !io.WantCaptureKeyboard && !io.WantTextInput && !input.ctrl();
+}
+
 } // namespace rmsc::app

@@ -12,5 +12,8 @@ void setupImGuiInput();
 // This frame's display size, time step, mouse, keys and characters.
 void feedImGui(const InputState& input, int windowWidth, int windowHeight, int framebufferWidth,
                int framebufferHeight, float seconds);
+// The panels do not want the keyboard and Ctrl is up: plain keys are the view's (camera,
+// gestures, F, Delete).
+bool keyboardFree(const InputState& input);
 
 } // namespace rmsc::app

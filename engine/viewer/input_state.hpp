@@ -5,6 +5,7 @@
 // exactly the same path.
 #pragma once
 
+#define GLFW_INCLUDE_NONE // GL comes from glad (gl/gl.hpp), whichever header is included first
 #include <GLFW/glfw3.h>
 #include <glm/glm.hpp>
 

@@ -1,18 +1,18 @@
-// Picking by clicking in the view: a ray from the eye through the clicked point, cast on the CPU
-// (editor/picking.hpp) at the newest scene that compiled.
+// Selecting by clicking in the view: a ray from the eye through the clicked point, cast on the
+// CPU (editor/picking.hpp) at the newest scene that compiled; the nearest object it meets is
+// selected, empty space clears the selection.
 #pragma once
 
-#include "editor/selection.hpp"
+#include "editor_session.hpp"
+#include "input_state.hpp"
 #include "panel_layout.hpp"
 #include "prepare/prepared_scene.hpp"
 
-#include <glm/glm.hpp>
-
 namespace rmsc::app {
 
-// The selection a click at window pixel `point` inside `viewport` makes, seen through `camera`:
-// the object the ray meets first, or none.
-editor::Selection pickAt(const PreparedScene& prepared, const Scene& scene, const Camera& camera,
-                         const Rect& viewport, glm::vec2 point);
+// A left click (without Alt, outside the panels, while no gesture runs) in `viewport` selects
+// what it hits in `prepared` (nothing happens while no scene has compiled).
+void handleViewportClick(const InputState& input, const Rect& viewport, bool gestureActive,
+                         const PreparedScene* prepared, EditorSession& session);
 
 } // namespace rmsc::app
