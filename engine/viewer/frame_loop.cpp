@@ -2,7 +2,6 @@
 #include "frame_loop.hpp"
 
 #include "core/exit_code.hpp"
-#include "document_edits.hpp"
 #include "editor/recovery.hpp"
 #include "editor/scene_edits.hpp"
 #include "hierarchy_panel.hpp"
@@ -139,64 +138,6 @@ void Viewer::drawUi() {
                       session_.camera.speed, gesture_.active ? &gesture_.math : nullptr, messages_);
     drawProblems(layout_.viewport, messages_);
     drawDialogs(dialogs_, session_, files_, messages_);
-}
-
-void Viewer::carryOut(ViewerCommands& commands) {
-    editor::Document& document = session_.document;
-    for (const ViewerCommand command : commands) {
-        switch (command) {
-        case ViewerCommand::Undo:
-            document.undo();
-            break;
-        case ViewerCommand::Redo:
-            document.redo();
-            break;
-        case ViewerCommand::Duplicate:
-            duplicateSelection(document);
-            break;
-        case ViewerCommand::Delete:
-            deleteSelection(document);
-            break;
-        case ViewerCommand::NewScene:
-            if (document.dirty()) {
-                dialogs_.askClose = true;
-                dialogs_.afterDiscard = AfterDiscard::New;
-            } else {
-                newScene(session_, files_, messages_);
-            }
-            break;
-        case ViewerCommand::Open:
-            dialogs_.askForPath(PathPurpose::Open, document.file().string());
-            break;
-        case ViewerCommand::Save:
-            saveScene(session_, files_, messages_, dialogs_);
-            break;
-        case ViewerCommand::SaveAs:
-            dialogs_.askForPath(PathPurpose::SaveAs,
-                                document.file().empty() ? "scene.json" : document.file().string());
-            break;
-        case ViewerCommand::AddMesh:
-            dialogs_.askForPath(PathPurpose::AddMesh, "");
-            break;
-        case ViewerCommand::Screenshot:
-            screenshotToDefaultFile();
-            break;
-        case ViewerCommand::Quit:
-            dialogs_.afterDiscard = AfterDiscard::Quit;
-            requestClose(dialogs_, document);
-            break;
-        case ViewerCommand::FrameSelection:
-            frameSelection(session_);
-            break;
-        case ViewerCommand::SaveCamera:
-            session_.saveCameraToScene();
-            break;
-        case ViewerCommand::ResetCamera:
-            session_.resetCamera();
-            break;
-        }
-    }
-    commands.clear();
 }
 
 void Viewer::commitFinishedEdits() {

@@ -1,7 +1,7 @@
 // What the menus, panels and shortcuts ask of the viewer beyond their own edits of the document
 // (those they make themselves): they queue commands while they draw or read the input, and the
 // frame loop carries them out in order right after the part that queued them, before the next
-// part runs (frame_loop.cpp).
+// part runs (Viewer::carryOut, viewer_commands.cpp).
 #pragma once
 
 #include <vector>
