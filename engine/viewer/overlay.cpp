@@ -54,7 +54,7 @@ void drawStatusOverlay(const Rect& viewport, const ViewStatus& status, float fra
                 status.newestScenePending ? " (the newest scene shows once its shaders are built)"
                 : status.buildingMaps     ? " (building better ones)"
                                           : "");
-    const char* names[] = {"colour", "normals", "depth", "object id"};
+    const char* names[] = {"colour", "normals", "depth", "object id", "march steps"};
     ImGui::Text("view: %s   speed %.2f m/s", names[int(view.mode)], flySpeed);
     if (gesture) drawGestureHint(*gesture);
     const auto t = std::chrono::steady_clock::now();
