@@ -1,5 +1,5 @@
 // GLFW window and GL 4.5 core context (see window.hpp).
-#include "viewer/window.hpp"
+#include "window.hpp"
 
 #include "gl/gl.hpp"
 

@@ -1,5 +1,5 @@
-// The viewer's display pass (see viewer_display.hpp).
-#include "viewer/viewer_display.hpp"
+// The viewer's display pass (see display_pass.hpp).
+#include "display_pass.hpp"
 
 namespace rmsc::app {
 

@@ -1,9 +1,11 @@
 // The viewer's input, in one place: the keys and buttons held, the mouse position, the wheel
 // and typed characters of this frame. Filled from GLFW callbacks when a person drives the
-// viewer, or from a replay script (viewer_script.hpp); then handed to Dear ImGui and to the
-// camera and editor shortcuts, so scripted and real input take exactly the same path.
+// viewer, or from a replay script (replay_script.hpp); then handed to Dear ImGui
+// (imgui_platform.hpp) and to the camera and editor shortcuts, so scripted and real input take
+// exactly the same path.
 #pragma once
 
+#define GLFW_INCLUDE_NONE // GL comes from glad (gl/gl.hpp), whichever header is included first
 #include <GLFW/glfw3.h>
 #include <glm/glm.hpp>
 
@@ -43,11 +45,5 @@ struct InputState {
 
 // Routes a window's GLFW input callbacks into `state` (real input).
 void attachGlfwInput(GLFWwindow* window, InputState* state);
-
-// Dear ImGui's platform side, from an InputState (instead of imgui_impl_glfw, which would read
-// the real devices): display size, time step, mouse, keys, characters. Also sets the key map.
-void setupImGuiInput();
-void feedImGui(const InputState& input, int windowWidth, int windowHeight, int framebufferWidth,
-               int framebufferHeight, float seconds);
 
 } // namespace rmsc::app

@@ -1,5 +1,5 @@
-// Replay scripts (see viewer_script.hpp).
-#include "viewer/viewer_script.hpp"
+// Replay scripts (see replay_script.hpp).
+#include "replay_script.hpp"
 
 #include <algorithm>
 #include <fstream>

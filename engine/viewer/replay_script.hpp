@@ -19,7 +19,7 @@
 // Frames count from 0; events of one frame run in file order before the frame is drawn.
 #pragma once
 
-#include "viewer/viewer_input.hpp"
+#include "input_state.hpp"
 
 #include <filesystem>
 #include <optional>

@@ -1,0 +1,26 @@
+// The fly camera's controls: W / A / S / D, Space and Left Shift fly (Shift with a movement key
+// is fast), Q / E roll, the right button held looks around, the wheel sets the speed, Alt + left
+// drag orbits around the selection; and framing the selection (F).
+#pragma once
+
+#include "editor_session.hpp"
+#include "input_state.hpp"
+#include "panel_layout.hpp"
+
+namespace rmsc::app {
+
+// The mouse drags that move the camera, from the frame they start in the view until the button
+// is released.
+struct CameraDrags {
+    bool looking = false;  // right button
+    bool orbiting = false; // Alt + left button
+};
+
+// One frame of camera movement; while `gestureActive` the keys belong to the gesture and no
+// drag starts.
+void handleCamera(const InputState& input, const Rect& viewport, bool gestureActive,
+                  CameraDrags& drags, EditorSession& session, float seconds);
+// Looks at the selection (or the whole SDF) so that it fills the view.
+void frameSelection(EditorSession& session);
+
+} // namespace rmsc::app

@@ -1,0 +1,178 @@
+// The modal dialogs, each a function of its own (see dialogs.hpp).
+#include "dialogs.hpp"
+
+#include "editor/recovery.hpp"
+#include "editor/scene_edits.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace rmsc::app {
+namespace {
+
+// Dialogs open in the middle of the window.
+void centerNextWindow() {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
+}
+
+// Opens popup `name` when `ask` is set (and clears it); then begins it when it is open.
+bool beginModal(const char* name, bool& ask) {
+    if (ask) {
+        ImGui::OpenPopup(name);
+        ask = false;
+    }
+    centerNextWindow();
+    return ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+}
+
+bool cancelled(const char* label) {
+    return ImGui::Button(label) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+}
+
+void drawRecoverDialog(Dialogs& dialogs, editor::Document& document, Messages& messages) {
+    if (!beginModal("Recover unsaved edits", dialogs.askRecover)) return;
+    ImGui::Text("Edits that were never saved were found in\n%s",
+                dialogs.offeredRecovery ? dialogs.offeredRecovery->string().c_str() : "");
+    if (ImGui::Button("Recover")) {
+        Diagnostics diagnostics;
+        std::optional<Scene> recovered =
+            dialogs.offeredRecovery
+                ? editor::loadSceneForEditing(*dialogs.offeredRecovery, diagnostics)
+                : std::nullopt;
+        if (recovered) {
+            recovered->file = document.scene().file;
+            document.apply("Recover unsaved edits",
+                           [&](Scene& scene, editor::Selection&) { scene = *recovered; });
+            messages.notice("recovered the unsaved edits; save to keep them");
+        } else {
+            messages.fileError = "The recovery file does not load:\n" + diagnostics.format();
+        }
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard them")) {
+        editor::removeRecovery(document.file());
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+// After the changes were saved or discarded: quit, or the new scene the user asked for.
+void goOnAfterDiscard(Dialogs& dialogs, EditorSession& session, SceneFiles& files,
+                      Messages& messages) {
+    if (dialogs.afterDiscard == AfterDiscard::Quit)
+        dialogs.quitNow = true;
+    else
+        newScene(session, files, messages);
+}
+
+void drawUnsavedChangesDialog(Dialogs& dialogs, EditorSession& session, SceneFiles& files,
+                              Messages& messages) {
+    if (!beginModal("Unsaved changes", dialogs.askClose)) return;
+    ImGui::Text("The scene has unsaved changes.");
+    if (ImGui::Button("Save")) {
+        saveScene(session, files, messages, dialogs);
+        if (!session.document.dirty()) goOnAfterDiscard(dialogs, session, files, messages);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard changes")) {
+        editor::removeRecovery(session.document.file());
+        goOnAfterDiscard(dialogs, session, files, messages);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (cancelled("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+// What the path dialog's OK does with the path.
+void usePath(const std::filesystem::path& path, PathPurpose purpose, EditorSession& session,
+             SceneFiles& files, Messages& messages) {
+    if (purpose == PathPurpose::Open) {
+        openSceneFile(path, session, files, messages);
+    } else if (purpose == PathPurpose::SaveAs) {
+        saveSceneAs(path, session.document, files, messages);
+    } else {
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) {
+            messages.fileError = path.string() + ": no such file";
+        } else {
+            session.document.apply("Add mesh", [&](Scene& scene, editor::Selection& selection) {
+                const int index = editor::addMesh(scene, std::filesystem::absolute(path));
+                selection = editor::Selection::mesh(index);
+            });
+        }
+    }
+}
+
+void drawPathDialog(Dialogs& dialogs, EditorSession& session, SceneFiles& files,
+                    Messages& messages) {
+    if (!beginModal("File", dialogs.askPath)) return;
+    const char* what = dialogs.pathPurpose == PathPurpose::Open ? "Open scene file (.json):"
+                       : dialogs.pathPurpose == PathPurpose::SaveAs
+                           ? "Save scene as (.json):"
+                           : "Add a glTF mesh (.gltf / .glb):";
+    ImGui::TextUnformatted(what);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(420);
+    const bool entered =
+        ImGui::InputText("##path", &dialogs.pathBuffer, ImGuiInputTextFlags_EnterReturnsTrue);
+    if ((ImGui::Button("OK") || entered) && !dialogs.pathBuffer.empty()) {
+        usePath(dialogs.pathBuffer, dialogs.pathPurpose, session, files, messages);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (cancelled("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+void drawChangedOnDiskDialog(Dialogs& dialogs, editor::Document& document, Messages& messages) {
+    if (!beginModal("Changed on disk", dialogs.askReload)) return;
+    ImGui::Text("%s changed on disk, and you have unsaved edits.",
+                document.file().string().c_str());
+    if (ImGui::Button("Reload (lose my edits)")) {
+        Diagnostics diagnostics;
+        if (std::optional<Scene> scene = editor::loadSceneForEditing(document.file(), diagnostics))
+            document.reloadFromDisk(*scene);
+        else
+            messages.sceneError = diagnostics.format();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Keep my edits")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+} // namespace
+
+void Dialogs::askForPath(PathPurpose purpose, std::string initial) {
+    askPath = true;
+    pathPurpose = purpose;
+    pathBuffer = std::move(initial);
+}
+
+void requestClose(Dialogs& dialogs, const editor::Document& document) {
+    if (document.dirty())
+        dialogs.askClose = true;
+    else
+        dialogs.quitNow = true;
+}
+
+void saveScene(EditorSession& session, SceneFiles& files, Messages& messages, Dialogs& dialogs) {
+    if (session.document.file().empty())
+        dialogs.askForPath(PathPurpose::SaveAs, "scene.json");
+    else
+        saveSceneAs(session.document.file(), session.document, files, messages);
+}
+
+void drawDialogs(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Messages& messages) {
+    drawRecoverDialog(dialogs, session.document, messages);
+    drawUnsavedChangesDialog(dialogs, session, files, messages);
+    drawPathDialog(dialogs, session, files, messages);
+    drawChangedOnDiskDialog(dialogs, session.document, messages);
+}
+
+} // namespace rmsc::app

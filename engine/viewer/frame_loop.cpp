@@ -1,0 +1,235 @@
+// The viewer's frame loop and what it ties together (see frame_loop.hpp).
+#include "frame_loop.hpp"
+
+#include "core/exit_code.hpp"
+#include "editor/recovery.hpp"
+#include "editor/scene_edits.hpp"
+#include "hierarchy_panel.hpp"
+#include "imgui_platform.hpp"
+#include "menu_bar.hpp"
+#include "overlay.hpp"
+#include "render/shader_library.hpp"
+#include "screenshots.hpp"
+#include "shortcuts.hpp"
+#include "viewport_pick.hpp"
+
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace rmsc::app {
+
+Viewer::Viewer(const ViewerOptions& options, std::unique_ptr<Window> window,
+               std::optional<Script> script)
+    : options_(options), window_(std::move(window)), script_(std::move(script)),
+      start_(std::chrono::steady_clock::now()) {
+    view_.adaptive.targetMilliseconds = options_.targetMilliseconds;
+    openStartScene(options_.scene, session_, files_, messages_);
+    dialogs_.offeredRecovery = editor::findRecovery(session_.document.file());
+}
+
+Viewer::~Viewer() = default;
+
+double Viewer::now() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+int Viewer::run() {
+    if (!loadShaders(true)) {
+        std::fprintf(stderr, "rmsc view: %s\n", messages_.shaderError.c_str());
+        return kExitSystem;
+    }
+    if (!script_) attachGlfwInput(window_->handle(), &input_);
+    // Scripted runs (tests) never see a recovery prompt, so they replay the same everywhere.
+    dialogs_.askRecover = dialogs_.offeredRecovery.has_value() && !script_;
+    int failures = 0;
+    auto previous = std::chrono::steady_clock::now();
+    while (!dialogs_.quitNow) {
+        const auto frameStart = std::chrono::steady_clock::now();
+        const ScriptActions actions = readInput();
+        const auto nowTime = std::chrono::steady_clock::now();
+        const float seconds =
+            script_ ? 1.0f / 30.0f
+                    : std::min(0.1f, std::chrono::duration<float>(nowTime - previous).count());
+        previous = nowTime;
+
+        int ww = 0, wh = 0, fw = 0, fh = 0;
+        window_->windowSize(ww, wh);
+        window_->framebufferSize(fw, fh);
+        feedImGui(input_, ww, wh, fw, fh, seconds);
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui::NewFrame();
+        layout_ = layoutPanels(ww, wh, ImGui::GetFrameHeight());
+
+        handleInput(seconds);
+        drawUi();
+        commitFinishedEdits();
+        pollFiles();
+        updateView(actions.waitShaders);
+
+        ImGui::Render();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fw, fh);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        failures += writeScriptShots(actions);
+        if (actions.quit) requestClose(dialogs_, session_.document);
+        window_->swapBuffers();
+        frameMilliseconds_ =
+            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - frameStart)
+                .count();
+        ++frameNumber_;
+        if (script_ && !dialogs_.quitNow && frameNumber_ > script_->lastFrame() + 30) {
+            std::fprintf(stderr, "rmsc view: the script ended without the viewer quitting%s\n",
+                         session_.document.dirty() ? " (unsaved changes)" : "");
+            return kExitSystem;
+        }
+    }
+    if (!session_.document.dirty())
+        editor::removeRecovery(session_.document.file()); // closed cleanly
+    return failures ? kExitSystem : kExitOk;
+}
+
+ScriptActions Viewer::readInput() {
+    input_.beginFrame();
+    ScriptActions actions;
+    if (script_) {
+        glfwPollEvents();
+        actions = playScriptFrame(*script_, frameNumber_, input_);
+    } else if (gpu_.refined(view_.adaptive) && !ImGui::IsAnyItemActive() && !gesture_.active) {
+        glfwWaitEventsTimeout(0.25); // idle: wake for input or the file poll
+    } else {
+        glfwPollEvents();
+    }
+    input_.finishEvents();
+    if (window_->shouldClose()) {
+        window_->setShouldClose(false);
+        requestClose(dialogs_, session_.document);
+    }
+    return actions;
+}
+
+void Viewer::handleInput(float seconds) {
+    ViewerCommands commands;
+    handleShortcuts(input_, gesture_, commands);
+    carryOut(commands);
+    // Before the camera, so the S of "scale" does not also fly back.
+    startGesture(gesture_, input_, session_, layout_.viewport, inspector_.worldCoordinates);
+    handleCamera(input_, layout_.viewport, gesture_.active, cameraDrags_, session_, seconds);
+    handleViewportClick(input_, layout_.viewport, gesture_.active, gpu_.newestScene(), session_);
+    updateGesture(gesture_, input_, session_.document, layout_.viewport);
+}
+
+void Viewer::drawUi() {
+    ViewerCommands commands;
+    if (ImGui::BeginMainMenuBar()) {
+        drawMenus(session_.document, view_, commands);
+        carryOut(commands); // before the title, which shows whether the scene is saved
+        drawMenuBarTitle(session_.document);
+        ImGui::EndMainMenuBar();
+    }
+    drawHierarchyPanel(session_.document, layout_, commands);
+    carryOut(commands);
+    drawInspectorPanel(session_, inspector_, view_, layout_, commands);
+    carryOut(commands);
+    drawStatusOverlay(layout_.viewport, gpu_.status(), frameMilliseconds_, view_,
+                      session_.camera.speed, gesture_.active ? &gesture_.math : nullptr, messages_);
+    drawProblems(layout_.viewport, messages_);
+    drawDialogs(dialogs_, session_, files_, messages_);
+}
+
+void Viewer::commitFinishedEdits() {
+    editor::Document& document = session_.document;
+    if (!ImGui::IsAnyItemActive() && !gesture_.active && document.hasPendingChange())
+        document.commit();
+    if (!editor::selectionValid(document.scene(), document.selection))
+        document.selection = editor::Selection::none();
+}
+
+void Viewer::pollFiles() {
+    const double t = now();
+    if (t - lastPoll_ < 1.0) return;
+    lastPoll_ = t;
+    writeRecoveryFile(session_.document, files_, messages_, t);
+    if (reloadChangedSceneFile(session_, files_, messages_)) dialogs_.askReload = true;
+    if (!shaderWatcher_.path().empty() && shaderWatcher_.changed()) loadShaders(false);
+}
+
+void Viewer::updateView(bool waitForBuilds) {
+    const editor::Document& document = session_.document;
+    gpu_.updateScene(document.scene(), document.revision(), messages_.sceneError);
+    gpu_.chooseSdfMap(document.scene(), document.selection, waitForBuilds, frameNumber_,
+                      messages_.sceneError);
+    int ww = 0, wh = 0, fw = 0, fh = 0;
+    window_->windowSize(ww, wh);
+    window_->framebufferSize(fw, fh);
+    gpu_.render(viewInput(), viewportPixels(layout_.viewport, ww, wh, fw, fh), view_.adaptive);
+}
+
+int Viewer::writeScriptShots(const ScriptActions& actions) {
+    int failures = 0;
+    for (const std::string& path : actions.screenshots) {
+        std::string error;
+        if (!writeViewShot(gpu_, viewInput(), layout_.viewport, *window_, path, error)) {
+            std::fprintf(stderr, "rmsc view: screenshot %s: %s\n", path.c_str(), error.c_str());
+            ++failures;
+        }
+    }
+    for (const std::string& path : actions.windowShots) {
+        std::string error;
+        if (!writeWindowShot(*window_, path, error)) {
+            std::fprintf(stderr, "rmsc view: window-shot %s: %s\n", path.c_str(), error.c_str());
+            ++failures;
+        }
+    }
+    return failures;
+}
+
+bool Viewer::loadShaders(bool initial) {
+    ShaderFiles shaders = embeddedShaderFiles();
+#ifdef RMSC_SOURCE_DIR
+    const std::filesystem::path sourceShaders = std::filesystem::path(RMSC_SOURCE_DIR) / "shaders";
+    std::error_code ec;
+    if (options_.watchShaders && std::filesystem::is_directory(sourceShaders, ec)) {
+        shaders.overrideDirectory = sourceShaders.string();
+        if (initial) shaderWatcher_ = editor::FileWatcher(sourceShaders);
+    }
+#endif
+    std::string error;
+    if (gpu_.useShaders(shaders, error)) {
+        if (!initial) messages_.notice("shaders reloaded");
+        messages_.shaderError.clear();
+        return true;
+    }
+    messages_.shaderError = "Shader error (the previous shaders stay in use):\n" + error;
+    std::fprintf(stderr, "rmsc view: %s\n", messages_.shaderError.c_str());
+    // The shaders on disk are broken: start with the embedded ones.
+    if (initial && !shaders.overrideDirectory.empty() &&
+        gpu_.useShaders(embeddedShaderFiles(), error))
+        return true;
+    return gpu_.hasShaders();
+}
+
+ViewInput Viewer::viewInput() const {
+    const editor::Document& document = session_.document;
+    ViewInput shown;
+    shown.camera = session_.viewCamera();
+    shown.scene = &document.scene();
+    shown.revision = document.revision();
+    shown.selected = editor::objectIdRange(document.scene(), document.selection);
+    shown.mode = view_.mode;
+    return shown;
+}
+
+void Viewer::screenshotToDefaultFile() {
+    const std::filesystem::path path = defaultScreenshotPath(session_.document.file());
+    std::string error;
+    if (writeViewShot(gpu_, viewInput(), layout_.viewport, *window_, path.string(), error))
+        messages_.notice("screenshot written: " + path.string());
+    else
+        messages_.fileError = "Screenshot failed: " + error;
+}
+
+} // namespace rmsc::app

@@ -1,0 +1,79 @@
+// The viewer (`rmsc view`, started by runViewer in viewer/viewer.hpp): owns the window and the
+// parts, and runs the frame loop. A frame reads the input (real or replayed), runs the shortcuts,
+// gestures and camera, draws the menus, panels, overlay and dialogs (carrying out the commands
+// each queues right after it), commits finished edits, looks at the files, hands the scene to
+// the GPU side and draws the view; then writes the screenshots a replay script asks for.
+#pragma once
+
+#include "camera_controls.hpp"
+#include "dialogs.hpp"
+#include "editor/file_watcher.hpp"
+#include "editor_session.hpp"
+#include "gesture_controls.hpp"
+#include "input_state.hpp"
+#include "inspector.hpp"
+#include "messages.hpp"
+#include "panel_layout.hpp"
+#include "replay_script.hpp"
+#include "scene_files.hpp"
+#include "view_renderer.hpp"
+#include "view_settings.hpp"
+#include "viewer/viewer.hpp"
+#include "viewer_commands.hpp"
+#include "window.hpp"
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+namespace rmsc::app {
+
+class Viewer {
+  public:
+    // `script`: the replay script to play instead of the keyboard and mouse, if any.
+    Viewer(const ViewerOptions& options, std::unique_ptr<Window> window,
+           std::optional<Script> script);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    int run(); // the frame loop; returns the exit code
+
+  private:
+    ScriptActions readInput();       // this frame's events, and a script's other actions
+    void handleInput(float seconds); // shortcuts, gestures, camera, click to select
+    void drawUi();                   // the menus, panels, overlay and dialogs
+    // Carries out the commands the part that just ran queued, and clears them.
+    void carryOut(ViewerCommands& commands);
+    void commitFinishedEdits();          // once no widget or gesture is changing the scene
+    void pollFiles();                    // recovery file, scene file and shaders, every second
+    void updateView(bool waitForBuilds); // the scene to the GPU, the SDF map, the view
+    int writeScriptShots(const ScriptActions& actions); // returns how many failed
+    bool loadShaders(bool initial);
+    ViewInput viewInput() const; // what the view shows this frame
+    void screenshotToDefaultFile();
+    double now() const; // seconds since the start
+
+    const ViewerOptions options_;
+    std::unique_ptr<Window> window_;
+    std::optional<Script> script_;
+    InputState input_;
+    int frameNumber_ = 0;
+    float frameMilliseconds_ = 0.0f;
+    std::chrono::steady_clock::time_point start_;
+    double lastPoll_ = 0.0; // when the files were last looked at
+
+    EditorSession session_; // the document and the view's camera
+    SceneFiles files_;
+    editor::FileWatcher shaderWatcher_; // the source tree's shaders, when they are read from it
+    Messages messages_;
+    Dialogs dialogs_;
+    PanelLayout layout_;
+    InspectorState inspector_;
+    ViewSettings view_;
+    ViewportGesture gesture_;
+    CameraDrags cameraDrags_;
+    ViewRenderer gpu_; // after window_: goes first, while its context exists
+};
+
+} // namespace rmsc::app

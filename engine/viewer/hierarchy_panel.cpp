@@ -1,0 +1,199 @@
+// The Scene panel (see hierarchy_panel.hpp). Drags found while drawing are applied once the
+// list they belong to is drawn, not mid-traversal.
+#include "hierarchy_panel.hpp"
+
+#include "document_edits.hpp"
+#include "editor/scene_edits.hpp"
+#include "operation_labels.hpp"
+
+#include <imgui.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rmsc::app {
+namespace {
+
+using editor::Selection;
+using editor::SelectionKind;
+
+constexpr const char* kNodePayload = "RMSC_SDF_NODE";
+constexpr const char* kMeshPayload = "RMSC_MESH";   // an int: the mesh instance's index
+constexpr const char* kLightPayload = "RMSC_LIGHT"; // an int: the light's index
+
+std::string pathId(const std::vector<int>& path) {
+    std::string id = "r";
+    for (int i : path)
+        id += "." + std::to_string(i);
+    return id;
+}
+
+void drawAddButtons(editor::Document& document, ViewerCommands& commands) {
+    if (ImGui::Button("+ Shape")) ImGui::OpenPopup("add shape");
+    if (ImGui::BeginPopup("add shape")) {
+        for (const PrimitiveSpec& spec : primitiveCatalogue())
+            if (ImGui::Selectable(std::string(spec.name).c_str())) addShape(document, spec);
+        ImGui::EndPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("+ Group")) ImGui::OpenPopup("add group");
+    if (ImGui::BeginPopup("add group")) {
+        for (const OpName& op : kOps)
+            if (ImGui::Selectable(op.label)) addGroup(document, op.op);
+        ImGui::EndPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("+ Light")) addLight(document);
+    ImGui::SameLine();
+    if (ImGui::Button("+ Mesh")) commands.push_back(ViewerCommand::AddMesh);
+}
+
+// A node dropped onto another: into a group (last), or before a shape.
+struct PendingMove {
+    std::vector<int> from, into;
+    int index = -1;
+};
+
+// One node of the SDF tree at `path`, and its children when it is an open group.
+void drawSdfNode(const SdfNode& node, std::vector<int>& path, Selection& selection,
+                 std::optional<PendingMove>& move) {
+    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth |
+                               ImGuiTreeNodeFlags_DefaultOpen |
+                               ImGuiTreeNodeFlags_OpenOnDoubleClick;
+    if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+    if (selection == Selection::sdf(path)) flags |= ImGuiTreeNodeFlags_Selected;
+    const std::string label =
+        (node.isGroup ? std::string("[") + opLabel(node.op) + "] " : std::string()) +
+        editor::displayName(node) + "##" + pathId(path);
+    const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
+    if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selection = Selection::sdf(path);
+    if (!path.empty() && ImGui::BeginDragDropSource()) {
+        ImGui::SetDragDropPayload(kNodePayload, path.data(), path.size() * sizeof(int));
+        ImGui::TextUnformatted(editor::displayName(node).c_str());
+        ImGui::EndDragDropSource();
+    }
+    if (ImGui::BeginDragDropTarget()) {
+        if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kNodePayload)) {
+            const int* data = static_cast<const int*>(payload->Data);
+            std::vector<int> from(data, data + payload->DataSize / int(sizeof(int)));
+            if (node.isGroup)
+                move = PendingMove{from, path, -1}; // into the group, last
+            else
+                move =
+                    PendingMove{from, std::vector<int>(path.begin(), path.end() - 1), path.back()};
+        }
+        ImGui::EndDragDropTarget();
+    }
+    if (node.isGroup && open) {
+        for (std::size_t i = 0; i < node.children.size(); ++i) {
+            path.push_back(int(i));
+            drawSdfNode(node.children[i], path, selection, move);
+            path.pop_back();
+        }
+        ImGui::TreePop();
+    }
+}
+
+void drawSdfTree(editor::Document& document) {
+    std::optional<PendingMove> move;
+    const Scene& scene = document.scene();
+    ImGui::TextDisabled("SDF objects");
+    if (scene.sdf) {
+        std::vector<int> path;
+        drawSdfNode(*scene.sdf, path, document.selection, move);
+    } else {
+        ImGui::TextDisabled("  (none: add a shape)");
+    }
+    if (move) {
+        const PendingMove m = *move;
+        document.apply("Reorder", [m](Scene& s, Selection& selection) {
+            if (auto to = editor::moveSdfNode(s, m.from, m.into, m.index))
+                selection = Selection::sdf(*to);
+        });
+    }
+}
+
+// A mesh or a light dropped onto another of its list.
+struct PendingReorder {
+    SelectionKind kind = SelectionKind::Mesh;
+    int from = -1, to = -1;
+};
+
+// One row of the mesh or light list: selects on click, drags onto another row of its list.
+void drawListItem(const std::string& name, SelectionKind kind, int index, const char* payloadType,
+                  Selection& selection, std::optional<PendingReorder>& reorder) {
+    const Selection itemSelection =
+        kind == SelectionKind::Mesh ? Selection::mesh(index) : Selection::light(index);
+    const std::string label = name + "##" + payloadType + std::to_string(index);
+    if (ImGui::Selectable(label.c_str(), selection == itemSelection)) selection = itemSelection;
+    if (ImGui::BeginDragDropSource()) {
+        ImGui::SetDragDropPayload(payloadType, &index, sizeof(index));
+        ImGui::TextUnformatted(name.c_str());
+        ImGui::EndDragDropSource();
+    }
+    if (ImGui::BeginDragDropTarget()) {
+        if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(payloadType))
+            reorder = PendingReorder{kind, *static_cast<const int*>(payload->Data), index};
+        ImGui::EndDragDropTarget();
+    }
+}
+
+// Meshes and lights: drag one onto another of its list to put it in that place.
+void drawMeshAndLightLists(editor::Document& document) {
+    std::optional<PendingReorder> reorder;
+    const Scene& scene = document.scene();
+    ImGui::Spacing();
+    ImGui::TextDisabled("Meshes");
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i)
+        drawListItem(scene.meshes[i].name.empty() ? scene.meshes[i].file : scene.meshes[i].name,
+                     SelectionKind::Mesh, int(i), kMeshPayload, document.selection, reorder);
+    ImGui::Spacing();
+    ImGui::TextDisabled("Lights");
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        drawListItem(scene.lights[i].name.empty() ? "light " + std::to_string(i + 1)
+                                                  : scene.lights[i].name,
+                     SelectionKind::Light, int(i), kLightPayload, document.selection, reorder);
+    if (reorder && reorder->from != reorder->to) {
+        const PendingReorder r = *reorder;
+        document.apply(r.kind == SelectionKind::Mesh ? "Reorder meshes" : "Reorder lights",
+                       [r](Scene& s, Selection& selection) {
+                           if (r.kind == SelectionKind::Mesh) {
+                               if (const int to = editor::moveMesh(s, r.from, r.to); to >= 0)
+                                   selection = Selection::mesh(to);
+                           } else if (const int to = editor::moveLight(s, r.from, r.to); to >= 0) {
+                               selection = Selection::light(to);
+                           }
+                       });
+    }
+}
+
+void drawHierarchyHelp() {
+    ImGui::Spacing();
+    ImGui::Separator();
+    ImGui::TextDisabled("Drag nodes onto a group to reparent,\nonto a shape to place before it;\n"
+                        "drag a mesh or light onto another\nto put it in its place.\n"
+                        "Click in the view to select;\nG moves, R rotates, S scales\n"
+                        "(X/Y/Z: axis), F frames.\n"
+                        "Right mouse + WASD flies;\nAlt + drag orbits.");
+}
+
+} // namespace
+
+void drawHierarchyPanel(editor::Document& document, const PanelLayout& layout,
+                        ViewerCommands& commands) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(0, top));
+    ImGui::SetNextWindowSize(ImVec2(layout.leftPanelWidth, io.DisplaySize.y - top));
+    ImGui::Begin("Scene", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    drawAddButtons(document, commands);
+    ImGui::Separator();
+    drawSdfTree(document);
+    drawMeshAndLightLists(document);
+    drawHierarchyHelp();
+    ImGui::End();
+}
+
+} // namespace rmsc::app

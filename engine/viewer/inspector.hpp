@@ -1,0 +1,62 @@
+// The Inspector panel (right). The Object tab shows what is selected: an SDF node (its shape or
+// group operation, material, modifiers, shell and textures), a mesh instance or a light; the
+// Render tab the render settings, the camera and the view. Each kind has a file and a function
+// of its own (inspector_*.cpp) that takes what it edits. Widgets edit the document's scene in
+// place and mark it changed; the frame loop commits one undo step once no widget is active.
+#pragma once
+
+#include "editor/document.hpp"
+#include "editor_session.hpp"
+#include "panel_layout.hpp"
+#include "view_settings.hpp"
+#include "viewer_commands.hpp"
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rmsc::app {
+
+// The file field of one texture slot of the selected material (editor/material_texture_edits.hpp);
+// the slot's file changes only when "apply" loads what was typed.
+struct TextureFileField {
+    int material = -1;     // the material the text belongs to
+    std::string shownFile; // the slot's file when the text was last filled from it
+    std::string text;      // the file name being typed
+    std::string error;     // why the last apply failed ("" = it did not)
+};
+using TextureFileFields = std::array<TextureFileField, 3>; // one per slot
+
+struct InspectorState {
+    // Positions shown in world coordinates, and gesture axes the world's (otherwise the
+    // object's own).
+    bool worldCoordinates = false;
+    TextureFileFields textureFiles;
+};
+
+void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSettings& view,
+                        const PanelLayout& layout, ViewerCommands& commands);
+
+// The Object tab, by the kind of the selection.
+void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& path,
+                          InspectorState& state, ViewerCommands& commands);
+void drawMeshInspector(editor::Document& document, int mesh, bool& worldCoordinates,
+                       ViewerCommands& commands);
+void drawLightInspector(editor::Document& document, int light, ViewerCommands& commands);
+
+// Parts of an SDF node's inspector; each returns true when it changed the node.
+bool editModifiers(SdfNode& node, float size); // lengths drag in steps that follow `size`
+bool editShell(SdfNode& node, const std::filesystem::path& sceneFolder);
+
+// Materials: the choice (-1 is "inherit" for SDF nodes, "the glTF's own" for meshes) with the
+// chosen material's fields; returns true on change. And the chosen material's texture files.
+bool chooseMaterial(Scene& scene, int& material, const char* noneLabel);
+void drawMaterialTextures(editor::Document& document, int material, TextureFileFields& fields);
+
+// The Render tab.
+void drawRenderSettingsInspector(editor::Document& document);
+void drawCameraInspector(EditorSession& session);
+void drawViewInspector(ViewSettings& view);
+
+} // namespace rmsc::app

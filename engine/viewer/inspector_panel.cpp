@@ -1,0 +1,63 @@
+// The Inspector panel's window and tabs; each kind of thing it shows has its own function
+// (see inspector.hpp).
+#include "inspector.hpp"
+
+#include <imgui.h>
+
+namespace rmsc::app {
+namespace {
+
+void drawObjectTab(EditorSession& session, InspectorState& state, ViewerCommands& commands) {
+    const editor::Selection selection = session.document.selection;
+    switch (selection.kind) {
+    case editor::SelectionKind::Sdf:
+        drawSdfNodeInspector(session.document, selection.sdfPath, state, commands);
+        break;
+    case editor::SelectionKind::Mesh:
+        drawMeshInspector(session.document, selection.index, state.worldCoordinates, commands);
+        break;
+    case editor::SelectionKind::Light:
+        drawLightInspector(session.document, selection.index, commands);
+        break;
+    case editor::SelectionKind::None:
+        ImGui::TextWrapped("Nothing selected. Click an object in the view or in the Scene "
+                           "panel, or add one with the + buttons.");
+        break;
+    }
+}
+
+void drawRenderTab(EditorSession& session, ViewSettings& view) {
+    drawRenderSettingsInspector(session.document);
+    ImGui::Separator();
+    drawCameraInspector(session);
+    ImGui::Separator();
+    drawViewInspector(view);
+}
+
+} // namespace
+
+void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSettings& view,
+                        const PanelLayout& layout, ViewerCommands& commands) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float top = ImGui::GetFrameHeight();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - layout.rightPanelWidth, top));
+    ImGui::SetNextWindowSize(ImVec2(layout.rightPanelWidth, io.DisplaySize.y - top));
+    ImGui::Begin("Inspector", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-90);
+    if (ImGui::BeginTabBar("inspector tabs")) {
+        if (ImGui::BeginTabItem("Object")) {
+            drawObjectTab(session, state, commands);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Render")) {
+            drawRenderTab(session, view);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+} // namespace rmsc::app

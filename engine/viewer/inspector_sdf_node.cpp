@@ -1,0 +1,128 @@
+// The inspector for an SDF node: name, transform, the group's operation or the shape's type and
+// parameters (with the catalogue's ranges), material, modifiers, shell and material textures
+// (see inspector.hpp).
+#include "inspector.hpp"
+
+#include "editor/scene_edits.hpp"
+#include "operation_labels.hpp"
+#include "panel_widgets.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace rmsc::app {
+namespace {
+
+// A group's operation and, for the smooth ones, its smoothness; `size` is the group's.
+void drawGroupFields(SdfNode& node, float size, editor::Document& document) {
+    ImGui::TextDisabled("Group");
+    if (ImGui::BeginCombo("operation", opLabel(node.op))) {
+        for (const OpName& op : kOps) {
+            if (ImGui::Selectable(op.label, node.op == op.op)) {
+                node.op = op.op;
+                if (isSmooth(op.op) && node.smoothness <= 0.0f) node.smoothness = size * 0.1f;
+                document.markChanged("Operation");
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (isSmooth(node.op) &&
+        ImGui::DragFloat("smoothness", &node.smoothness, stepFor(size) * 0.5f, 0.0f, size * 4.0f,
+                         "%.4f", ImGuiSliderFlags_AlwaysClamp))
+        document.markChanged("Smoothness");
+    helpTooltip("Blend distance of the smooth operation, in world units; the drag "
+                "step follows the group's size.");
+}
+
+// Makes the shape `other`; parameters of the same name keep their values.
+void changeShape(SdfNode& node, const PrimitiveSpec& spec, const PrimitiveSpec& other) {
+    PrimitiveParams params = defaultParams(other);
+    for (int i = 0; i < int(other.params.size()); ++i)
+        for (int j = 0; j < int(spec.params.size()); ++j)
+            if (other.params[std::size_t(i)].name == spec.params[std::size_t(j)].name &&
+                other.params[std::size_t(i)].components == spec.params[std::size_t(j)].components)
+                for (int c = 0; c < other.params[std::size_t(i)].components; ++c)
+                    params[std::size_t(paramOffset(other, i) + c)] =
+                        node.params[std::size_t(paramOffset(spec, j) + c)];
+    if (node.name == spec.name) node.name = std::string(other.name);
+    node.primitive = other.id;
+    node.params = params;
+}
+
+// The shape's type (every primitive of the catalogue) and its parameters.
+void drawShapeFields(SdfNode& node, editor::Document& document) {
+    ImGui::TextDisabled("Shape");
+    const PrimitiveSpec& spec = primitiveSpec(node.primitive);
+    if (ImGui::BeginCombo("shape", std::string(spec.name).c_str())) {
+        for (const PrimitiveSpec& other : primitiveCatalogue()) {
+            if (ImGui::Selectable(std::string(other.name).c_str(), other.id == spec.id) &&
+                other.id != spec.id) {
+                changeShape(node, spec, other);
+                document.markChanged("Shape type");
+            }
+            helpTooltip(other.description);
+        }
+        ImGui::EndCombo();
+    }
+    helpTooltip(spec.description);
+    const PrimitiveSpec& now = primitiveSpec(node.primitive);
+    for (int i = 0; i < int(now.params.size()); ++i) {
+        const ParamSpec& p = now.params[std::size_t(i)];
+        float* value = &node.params[std::size_t(paramOffset(now, i))];
+        const std::string name(p.name);
+        float magnitude = 0.0f;
+        for (int c = 0; c < p.components; ++c)
+            magnitude = std::max(magnitude, std::abs(value[c]));
+        const float step = stepFor(std::max(magnitude, 0.1f));
+        const bool edited =
+            p.components == 3 ? ImGui::DragFloat3(name.c_str(), value, step, p.minValue, p.maxValue,
+                                                  "%.3f", ImGuiSliderFlags_AlwaysClamp)
+                              : ImGui::DragFloat(name.c_str(), value, step, p.minValue, p.maxValue,
+                                                 "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        if (edited) document.markChanged("Edit " + name);
+        helpTooltip(p.description);
+    }
+}
+
+} // namespace
+
+void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& path,
+                          InspectorState& state, ViewerCommands& commands) {
+    Scene& scene = document.editScene();
+    SdfNode* node = editor::findSdfNode(scene, path);
+    const std::optional<editor::Bounds> bounds =
+        editor::selectionBounds(scene, editor::Selection::sdf(path));
+    const float size = bounds ? bounds->radius : 1.0f;
+    if (ImGui::InputText("name", &node->name)) document.markChanged("Rename");
+    ImGui::Checkbox("world coordinates", &state.worldCoordinates);
+    helpTooltip("Position in world coordinates; R / G with X, Y or Z use the world's "
+                "axes. Off: the position in the parent group and the object's own "
+                "axes.");
+    ImGui::Separator();
+    ImGui::TextDisabled("Transform");
+    if (editTransform(node->transform, state.worldCoordinates,
+                      editor::sdfParentWorldMatrix(scene, path), size))
+        document.markChanged("Transform");
+    ImGui::Separator();
+    if (node->isGroup)
+        drawGroupFields(*node, size, document);
+    else
+        drawShapeFields(*node, document);
+    ImGui::Separator();
+    ImGui::TextDisabled("Material");
+    if (chooseMaterial(scene, node->material, "(inherit)")) document.markChanged("Material");
+    ImGui::Separator();
+    if (editModifiers(*node, size)) document.markChanged("Modifiers");
+    ImGui::Separator();
+    if (editShell(*node, scene.file.parent_path())) document.markChanged("Shell");
+    ImGui::Separator();
+    drawMaterialTextures(document, node->material, state.textureFiles);
+    ImGui::Spacing();
+    drawDuplicateDeleteButtons(commands);
+}
+
+} // namespace rmsc::app

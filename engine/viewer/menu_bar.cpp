@@ -1,0 +1,107 @@
+// The main menu bar, one function per menu (see menu_bar.hpp).
+#include "menu_bar.hpp"
+
+#include "document_edits.hpp"
+#include "operation_labels.hpp"
+#include "panel_widgets.hpp"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace rmsc::app {
+namespace {
+
+void drawFileMenu(ViewerCommands& commands) {
+    if (!ImGui::BeginMenu("File")) return;
+    if (ImGui::MenuItem("New")) commands.push_back(ViewerCommand::NewScene);
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) commands.push_back(ViewerCommand::Open);
+    if (ImGui::MenuItem("Save", "Ctrl+S")) commands.push_back(ViewerCommand::Save);
+    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) commands.push_back(ViewerCommand::SaveAs);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Screenshot", "F12")) commands.push_back(ViewerCommand::Screenshot);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit")) commands.push_back(ViewerCommand::Quit);
+    ImGui::EndMenu();
+}
+
+void drawEditMenu(const editor::Document& document, ViewerCommands& commands) {
+    if (!ImGui::BeginMenu("Edit")) return;
+    const std::string undo = "Undo " + document.undoLabel();
+    const std::string redo = "Redo " + document.redoLabel();
+    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, document.canUndo()))
+        commands.push_back(ViewerCommand::Undo);
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, document.canRedo()))
+        commands.push_back(ViewerCommand::Redo);
+    ImGui::Separator();
+    const bool selected = !document.selection.empty();
+    if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, selected))
+        commands.push_back(ViewerCommand::Duplicate);
+    if (ImGui::MenuItem("Delete", "Del", false, selected))
+        commands.push_back(ViewerCommand::Delete);
+    // The gestures, for their keys (they need the mouse over the view).
+    ImGui::MenuItem("Move (grab)", "G, then X/Y/Z", false, false);
+    ImGui::MenuItem("Rotate", "R, then X/Y/Z", false, false);
+    ImGui::MenuItem("Scale", "S, then X/Y/Z", false, false);
+    ImGui::EndMenu();
+}
+
+void drawAddMenu(editor::Document& document, ViewerCommands& commands) {
+    if (!ImGui::BeginMenu("Add")) return;
+    if (ImGui::BeginMenu("Shape")) {
+        for (const PrimitiveSpec& spec : primitiveCatalogue()) {
+            if (ImGui::MenuItem(std::string(spec.name).c_str())) addShape(document, spec);
+            helpTooltip(spec.description);
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Group")) {
+        for (const OpName& op : kOps)
+            if (ImGui::MenuItem(op.label)) addGroup(document, op.op);
+        ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem("Directional light")) addLight(document);
+    if (ImGui::MenuItem("glTF mesh from a file...")) commands.push_back(ViewerCommand::AddMesh);
+    ImGui::EndMenu();
+}
+
+void drawViewMenu(ViewSettings& view) {
+    if (!ImGui::BeginMenu("View")) return;
+    const char* names[] = {"Colour", "Normals", "Depth", "Object id", "March steps"};
+    for (int i = 0; i < 5; ++i)
+        if (ImGui::MenuItem(names[i], nullptr, int(view.mode) == i)) view.mode = ViewMode(i);
+    ImGui::Separator();
+    ImGui::MenuItem("Overlay", nullptr, &view.showOverlay);
+    ImGui::MenuItem("Adaptive resolution", nullptr, &view.adaptive.enabled);
+    ImGui::SetNextItemWidth(120);
+    ImGui::DragFloat("target ms", &view.adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f, "%.0f ms");
+    ImGui::EndMenu();
+}
+
+void drawCameraMenu(ViewerCommands& commands) {
+    if (!ImGui::BeginMenu("Camera")) return;
+    if (ImGui::MenuItem("Frame selection", "F")) commands.push_back(ViewerCommand::FrameSelection);
+    if (ImGui::MenuItem("Save camera to scene")) commands.push_back(ViewerCommand::SaveCamera);
+    if (ImGui::MenuItem("Reset to scene camera")) commands.push_back(ViewerCommand::ResetCamera);
+    ImGui::EndMenu();
+}
+
+} // namespace
+
+void drawMenus(editor::Document& document, ViewSettings& view, ViewerCommands& commands) {
+    drawFileMenu(commands);
+    drawEditMenu(document, commands);
+    drawAddMenu(document, commands);
+    drawViewMenu(view);
+    drawCameraMenu(commands);
+}
+
+void drawMenuBarTitle(const editor::Document& document) {
+    const std::string title =
+        (document.file().empty() ? std::string("(unsaved scene)") : document.file().string()) +
+        (document.dirty() ? " *" : "");
+    ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(title.c_str()).x - 16);
+    ImGui::TextDisabled("%s", title.c_str());
+}
+
+} // namespace rmsc::app

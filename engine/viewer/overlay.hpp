@@ -1,0 +1,21 @@
+// What is drawn over the view: the status overlay (frame and render times, render scale, the SDF
+// map drawn, view mode and fly speed, the gesture running, recent notices) and the problems box
+// (open, scene, shader and file errors, with a button that dismisses the open and file ones).
+#pragma once
+
+#include "editor/transform_gesture.hpp"
+#include "messages.hpp"
+#include "panel_layout.hpp"
+#include "view_renderer.hpp"
+#include "view_settings.hpp"
+
+namespace rmsc::app {
+
+// Drawn when view.showOverlay; `gesture` is the one running, or nullptr.
+void drawStatusOverlay(const Rect& viewport, const ViewStatus& status, float frameMilliseconds,
+                       const ViewSettings& view, float flySpeed,
+                       const editor::TransformGesture* gesture, const Messages& messages);
+// Drawn when there is a problem to show.
+void drawProblems(const Rect& viewport, Messages& messages);
+
+} // namespace rmsc::app

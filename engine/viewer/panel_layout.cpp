@@ -1,0 +1,33 @@
+// The window's layout (see panel_layout.hpp).
+#include "panel_layout.hpp"
+
+#include <algorithm>
+
+namespace rmsc::app {
+
+PanelLayout layoutPanels(int windowWidth, int windowHeight, float menuHeight) {
+    PanelLayout layout;
+    layout.leftPanelWidth = std::clamp(float(windowWidth) * 0.24f, 150.0f, 270.0f);
+    layout.rightPanelWidth = std::clamp(float(windowWidth) * 0.28f, 200.0f, 340.0f);
+    layout.viewport = {
+        layout.leftPanelWidth, menuHeight,
+        std::max(1.0f, float(windowWidth) - layout.leftPanelWidth - layout.rightPanelWidth),
+        std::max(1.0f, float(windowHeight) - menuHeight)};
+    return layout;
+}
+
+ViewportPixels viewportPixels(const Rect& viewport, int windowWidth, int windowHeight,
+                              int framebufferWidth, int framebufferHeight) {
+    const float sx = windowWidth > 0 ? float(framebufferWidth) / float(windowWidth) : 1.0f;
+    const float sy = windowHeight > 0 ? float(framebufferHeight) / float(windowHeight) : 1.0f;
+    ViewportPixels pixels;
+    pixels.x = int(viewport.x * sx);
+    pixels.width = std::max(1, int(viewport.width * sx));
+    pixels.height = std::max(1, int(viewport.height * sy));
+    pixels.y = framebufferHeight - int((viewport.y + viewport.height) * sy);
+    pixels.framebufferWidth = framebufferWidth;
+    pixels.framebufferHeight = framebufferHeight;
+    return pixels;
+}
+
+} // namespace rmsc::app

@@ -1,0 +1,24 @@
+// Small widgets the panels share: hover help, drag steps that follow an object's size, the
+// transform fields, and the buttons that duplicate or delete the selection.
+#pragma once
+
+#include "scene/scene.hpp"
+#include "viewer_commands.hpp"
+
+#include <glm/glm.hpp>
+
+#include <string_view>
+
+namespace rmsc::app {
+
+// Shows `text` (if any) while the last widget is hovered.
+void helpTooltip(std::string_view text);
+// A drag step that follows the size of what is edited (1% of it), never below 0.001.
+float stepFor(float size);
+// Position, rotation (Euler degrees) and scale; `world` shows the position in world space
+// (through `parentWorld`). Returns true when anything changed.
+bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float size);
+// Duplicate and Delete, side by side.
+void drawDuplicateDeleteButtons(ViewerCommands& commands);
+
+} // namespace rmsc::app

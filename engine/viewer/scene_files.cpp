@@ -1,0 +1,122 @@
+// Opening, saving, recovering and reloading the scene file (see scene_files.hpp).
+#include "scene_files.hpp"
+
+#include "editor/recovery.hpp"
+#include "prepare/prepared_scene.hpp"
+#include "scene/scene_json.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace rmsc::app {
+
+void openStartScene(const std::filesystem::path& path, EditorSession& session, SceneFiles& files,
+                    Messages& messages) {
+    editor::Document& document = session.document;
+    Diagnostics diagnostics;
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (path.empty()) {
+        std::optional<Scene> demo = loadScene(kDemoScenePath, embeddedFileSource(), diagnostics);
+        document.reset(demo ? *demo : editor::emptyScene(), {});
+    } else if (extension == ".gltf" || extension == ".glb") {
+        std::optional<PreparedScene> opened = openScene(path, diagnostics);
+        if (opened) {
+            // The model becomes a mesh instance of a new scene, saved wherever the user says.
+            opened->scene.meshes[0].path = std::filesystem::absolute(path);
+            document.reset(opened->scene, {});
+        }
+    } else {
+        std::optional<Scene> scene = editor::loadSceneForEditing(path, diagnostics);
+        if (scene) document.reset(*scene, path);
+        files.watcher = editor::FileWatcher(path); // a broken file that gets fixed loads then
+    }
+    if (diagnostics.hasErrors()) {
+        messages.openError = "Could not open " + path.string() + "; showing an empty scene.\n" +
+                             diagnostics.format();
+        std::fputs(diagnostics.format().c_str(), stderr);
+    }
+    session.resetCamera();
+}
+
+void openSceneFile(const std::filesystem::path& path, EditorSession& session, SceneFiles& files,
+                   Messages& messages) {
+    Diagnostics diagnostics;
+    std::optional<Scene> scene = editor::loadSceneForEditing(path, diagnostics);
+    if (!scene) {
+        messages.fileError = "Could not open " + path.string() + " (the current scene stays):\n" +
+                             diagnostics.format();
+        return;
+    }
+    session.document.reset(*scene, path);
+    files.watcher = editor::FileWatcher(path);
+    session.resetCamera();
+    messages.fileError.clear();
+    messages.sceneError.clear();
+    messages.notice("opened " + path.string());
+}
+
+void newScene(EditorSession& session, SceneFiles& files, Messages& messages) {
+    session.document.reset(editor::emptyScene(), {});
+    files.watcher = editor::FileWatcher();
+    session.resetCamera();
+    messages.sceneError.clear();
+}
+
+void saveSceneAs(const std::filesystem::path& path, editor::Document& document, SceneFiles& files,
+                 Messages& messages) {
+    std::string error;
+    const std::filesystem::path previousFile = document.file();
+    if (!document.saveAs(path, error)) {
+        messages.fileError = "Save failed; your edits are kept in memory.\n" + error;
+        return;
+    }
+    editor::removeRecovery(previousFile); // the edits are safe in the file now
+    editor::removeRecovery(path);
+    messages.fileError.clear();
+    files.watcher = editor::FileWatcher(path); // our own write is not an external change
+    messages.notice("saved " + path.string());
+}
+
+void writeRecoveryFile(const editor::Document& document, SceneFiles& files, Messages& messages,
+                       double now) {
+    if (!document.dirty() || document.revision() == files.recoveryRevision ||
+        now - files.lastRecoveryWrite < 5.0)
+        return;
+    files.lastRecoveryWrite = now;
+    std::string error;
+    if (editor::writeRecovery(document, error)) {
+        files.recoveryRevision = document.revision();
+    } else if (files.recoveryRevision != document.revision()) {
+        messages.notice("cannot write the recovery file: " + error);
+        files.recoveryRevision = document.revision(); // say it once per change, not every 5 s
+    }
+}
+
+bool reloadChangedSceneFile(EditorSession& session, SceneFiles& files, Messages& messages) {
+    if (files.watcher.path().empty() || !files.watcher.changed()) return false;
+    editor::Document& document = session.document;
+    const std::filesystem::path& path = files.watcher.path();
+    Diagnostics diagnostics;
+    std::optional<Scene> scene = editor::loadSceneForEditing(path, diagnostics);
+    if (!scene) {
+        messages.sceneError = "Reloading " + path.string() +
+                              " failed (the last good scene stays):\n" + diagnostics.format();
+    } else if (document.file() != path) {
+        document.reset(*scene, path); // the file failed to open at start
+        messages.sceneError.clear();
+        messages.openError.clear();
+        session.resetCamera();
+        messages.notice("opened " + path.string());
+    } else if (document.dirty()) {
+        return true; // ask: reload and lose edits, or keep them
+    } else {
+        document.reloadFromDisk(*scene);
+        messages.sceneError.clear();
+        messages.notice("reloaded " + path.string() + " (changed on disk)");
+    }
+    return false;
+}
+
+} // namespace rmsc::app

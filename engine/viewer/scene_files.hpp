@@ -1,0 +1,42 @@
+// The edited scene's file: the scene named on the command line, Open, New, Save As (atomic,
+// editor/document.hpp), the recovery file written while there are unsaved edits
+// (editor/recovery.hpp), and reloading when the file changes on disk.
+#pragma once
+
+#include "editor/file_watcher.hpp"
+#include "editor_session.hpp"
+#include "messages.hpp"
+
+#include <cstdint>
+#include <filesystem>
+
+namespace rmsc::app {
+
+struct SceneFiles {
+    editor::FileWatcher watcher;        // the scene file; none for a scene never saved
+    std::uint64_t recoveryRevision = 0; // document revision last written to the recovery file
+    double lastRecoveryWrite = -1e9;    // seconds, on the clock `now` is given in
+};
+
+// The scene `rmsc view` was started with: a scene file, a glTF model (as the one mesh of a new
+// scene) or, for "", the built-in demo. One that does not open leaves an empty scene and says
+// why in `messages.openError`; a scene file is watched even then, so fixing it loads it.
+void openStartScene(const std::filesystem::path& path, EditorSession& session, SceneFiles& files,
+                    Messages& messages);
+// Open: replaces the document and puts the view at the scene's camera; a file that does not
+// load changes nothing and says why in `messages.fileError`.
+void openSceneFile(const std::filesystem::path& path, EditorSession& session, SceneFiles& files,
+                   Messages& messages);
+// New: an empty scene without a file.
+void newScene(EditorSession& session, SceneFiles& files, Messages& messages);
+// Saves to `path` and removes the recovery files; a failed save keeps the edits and says why.
+void saveSceneAs(const std::filesystem::path& path, editor::Document& document, SceneFiles& files,
+                 Messages& messages);
+// Unsaved edits to the recovery file, at most every 5 seconds of `now`.
+void writeRecoveryFile(const editor::Document& document, SceneFiles& files, Messages& messages,
+                       double now);
+// Reloads the scene file when it changed on disk (or opens it, when it did not open at start).
+// Returns true when it changed but there are unsaved edits: the user is to be asked.
+bool reloadChangedSceneFile(EditorSession& session, SceneFiles& files, Messages& messages);
+
+} // namespace rmsc::app

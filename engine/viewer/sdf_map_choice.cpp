@@ -1,0 +1,90 @@
+// Which SDF map the view is drawn with (editor/editing_map.hpp): the best one that is ready for
+// the newest scene and the selection, uploaded when it differs from the one drawn, while the
+// warmer builds the better ones (see view_renderer.hpp).
+#include "view_renderer.hpp"
+
+#include <cstdio>
+#include <utility>
+
+namespace rmsc::app {
+
+void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& selection,
+                                bool waitForBuilds, int frameNumber, std::string& sceneError) {
+    if (!renderer_ || !prepared_) return;
+    if (warmer_) {
+        if (waitForBuilds) warmer_->waitUntilIdle();
+        const std::string error = warmer_->takeError();
+        if (!error.empty()) std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
+    }
+    const SdfLiveRange live = editor::selectionLiveRange(scene, selection);
+    const std::size_t built = warmer_ ? warmer_->finishedCount() : 0;
+    if (choiceRevision_ == uploadedRevision_ && choiceLive_.first == live.first &&
+        choiceLive_.last == live.last && choiceBuilt_ == built)
+        return;
+    choiceRevision_ = uploadedRevision_;
+    choiceLive_ = live;
+    choiceBuilt_ = built;
+    // Without a warmer, or for the first picture, every map is built here when it is drawn.
+    const bool first = !gpuScene_;
+    if (first) choiceRevision_ = 0; // choose again next frame: the other maps build meanwhile
+    auto isReady = [this, first](const std::string& map) {
+        return !warmer_ || first || renderer_->hasPrograms(map) || warmer_->isWarm(map);
+    };
+    editor::EditingMaps maps =
+        editor::chooseEditingMaps(prepared_->sdf, boundedSdf_, live, isReady);
+    if (warmer_) {
+        warmer_->request(*prepared_, maps.build);
+        if (waitForBuilds && !maps.build.empty()) {
+            warmer_->waitUntilIdle();
+            maps = editor::chooseEditingMaps(prepared_->sdf, boundedSdf_, live, isReady);
+            choiceBuilt_ = warmer_->finishedCount();
+        }
+    }
+    if (maps.draw.empty() || (!sceneChanged_ && !gpuScene_))
+        return; // nothing ready for the newest scene: the old picture stays
+    const bool sameMap = gpuScene_ && gpuScene_->sdfMap == maps.draw;
+    const bool bounded = maps.kind == editor::EditingMapKind::Interpreter;
+    if (sameMap && !sceneChanged_) return;
+    std::optional<GpuScene> fresh; // a new upload: a newer scene, or the other program
+    if (sceneChanged_ || bounded != drawnBounded_) {
+        if (bounded) std::swap(prepared_->sdf, boundedSdf_);
+        fresh = uploadScene(*prepared_, SdfStrategy::Buffer);
+        if (bounded) std::swap(prepared_->sdf, boundedSdf_);
+    }
+    GpuScene& next = fresh ? *fresh : *gpuScene_;
+    std::string previous = std::exchange(next.sdfMap, maps.draw);
+    std::string error;
+    if (!renderer_->prepare(next, error)) { // not expected: maps are generated
+        next.sdfMap = std::move(previous);
+        sceneChanged_ = false;
+        sceneError =
+            "The scene's shaders do not build (showing the last scene that did):\n" + error;
+        std::fprintf(stderr, "rmsc view: %s\n", sceneError.c_str());
+        return;
+    }
+    const double compileMs = renderer_->lastCompileMs();
+    if (fresh) {
+        gpuScene_ = std::move(*fresh);
+        drawnBounded_ = bounded;
+        if (sceneChanged_) sceneError.clear();
+        sceneChanged_ = false;
+        lastRenderedRevision_ = 0; // the picture may show an older scene: render again
+    }
+    if (sameMap) return;
+    const std::string name(editor::editingMapName(maps.kind));
+    const bool background = warmer_ && warmer_->isWarm(maps.draw);
+    if (!background && compileMs > 0.0)
+        std::fprintf(stderr, "rmsc view: frame %d: built the %s map's shaders in %.0f ms\n",
+                     frameNumber, name.c_str(), compileMs);
+    std::fprintf(stderr, "rmsc view: frame %d: drawing with the %s map (%s)\n", frameNumber,
+                 name.c_str(),
+                 background ? ("built in the background in " +
+                               std::to_string(int(warmer_->buildMs(maps.draw))) + " ms, " +
+                               std::to_string(int(compileMs)) + " ms to switch")
+                                  .c_str()
+                 : compileMs > 0 ? "built here"
+                                 : "built before");
+    drawnMap_ = maps.kind;
+}
+
+} // namespace rmsc::app

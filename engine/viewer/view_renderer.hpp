@@ -1,0 +1,122 @@
+// The viewer's GPU side: the renderer and the display pass, the scene as uploaded, the choice of
+// the SDF map it is drawn with (editor/editing_map.hpp: the best one that is ready, while the
+// shader warmer builds better ones on a hidden window's context), and the view rendered at the
+// resolution the adaptive scale asks for. The frame loop hands it the document's scene each
+// frame; it hands back the picture, captures for screenshots, the newest compiled scene (for
+// picking) and what the overlay reports.
+#pragma once
+
+#include "core/image_io.hpp"
+#include "display_pass.hpp"
+#include "editor/adaptive_scale.hpp"
+#include "editor/editing_map.hpp"
+#include "editor/scene_edits.hpp"
+#include "editor/selection.hpp"
+#include "panel_layout.hpp"
+#include "render/renderer.hpp"
+#include "render/shader_warmer.hpp"
+#include "window.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace rmsc::app {
+
+// What the view shows this frame.
+struct ViewInput {
+    Camera camera;
+    const Scene* scene = nullptr; // the document's
+    std::uint64_t revision = 0;   // the document's: a new one renders again
+    editor::IdRange selected;     // object ids to outline
+    ViewMode mode = ViewMode::Color;
+};
+
+// What the overlay says about the view.
+struct ViewStatus {
+    float renderMilliseconds = 0.0f; // of the last render
+    float renderScale = 1.0f;        // of the last render, against the viewport's size
+    int width = 0, height = 0;       // pixels of the last render
+    editor::EditingMapKind map = editor::EditingMapKind::Buffer; // drawn
+    bool selectionLive = false;      // the map was chosen with a live range for the selection
+    bool newestScenePending = false; // the newest scene shows once its shaders are built
+    bool buildingMaps = false;       // better maps are being built in the background
+};
+
+class ViewRenderer {
+  public:
+    ViewRenderer();
+    ~ViewRenderer();
+    ViewRenderer(const ViewRenderer&) = delete;
+    ViewRenderer& operator=(const ViewRenderer&) = delete;
+
+    // Builds the renderer and the display pass from `files`, and the drawn scene's passes with
+    // them so a broken shader shows here and not while drawing. On success they replace the
+    // ones in use and the background builds start over; on failure `error` says why and
+    // nothing changes.
+    bool useShaders(ShaderFiles files, std::string& error);
+    bool hasShaders() const { return renderer_.has_value(); }
+
+    // Compiles `scene` when `revision` is one it has not seen; the result is drawn once
+    // chooseSdfMap finds a map for it ready. A scene that does not compile sets `sceneError`
+    // and the last one that did stays.
+    void updateScene(const Scene& scene, std::uint64_t revision, std::string& sceneError);
+    // Draws with the best SDF map that is ready for the uploaded scene and `selection` (whose
+    // subtree stays live), asking the warmer for better ones; `waitForBuilds` waits for them
+    // (replay scripts). Logs each switch with `frameNumber`. Sets `sceneError` when the chosen
+    // map's shaders do not build, clears it when a newer scene is drawn.
+    void chooseSdfMap(const Scene& scene, const editor::Selection& selection, bool waitForBuilds,
+                      int frameNumber, std::string& sceneError);
+
+    // Clears the window and draws the view into `viewport`, rendering again when the view
+    // changed (at the scale `adaptive` chooses) and showing the last render when it did not.
+    void render(const ViewInput& view, const ViewportPixels& viewport,
+                editor::AdaptiveScale& adaptive);
+    // The view at `width` x `height` pixels and full resolution: the last render when it is
+    // that, or a new render. nullopt with `error` when nothing is rendered yet.
+    std::optional<Pixels<std::uint8_t>> capture(const ViewInput& view, int width, int height,
+                                                std::string& error);
+
+    // The newest scene that compiled (what picking casts rays at), or nullptr.
+    const PreparedScene* newestScene() const { return prepared_ ? &*prepared_ : nullptr; }
+    // The last render is at full resolution and the view has not changed since: nothing to do
+    // until something changes.
+    bool refined(const editor::AdaptiveScale& adaptive) const {
+        return !viewChanged_ && adaptive.refined(lastRenderScale_);
+    }
+    ViewStatus status() const;
+
+  private:
+    void startWarmer();
+
+    ShaderFiles shaderFiles_;
+    std::optional<Renderer> renderer_;
+    std::optional<DisplayPass> display_;
+    std::optional<GpuScene> gpuScene_;      // what is drawn
+    std::optional<PreparedScene> prepared_; // last scene that compiled (the newest), its SDF
+                                            // without the bounding hierarchy (generated code's)
+    SdfProgram boundedSdf_;                 // the same SDF with it, what the interpreter runs
+    bool sceneChanged_ = false; // `prepared_` is newer than what is drawn: it shows once a map
+                                // for it is ready
+    bool drawnBounded_ = false; // gpuScene_ holds boundedSdf_ (the interpreter draws)
+    std::uint64_t uploadedRevision_ = 0;
+    // The SDF map drawn: the best one that is ready; the warmer builds better ones on its
+    // hidden window's context meanwhile.
+    std::unique_ptr<Window> warmerWindow_;
+    std::unique_ptr<ShaderWarmer> warmer_; // after warmerWindow_: goes first
+    editor::EditingMapKind drawnMap_ = editor::EditingMapKind::Buffer;
+    // What the map choice was made for: the revision, the selection, the warmer's finished maps.
+    std::uint64_t choiceRevision_ = 0;
+    std::size_t choiceBuilt_ = 0;
+    SdfLiveRange choiceLive_;
+    // The last render.
+    std::optional<FrameTargets> targets_;
+    float lastRenderMilliseconds_ = 0.0f;
+    float lastRenderScale_ = 1.0f;
+    bool viewChanged_ = true;
+    Camera lastRenderedCamera_;
+    std::uint64_t lastRenderedRevision_ = 0;
+};
+
+} // namespace rmsc::app

@@ -1,0 +1,68 @@
+// What each viewer command does: Viewer::carryOut (see viewer_commands.hpp, frame_loop.hpp).
+#include "viewer_commands.hpp"
+
+#include "camera_controls.hpp"
+#include "document_edits.hpp"
+#include "frame_loop.hpp"
+
+namespace rmsc::app {
+
+void Viewer::carryOut(ViewerCommands& commands) {
+    editor::Document& document = session_.document;
+    for (const ViewerCommand command : commands) {
+        switch (command) {
+        case ViewerCommand::Undo:
+            document.undo();
+            break;
+        case ViewerCommand::Redo:
+            document.redo();
+            break;
+        case ViewerCommand::Duplicate:
+            duplicateSelection(document);
+            break;
+        case ViewerCommand::Delete:
+            deleteSelection(document);
+            break;
+        case ViewerCommand::NewScene:
+            if (document.dirty()) {
+                dialogs_.askClose = true;
+                dialogs_.afterDiscard = AfterDiscard::New;
+            } else {
+                newScene(session_, files_, messages_);
+            }
+            break;
+        case ViewerCommand::Open:
+            dialogs_.askForPath(PathPurpose::Open, document.file().string());
+            break;
+        case ViewerCommand::Save:
+            saveScene(session_, files_, messages_, dialogs_);
+            break;
+        case ViewerCommand::SaveAs:
+            dialogs_.askForPath(PathPurpose::SaveAs,
+                                document.file().empty() ? "scene.json" : document.file().string());
+            break;
+        case ViewerCommand::AddMesh:
+            dialogs_.askForPath(PathPurpose::AddMesh, "");
+            break;
+        case ViewerCommand::Screenshot:
+            screenshotToDefaultFile();
+            break;
+        case ViewerCommand::Quit:
+            dialogs_.afterDiscard = AfterDiscard::Quit;
+            requestClose(dialogs_, document);
+            break;
+        case ViewerCommand::FrameSelection:
+            frameSelection(session_);
+            break;
+        case ViewerCommand::SaveCamera:
+            session_.saveCameraToScene();
+            break;
+        case ViewerCommand::ResetCamera:
+            session_.resetCamera();
+            break;
+        }
+    }
+    commands.clear();
+}
+
+} // namespace rmsc::app

@@ -1,0 +1,30 @@
+// What the menus, panels and shortcuts ask of the viewer beyond their own edits of the document
+// (those they make themselves): they queue commands while they draw or read the input, and the
+// frame loop carries them out in order right after the part that queued them, before the next
+// part runs (Viewer::carryOut, viewer_commands.cpp).
+#pragma once
+
+#include <vector>
+
+namespace rmsc::app {
+
+enum class ViewerCommand {
+    Undo,
+    Redo,
+    Duplicate,      // the selection
+    Delete,         // the selection, when there is one
+    NewScene,       // asks first when there are unsaved changes
+    Open,           // asks for the file
+    Save,           // asks for a file when the scene has none yet
+    SaveAs,         // asks for the file
+    AddMesh,        // asks for the glTF file
+    Screenshot,     // the view, next to the scene file
+    Quit,           // asks first when there are unsaved changes
+    FrameSelection, // the camera looks at the selection (or the whole SDF)
+    SaveCamera,     // the view becomes the scene's camera
+    ResetCamera,    // the view from the scene's camera
+};
+
+using ViewerCommands = std::vector<ViewerCommand>;
+
+} // namespace rmsc::app

@@ -1,0 +1,47 @@
+// Click to select, by a CPU ray cast through the clicked pixel (see viewport_pick.hpp).
+#include "viewport_pick.hpp"
+
+#include "editor/picking.hpp"
+#include "editor/scene_edits.hpp"
+#include "render/frame.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace rmsc::app {
+namespace {
+
+// The selection a click at window pixel `point` inside `viewport` makes, seen through `camera`.
+editor::Selection pickAt(const PreparedScene& prepared, const Scene& scene, const Camera& camera,
+                         const Rect& viewport, glm::vec2 point) {
+    // A ray from the eye through the clicked point, built as the march pass builds its rays
+    // (pixelRayDirection adds half a pixel, so the point itself is the pixel's centre).
+    const int w = std::max(1, int(viewport.width)), h = std::max(1, int(viewport.height));
+    const FrameCamera frame = makeFrameCamera(camera, w, h);
+    const float x = point.x - viewport.x - 0.5f;
+    const float y = viewport.height - (point.y - viewport.y) - 0.5f;  // rows from the bottom
+    const glm::vec3 direction = pixelRayDirection(frame, x, y, w, h); // forward component 1
+    const float length = glm::length(direction);
+    editor::PickRay ray;
+    ray.origin = camera.position;
+    ray.direction = direction / length;
+    ray.tMin = camera.nearPlane * length; // the near and far planes are view depths
+    ray.tMax = camera.farPlane * length;
+    const std::optional<editor::PickHit> hit = editor::pick(prepared, ray);
+    return hit ? editor::selectionForObjectId(scene, hit->objectId) : editor::Selection::none();
+}
+
+} // namespace
+
+void handleViewportClick(const InputState& input, const Rect& viewport, bool gestureActive,
+                         const PreparedScene* prepared, EditorSession& session) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (gestureActive || !input.clicked[0] || input.alt()) return;
+    if (!viewport.contains(input.mouse) || io.WantCaptureMouse) return;
+    if (prepared)
+        session.document.selection = pickAt(*prepared, session.document.scene(),
+                                            session.viewCamera(), viewport, input.mouse);
+}
+
+} // namespace rmsc::app
