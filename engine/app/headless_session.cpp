@@ -12,8 +12,8 @@ namespace rmsc::app {
 
 bool readFrameOptions(const char* command, const ParsedArgs& args, FrameOptions& options) {
     if (args.has("--size") && !parseSize(args.get("--size", ""), options.width, options.height)) {
-        std::fprintf(stderr, "rmsc %s: --size: expected WxH with sides 1..%d, got '%s'\n", command,
-                     limits::kImageSize, args.get("--size", "").c_str());
+        std::fprintf(stderr, "rmsc %s: --size: expected %s, got '%s'\n", command,
+                     sizeExpectation().c_str(), args.get("--size", "").c_str());
         return false;
     }
     if (!parseGlBackend(args.get("--backend", "auto"), options.backend)) {

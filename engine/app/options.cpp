@@ -88,7 +88,13 @@ bool parseSize(const std::string& text, int& width, int& height) {
     const std::size_t x = text.find('x');
     if (x == std::string::npos) return false;
     return parsePositiveInt(text.substr(0, x), limits::kImageSize, width) &&
-           parsePositiveInt(text.substr(x + 1), limits::kImageSize, height);
+           parsePositiveInt(text.substr(x + 1), limits::kImageSize, height) &&
+           std::int64_t(width) * height <= limits::kImagePixels;
+}
+
+std::string sizeExpectation() {
+    return "WxH with sides 1.." + std::to_string(limits::kImageSize) + " and at most " +
+           std::to_string(limits::kImagePixels) + " pixels (a frame takes about 70 bytes a pixel)";
 }
 
 } // namespace rmsc::app

@@ -45,6 +45,8 @@ std::string formatHelp(const CommandSpec& spec);
 
 // Parses "640x360"; sizes from 1 to limits::kImageSize per side.
 bool parseSize(const std::string& text, int& width, int& height);
+// What --size takes, for messages.
+std::string sizeExpectation();
 // Parses a positive integer up to `max`.
 bool parsePositiveInt(const std::string& text, int max, int& value);
 

@@ -38,8 +38,8 @@ const CommandSpec kViewSpec = {
 int runView(const ParsedArgs& args) {
     ViewerOptions options;
     if (args.has("--size") && !parseSize(args.get("--size", ""), options.width, options.height)) {
-        std::fprintf(stderr, "rmsc view: --size: expected WxH with sides 1..%d, got '%s'\n",
-                     limits::kImageSize, args.get("--size", "").c_str());
+        std::fprintf(stderr, "rmsc view: --size: expected %s, got '%s'\n",
+                     sizeExpectation().c_str(), args.get("--size", "").c_str());
         return kExitUsage;
     }
     if (args.has("--target-ms")) {

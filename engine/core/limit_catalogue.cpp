@@ -89,6 +89,9 @@ constexpr Limit kLimits[] = {
      "refused at the accessor or node", "kGltfIndices"},
     {"Image size", kImageSize, "pixels a side",
      "`--size` of `rmsc render`, `rmsc bench` and `rmsc view`", "refused (exit 2)", "kImageSize"},
+    {"Image pixels", double(kImagePixels), "pixels",
+     "`--size` width times height (a frame takes about 70 bytes of memory a pixel)",
+     "refused (exit 2)", "kImagePixels"},
 };
 
 constexpr std::uint64_t kMi = std::uint64_t(1) << 20;

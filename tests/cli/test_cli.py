@@ -112,7 +112,10 @@ with tempfile.TemporaryDirectory() as tmp:
     # Bad usage: exit 2.
     expect("bad size", ["render", "-o", out, "--size", "0x10"], 2, stderr_has=["--size"])
     expect("size over the limit", ["render", "-o", out, "--size", "16385x8"], 2,
-           stderr_has=["--size: expected WxH with sides 1..16384, got '16385x8'"])
+           stderr_has=["--size: expected WxH with sides 1..16384", "got '16385x8'"])
+    # 16384x16384 would take about 18 GB: refused by its pixel count, before any GL work.
+    expect("size over the pixel limit", ["render", "-o", out, "--size", "16384x16384"], 2,
+           stderr_has=["at most 33554432 pixels", "got '16384x16384'"])
     expect("bad backend", ["render", "-o", out, "--backend", "vulkan"], 2, stderr_has=["--backend"])
     expect("bad aov", ["render", "-o", out, "--aov", "albedo"], 2, stderr_has=["--aov"])
     expect("no output", ["render"], 2, stderr_has=["-o"])
