@@ -1,12 +1,14 @@
 // Reading scene files (format version 1, docs/scene-format.md): each section is checked field
-// by field against the format and the primitive catalogue, reporting every problem with its
-// JSON pointer and carrying on, so one run shows everything wrong with a file.
+// by field against the format and the catalogues (primitives, modifiers), reporting every
+// problem with its JSON pointer and carrying on, so one run shows everything wrong with a file.
 #include "scene/scene_json.hpp"
 
 #include "core/limits.hpp"
 #include "json_reader.hpp"
 #include "lighting_json.hpp"
 #include "material_texture_json.hpp"
+#include "param_json.hpp"
+#include "sdf/modifiers.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -275,22 +277,7 @@ void readShapeParams(SceneReader& r, const Json& object, const std::string& poin
     }
 }
 
-// Modifier types by JSON name, in SdfModifierType order, with the keys each accepts.
-const std::vector<std::string> kModifierNames = {"repeat", "mirror", "polar", "elongate", "twist",
-                                                 "bend",   "round",  "onion", "displace"};
-const std::vector<std::vector<std::string>> kModifierKeys = {
-    {"type", "period", "count", "neighbours"},
-    {"type", "axes"},
-    {"type", "count", "axis"},
-    {"type", "half_extents"},
-    {"type", "amount", "radius"},
-    {"type", "amount", "radius"},
-    {"type", "radius"},
-    {"type", "thickness"},
-    {"type", "amplitude", "frequency"}};
-constexpr int kMaxModifiers = 16;     // per node
-constexpr int kMaxPolarCopies = 1024; // polar repetition
-constexpr int kMaxRepeatCount = 1 << 20;
+constexpr int kMaxModifiers = 16; // per node
 constexpr int kMaxPolygonPoints = 256;
 constexpr float kMaxLength = 1.0e4f; // lengths, as the catalogue's
 
@@ -299,174 +286,46 @@ const std::vector<std::string> kProfileTypes = {"circle", "rectangle", "rounded_
 const std::vector<std::vector<std::string>> kProfileKeys = {
     {"type", "radius"}, {"type", "half_size"}, {"type", "half_size", "radius"}, {"type", "points"}};
 
-// A required number field: an error at the object when it is missing.
-bool readRequiredNumber(const SceneReader& r, const Json& object, const std::string& pointer,
-                        std::string_view key, float* out, NumberRange range,
-                        const std::string& what) {
-    if (!findMember(object, key)) {
-        r.json.error(pointer, "missing \"" + std::string(key) + "\" (" + what + ")");
-        return false;
-    }
-    return readNumberField(r.json, object, pointer, key, out, range);
-}
-
-// "x", "y" or "z" to 0, 1, 2.
-std::optional<int> readAxisName(const SceneReader& r, const Json& value,
-                                const std::string& pointer) {
-    const auto name = readString(r.json, value, pointer);
-    if (!name) return std::nullopt;
-    if (*name == "x") return 0;
-    if (*name == "y") return 1;
-    if (*name == "z") return 2;
-    r.json.error(pointer, "expected an axis \"x\", \"y\" or \"z\", got \"" + *name + "\"");
-    return std::nullopt;
-}
-
-void readRepeat(const SceneReader& r, const Json& object, const std::string& pointer,
-                SdfModifier& m) {
-    const Json* period = findMember(object, "period");
-    if (!period) {
-        r.json.error(pointer, "missing \"period\" (the cell size along x, y, z; 0 = not "
-                              "repeated on that axis)");
-        return;
-    }
-    const std::string periodPointer = childPointer(pointer, "period");
-    float v[3];
-    NumberRange periodRange = NumberRange::closed(0.0, kMaxLength);
-    periodRange.noun = "a period";
-    const bool periodOk = readNumbers(r.json, *period, periodPointer, 3, v, periodRange);
-    if (periodOk) {
-        m.vector = glm::vec3(v[0], v[1], v[2]);
-        if (m.vector == glm::vec3(0.0f))
-            r.json.error(periodPointer, "the period is 0 on every axis, so nothing repeats; "
-                                        "give a period > 0 on at least one axis");
-    }
-    if (const Json* count = findMember(object, "count")) {
-        const std::string countPointer = childPointer(pointer, "count");
-        if (!count->is_array() || count->size() != 3) {
-            r.json.error(countPointer,
-                         "expected 3 integers (copies along x, y, z; 0 = "
-                         "unlimited), got " +
-                             jsonTypeName(*count) +
-                             (count->is_array()
-                                  ? " of " + std::to_string(count->size()) + " elements"
-                                  : ""));
-        } else {
-            for (int axis = 0; axis < 3; ++axis) {
-                const std::string elementPointer = childPointer(countPointer, std::size_t(axis));
-                const auto n = readInteger(r.json, (*count)[std::size_t(axis)], elementPointer, 0,
-                                           kMaxRepeatCount);
-                if (!n) continue;
-                m.counts[axis] = *n;
-                if (periodOk && *n > 1 && !(m.vector[axis] > 0.0f))
-                    r.json.error(elementPointer, std::string("count ") + std::to_string(*n) +
-                                                     " along " + "xyz"[axis] +
-                                                     " needs a period > 0 on that axis, got " +
-                                                     formatNumber(m.vector[axis]));
-            }
-        }
-    }
-    if (const Json* neighbours = findMember(object, "neighbours")) {
-        if (neighbours->is_boolean()) {
-            m.neighbours = neighbours->get<bool>();
-        } else {
-            r.json.error(childPointer(pointer, "neighbours"),
-                         "expected true or false, got " + jsonTypeName(*neighbours));
-        }
-    }
-}
-
+// A modifier: its parameters as its catalogue row describes them, then the row's own checks.
 void readModifier(const SceneReader& r, const Json& object, const std::string& pointer,
                   SdfModifier& m) {
     m.pointer = pointer;
+    const std::vector<std::string> names = modifierNames();
     const Json* type = findMember(object, "type");
     if (!type) {
-        r.json.error(pointer, "missing \"type\"; known modifiers: " + quotedList(kModifierNames));
+        r.json.error(pointer, "missing \"type\"; known modifiers: " + quotedList(names));
         return;
     }
     const std::string typePointer = childPointer(pointer, "type");
     const auto name = readString(r.json, *type, typePointer);
     if (!name) return;
-    const auto it = std::find(kModifierNames.begin(), kModifierNames.end(), *name);
-    if (it == kModifierNames.end()) {
+    const ModifierSpec* spec = findModifier(*name);
+    if (!spec) {
         r.json.error(typePointer, "unknown modifier \"" + *name + "\"; known modifiers: " +
-                                      quotedList(sortedByDistance(*name, kModifierNames)));
+                                      quotedList(sortedByDistance(*name, names)));
         return;
     }
-    const std::size_t index = std::size_t(it - kModifierNames.begin());
-    m.type = SdfModifierType(index);
-    warnUnknownKeys(r.json, object, pointer, kModifierKeys[index]);
-    switch (m.type) {
-    case SdfModifierType::Repeat:
-        readRepeat(r, object, pointer, m);
-        break;
-    case SdfModifierType::Mirror: {
-        const Json* axes = findMember(object, "axes");
-        if (!axes) {
-            r.json.error(pointer, "missing \"axes\" (the axes to mirror, e.g. \"x\" or \"xz\")");
-            break;
-        }
-        const std::string axesPointer = childPointer(pointer, "axes");
-        const auto text = readString(r.json, *axes, axesPointer);
-        if (!text) break;
-        bool ok = !text->empty();
-        for (char c : *text) {
-            const int axis = c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1;
-            if (axis < 0 || m.axes[axis]) ok = false;
-            if (axis >= 0) m.axes[axis] = true;
-        }
-        if (!ok)
-            r.json.error(axesPointer, "expected one to three different axes among \"x\", "
-                                      "\"y\", \"z\" (e.g. \"xz\"), got \"" +
-                                          *text + "\"");
-        break;
+    m = defaultModifier(spec->type);
+    m.pointer = pointer;
+    std::vector<std::string> known = {"type"};
+    for (const ModifierParam& param : spec->params)
+        known.emplace_back(param.spec.key);
+    warnUnknownKeys(r.json, object, pointer, known);
+    unsigned readOk = 0;
+    for (std::size_t i = 0; i < spec->params.size(); ++i) {
+        const ModifierParam& param = spec->params[i];
+        const bool ok = std::visit(
+            [&](auto field) { return readParam(r.json, object, pointer, param.spec, m.*field); },
+            param.field);
+        if (ok) readOk |= 1u << i;
     }
-    case SdfModifierType::Polar: {
-        if (const Json* count = findMember(object, "count")) {
-            if (const auto n =
-                    readInteger(r.json, *count, childPointer(pointer, "count"), 1, kMaxPolarCopies))
-                m.count = *n;
-        } else {
-            r.json.error(pointer, "missing \"count\" (the number of copies around the axis)");
-        }
-        if (const Json* axis = findMember(object, "axis"))
-            if (const auto a = readAxisName(r, *axis, childPointer(pointer, "axis"))) m.axis = *a;
-        break;
-    }
-    case SdfModifierType::Elongate: {
-        const Json* extents = findMember(object, "half_extents");
-        if (!extents) {
-            r.json.error(pointer, "missing \"half_extents\" (half the stretch along x, y, z)");
-            break;
-        }
-        float v[3];
-        if (readNumbers(r.json, *extents, childPointer(pointer, "half_extents"), 3, v,
-                        NumberRange::closed(0.0, kMaxLength)))
-            m.vector = glm::vec3(v[0], v[1], v[2]);
-        break;
-    }
-    case SdfModifierType::Twist:
-    case SdfModifierType::Bend:
-        readRequiredNumber(r, object, pointer, "amount", &m.amount,
-                           NumberRange::closed(-3600.0, 3600.0), "degrees per unit length");
-        m.radius = 1.0f;
-        readNumberField(r.json, object, pointer, "radius", &m.radius,
-                        NumberRange::openClosed(0.0, kMaxLength));
-        break;
-    case SdfModifierType::Round:
-        readRequiredNumber(r, object, pointer, "radius", &m.radius,
-                           NumberRange::closed(0.0, kMaxLength), "the rounding radius");
-        break;
-    case SdfModifierType::Onion:
-        readRequiredNumber(r, object, pointer, "thickness", &m.thickness,
-                           NumberRange::openClosed(0.0, kMaxLength), "the shell thickness");
-        break;
-    case SdfModifierType::Displace:
-        readRequiredNumber(r, object, pointer, "amplitude", &m.amount,
-                           NumberRange::closed(0.0, kMaxLength), "the noise amplitude");
-        readNumberField(r.json, object, pointer, "frequency", &m.frequency,
-                        NumberRange::openClosed(0.0, 1.0e3));
-        break;
+    if (!spec->check) return;
+    std::vector<ModifierProblem> problems;
+    spec->check(m, readOk, problems);
+    for (const ModifierProblem& problem : problems) {
+        std::string at = childPointer(pointer, problem.key);
+        if (problem.element >= 0) at = childPointer(at, std::size_t(problem.element));
+        r.json.error(at, problem.message);
     }
 }
 

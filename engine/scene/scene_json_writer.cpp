@@ -5,6 +5,8 @@
 #include "scene/scene_json.hpp"
 
 #include "lighting_json.hpp"
+#include "param_json.hpp"
+#include "sdf/modifiers.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -93,49 +95,13 @@ Json vec2ToJson(glm::vec2 v) {
     return Json::array({floatToJson(v.x), floatToJson(v.y)});
 }
 
-// A modifier with the keys docs/scene-format.md ("Modifiers") gives it.
+// A modifier with the keys of its catalogue row.
 Json modifierToJson(const SdfModifier& m) {
-    constexpr const char* kNames[] = {"repeat", "mirror", "polar", "elongate", "twist",
-                                      "bend",   "round",  "onion", "displace"}; // type order
+    const ModifierSpec& spec = modifierSpec(m.type);
     Json out = Json::object();
-    out["type"] = kNames[std::size_t(m.type)];
-    switch (m.type) {
-    case SdfModifierType::Repeat:
-        out["period"] = vec3ToJson(m.vector);
-        if (m.counts != glm::ivec3(0))
-            out["count"] = Json::array({m.counts.x, m.counts.y, m.counts.z});
-        if (m.neighbours) out["neighbours"] = true;
-        break;
-    case SdfModifierType::Mirror: {
-        std::string axes;
-        for (int axis = 0; axis < 3; ++axis)
-            if (m.axes[axis]) axes += "xyz"[axis];
-        out["axes"] = axes;
-        break;
-    }
-    case SdfModifierType::Polar:
-        out["count"] = m.count;
-        out["axis"] = std::string(1, "xyz"[std::clamp(m.axis, 0, 2)]);
-        break;
-    case SdfModifierType::Elongate:
-        out["half_extents"] = vec3ToJson(m.vector);
-        break;
-    case SdfModifierType::Twist:
-    case SdfModifierType::Bend:
-        out["amount"] = floatToJson(m.amount);
-        out["radius"] = floatToJson(m.radius);
-        break;
-    case SdfModifierType::Round:
-        out["radius"] = floatToJson(m.radius);
-        break;
-    case SdfModifierType::Onion:
-        out["thickness"] = floatToJson(m.thickness);
-        break;
-    case SdfModifierType::Displace:
-        out["amplitude"] = floatToJson(m.amount);
-        out["frequency"] = floatToJson(m.frequency);
-        break;
-    }
+    out["type"] = spec.name;
+    for (const ModifierParam& param : spec.params)
+        std::visit([&](auto field) { writeParam(param.spec, m.*field, out); }, param.field);
     return out;
 }
 

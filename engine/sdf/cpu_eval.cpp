@@ -3,6 +3,8 @@
 // what the shader computes.
 #include "sdf/cpu_eval.hpp"
 
+#include "sdf/modifiers.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -106,107 +108,10 @@ float combine(SdfOp op, float a, float b, const glm::vec4& opParams, float& weig
     return std::min(-k, std::max(a, b)) + glm::length(u);
 }
 
-// Lattice value of the displacement noise at integer cell c, in [-1, 1]: a spatial hash of the
-// cell (the primes of Teschner et al. 2003, "Optimized spatial hashing for collision detection
-// of deformable objects") mixed by the "lowbias32" finalizer from C. Wellons' hash prospector
-// (https://nullprogram.com/blog/2018/07/31/). Unsigned 32-bit arithmetic, as in GLSL.
-float latticeValue(glm::ivec3 c) {
-    std::uint32_t h = std::uint32_t(c.x) * 0x8da6b343u + std::uint32_t(c.y) * 0xd8163841u +
-                      std::uint32_t(c.z) * 0xcb1ab31fu;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return float(h >> 8) * (2.0f / 16777215.0f) - 1.0f;
-}
-
-// Value noise (sdfValueNoise in the shader): lattice values blended trilinearly with the cubic
-// smoothstep weights 3t^2 - 2t^3 (Perlin 1985, "An image synthesizer"; Quilez, "Value noise
-// derivatives", https://iquilezles.org/articles/morenoise/). In [-1, 1]; gradient length at
-// most 3 sqrt(3) (kNoiseGradientBound in the compiler).
-float valueNoise(glm::vec3 p) {
-    const glm::vec3 cell = glm::floor(p);
-    const glm::vec3 f = p - cell;
-    const glm::vec3 u = f * f * (3.0f - 2.0f * f);
-    const glm::ivec3 c(cell);
-    const float x00 =
-        glm::mix(latticeValue(c + glm::ivec3(0, 0, 0)), latticeValue(c + glm::ivec3(1, 0, 0)), u.x);
-    const float x10 =
-        glm::mix(latticeValue(c + glm::ivec3(0, 1, 0)), latticeValue(c + glm::ivec3(1, 1, 0)), u.x);
-    const float x01 =
-        glm::mix(latticeValue(c + glm::ivec3(0, 0, 1)), latticeValue(c + glm::ivec3(1, 0, 1)), u.x);
-    const float x11 =
-        glm::mix(latticeValue(c + glm::ivec3(0, 1, 1)), latticeValue(c + glm::ivec3(1, 1, 1)), u.x);
-    return glm::mix(glm::mix(x00, x10, u.y), glm::mix(x01, x11, u.y), u.z);
-}
-
-// A point modifier (sdfPointModifier in the shader). Formulas: Inigo Quilez, "Distance
-// functions" (twist, bend, elongation) and "Domain repetition"
-// (https://iquilezles.org/articles/sdfrepetition/); polar repetition as hg_sdf's pModPolar.
-glm::vec3 pointModifier(const GpuSdfInstruction& instruction, glm::vec3 p) {
-    const glm::vec4* a = instruction.params;
-    switch (SdfPointModifierKind(instruction.kind)) {
-    case SdfPointModifierKind::Repeat:
-        for (int axis = 0; axis < 3; ++axis) {
-            const float period = a[0][axis];
-            if (!(period > 0.0f)) continue;
-            const float copies = a[1][axis];
-            // Limited: cells 0 .. copies-1 centred on the origin; infinite: every integer.
-            const float first = copies > 0.0f ? 0.5f * (copies - 1.0f) : 0.0f;
-            float id = std::floor(p[axis] / period + first + 0.5f);
-            if (copies > 0.0f) id = std::clamp(id, 0.0f, copies - 1.0f);
-            if (a[2].w > 0.5f && a[2][axis] > 0.5f) {
-                // The neighbour on the side of the point within its cell.
-                id += p[axis] - (id - first) * period < 0.0f ? -1.0f : 1.0f;
-                if (copies > 0.0f) id = std::clamp(id, 0.0f, copies - 1.0f);
-            }
-            p[axis] -= (id - first) * period;
-        }
-        return p;
-    case SdfPointModifierKind::Mirror:
-        return glm::mix(p, glm::abs(p), glm::vec3(a[0]));
-    case SdfPointModifierKind::Polar: {
-        const float sector = 6.28318530718f / a[0].x;
-        const int axis = int(a[0].y);
-        const int u = axis == 0 ? 1 : 0;
-        const int v = axis == 2 ? 1 : 2;
-        const float angle = std::atan2(p[v], p[u]);
-        const float turn = std::floor(angle / sector + 0.5f) * sector;
-        const float c = std::cos(turn);
-        const float s = std::sin(turn);
-        const float pu = p[u];
-        p[u] = c * pu + s * p[v];
-        p[v] = c * p[v] - s * pu;
-        return p;
-    }
-    case SdfPointModifierKind::Elongate:
-        return p - glm::clamp(p, -glm::vec3(a[0]), glm::vec3(a[0]));
-    case SdfPointModifierKind::Twist: {
-        const float c = std::cos(a[0].x * p.y);
-        const float s = std::sin(a[0].x * p.y);
-        return glm::vec3(c * p.x - s * p.z, p.y, s * p.x + c * p.z);
-    }
-    case SdfPointModifierKind::Bend: {
-        const float c = std::cos(a[0].x * p.x);
-        const float s = std::sin(a[0].x * p.x);
-        return glm::vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
-    }
-    }
-    return p;
-}
-
 // A distance modifier at the current point (sdfDistanceModifier in the shader).
 float distanceModifier(const GpuSdfInstruction& instruction, float d, glm::vec3 p) {
-    switch (SdfDistanceModifierKind(instruction.kind)) {
-    case SdfDistanceModifierKind::Round:
-        return d - instruction.params[0].x;
-    case SdfDistanceModifierKind::Onion:
-        return std::abs(d) - instruction.params[0].x;
-    case SdfDistanceModifierKind::Displace:
-        return d + instruction.params[0].x * valueNoise(p * instruction.params[0].y);
-    }
-    return d;
+    return modifierOfKind(ModifierStage::Distance, instruction.kind)
+        .changeDistance(d, p, instruction.params);
 }
 
 // Signed distance to the polygon of `count` points from data[first] (the xy of each entry):
@@ -297,7 +202,7 @@ bool pointStep(const GpuSdfInstruction& instruction, glm::vec3& p,
         return true;
     }
     case SdfOpcode::PointModifier:
-        p = pointModifier(instruction, p);
+        p = modifierOfKind(ModifierStage::Point, instruction.kind).movePoint(p, instruction.params);
         return true;
     case SdfOpcode::PopPoint:
         assert(savedTop > 0);

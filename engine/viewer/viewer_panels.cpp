@@ -7,6 +7,7 @@
 
 #include "editor/material_texture_edits.hpp"
 #include "editor/scene_edits.hpp"
+#include "sdf/modifiers.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -482,15 +483,13 @@ bool editShell(SdfNode& node, const std::filesystem::path& sceneFolder) {
 // the fields of its type and a remove button, then a menu to add one. Lengths drag in steps
 // that follow the object's `size`. Returns true when anything changed.
 bool editModifiers(SdfNode& node, float size) {
-    static const char* kNames[] = {"repeat", "mirror", "polar", "elongate", "twist",
-                                   "bend",   "round",  "onion", "displace"};
     bool changed = false;
     ImGui::TextDisabled("Modifiers");
     const float step = stepFor(size);
     for (std::size_t i = 0; i < node.modifiers.size(); ++i) {
         SdfModifier& m = node.modifiers[i];
         ImGui::PushID(int(i));
-        ImGui::Text("%zu. %s", i + 1, kNames[int(m.type)]);
+        ImGui::Text("%zu. %s", i + 1, std::string(modifierSpec(m.type).name).c_str());
         ImGui::SameLine();
         if (ImGui::SmallButton("remove")) {
             node.modifiers.erase(node.modifiers.begin() + std::ptrdiff_t(i));
@@ -549,10 +548,10 @@ bool editModifiers(SdfNode& node, float size) {
         ImGui::PopID();
     }
     if (ImGui::BeginCombo("add modifier", "...")) {
-        for (int t = 0; t < int(std::size(kNames)); ++t) {
-            if (!ImGui::Selectable(kNames[t])) continue;
+        for (const ModifierSpec& spec : modifierCatalogue()) {
+            if (!ImGui::Selectable(std::string(spec.name).c_str())) continue;
             SdfModifier m;
-            m.type = SdfModifierType(t);
+            m.type = spec.type;
             // Defaults that show the effect at the object's size.
             m.vector = m.type == SdfModifierType::Repeat ? glm::vec3(size * 3.0f, 0.0f, 0.0f)
                                                          : glm::vec3(size * 0.5f, 0.0f, 0.0f);

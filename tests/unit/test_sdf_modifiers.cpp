@@ -5,6 +5,7 @@
 #include "scene/scene_json.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/cpu_eval.hpp"
+#include "sdf/modifiers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -408,7 +409,7 @@ TEST(SdfCompilerModifiers, EmitsPointFramesOnlyWhereThePointIsNeeded) {
     ASSERT_EQ(twisted.instructions.size(), expected.size());
     for (std::size_t i = 0; i < expected.size(); ++i)
         EXPECT_EQ(twisted.instructions[i].opcode, std::uint32_t(expected[i])) << i;
-    EXPECT_EQ(twisted.instructions[1].kind, std::uint32_t(SdfPointModifierKind::Twist));
+    EXPECT_EQ(twisted.instructions[1].kind, modifierKind(SdfModifierType::Twist));
     EXPECT_NEAR(twisted.instructions[1].params[0].x, radians(30), 1e-6);
     // The push carries the node's world-to-local; the shape then reads the point as it is.
     EXPECT_EQ(twisted.instructions[0].worldToLocal[1], glm::vec4(0, 1, 0, -2));

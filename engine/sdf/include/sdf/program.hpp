@@ -35,9 +35,9 @@ enum class SdfOpcode : std::uint32_t {
     Shape = 0,            // push the distance of primitive `kind` at worldToLocal * p
     Combine = 1,          // pop b, pop a, push op `kind` (an SdfOp) of a and b
     PushPoint = 2,        // save p on the point stack, then p = worldToLocal * p
-    PointModifier = 3,    // p = modifier `kind` (SdfPointModifierKind) of p
+    PointModifier = 3,    // p = point modifier `kind` of p (modifierKind, sdf/modifiers.hpp)
     PopPoint = 4,         // p = the saved point on top of the point stack (popped)
-    DistanceModifier = 5, // top of the value stack changed by `kind` (SdfDistanceModifierKind)
+    DistanceModifier = 5, // top of the value stack changed by distance modifier `kind`
     Profile = 6,          // push the distance of a 2D profile solid (`kind`: SdfProfileType)
     // Bounds (the compiler's bounding-volume hierarchy over the plain unions at the top of the
     // tree): the program keeps the union of the finished parts in a running value `best`.
@@ -54,20 +54,9 @@ enum class SdfOpcode : std::uint32_t {
     SeedBest = 9,
 };
 
-// PointModifier parameters:
-//   Repeat:   params[0].xyz period (0: axis not repeated), params[1].xyz copies (0: infinite),
-//             params[2].xyz neighbour cell selector (0 own cell, 1 nearest neighbour),
-//             params[2].w 1 when the selector is used
-//   Mirror:   params[0].xyz 1 where the axis is folded
-//   Polar:    params[0].x copies, params[0].y axis (0 x, 1 y, 2 z)
-//   Elongate: params[0].xyz half extents
-//   Twist:    params[0].x radians per unit along y
-//   Bend:     params[0].x radians per unit along x
-enum class SdfPointModifierKind : std::uint32_t { Repeat, Mirror, Polar, Elongate, Twist, Bend };
-// DistanceModifier parameters (lengths already in the units of the value on the stack):
-//   Round: params[0].x radius; Onion: params[0].x thickness;
-//   Displace: params[0].x amplitude, params[0].y frequency (in the point's units)
-enum class SdfDistanceModifierKind : std::uint32_t { Round, Onion, Displace };
+// PointModifier and DistanceModifier parameters: as the modifier's catalogue row packs them
+// (ModifierSpec::pack in engine/sdf/modifiers.cpp), lengths of distance modifiers already in the
+// units of the value on the stack.
 // Profile parameters: params[0] = (radius, half width, half height, -), params[1] = (solid:
 // 0 extrusion / 1 revolution, half depth or offset, -, -), params[2] = (first point in the data
 // buffer, point count, -, -); worldToLocal and misc as for Shape.
