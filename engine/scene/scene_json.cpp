@@ -1,5 +1,5 @@
 // Reading scene files (format version 1, docs/scene-format.md): each section is checked field
-// by field against the format and the catalogues (primitives, modifiers), reporting every
+// by field against the format and the catalogues (primitives, modifiers, operations), reporting
 // problem with its JSON pointer and carrying on, so one run shows everything wrong with a file.
 #include "scene/scene_json.hpp"
 
@@ -9,6 +9,7 @@
 #include "material_texture_json.hpp"
 #include "param_json.hpp"
 #include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -37,30 +38,6 @@ const std::vector<std::string> kShapeCommonKeys = {"name",       "shape", "posit
                                                    "cut",        "shell"};
 const std::vector<std::string> kShellKeys = {"proxy", "bound", "mesh"};
 const std::vector<std::string> kShellProxies = {"box", "sphere", "mesh"};
-
-struct OpName {
-    SdfOp op;
-    const char* name;
-    bool smooth; // needs "smoothness" (smooth: blend width; chamfer, round: radius)
-    bool blend;  // accepts "blend" (the smooth-minimum curve)
-};
-// In SdfOp order.
-constexpr OpName kOps[] = {
-    {SdfOp::Union, "union", false, false},
-    {SdfOp::Subtraction, "subtraction", false, false},
-    {SdfOp::Intersection, "intersection", false, false},
-    {SdfOp::SmoothUnion, "smooth_union", true, true},
-    {SdfOp::SmoothSubtraction, "smooth_subtraction", true, true},
-    {SdfOp::SmoothIntersection, "smooth_intersection", true, true},
-    {SdfOp::Xor, "xor", false, false},
-    {SdfOp::ChamferUnion, "chamfer_union", true, false},
-    {SdfOp::ChamferSubtraction, "chamfer_subtraction", true, false},
-    {SdfOp::ChamferIntersection, "chamfer_intersection", true, false},
-    {SdfOp::RoundUnion, "round_union", true, false},
-    {SdfOp::RoundSubtraction, "round_subtraction", true, false},
-    {SdfOp::RoundIntersection, "round_intersection", true, false},
-};
-const std::vector<std::string> kBlendNames = {"polynomial", "circular"}; // SmoothBlend order
 
 // Everything the section readers share.
 struct SceneReader {
@@ -506,46 +483,42 @@ void readGroup(SceneReader& r, const Json& object, const std::string& pointer, i
     if (const Json* op = findMember(object, "op")) {
         const std::string opPointer = childPointer(pointer, "op");
         if (const auto name = readString(r.json, *op, opPointer)) {
-            const auto it = std::find_if(std::begin(kOps), std::end(kOps),
-                                         [&](const OpName& o) { return o.name == *name; });
-            if (it != std::end(kOps)) {
-                node.op = it->op;
+            if (const OperationSpec* spec = findOperation(*name)) {
+                node.op = spec->op;
             } else {
-                std::vector<std::string> names;
-                for (const OpName& o : kOps)
-                    names.emplace_back(o.name);
                 r.json.error(opPointer, "unknown op \"" + *name + "\"; valid ops: " +
-                                            quotedList(sortedByDistance(*name, names)));
+                                            quotedList(sortedByDistance(*name, operationNames())));
             }
         }
     }
-    const OpName& op = kOps[std::size_t(node.op)];
+    const std::string opName(operationSpec(node.op).name);
     const Json* smoothness = findMember(object, "smoothness");
-    if (op.smooth) {
+    if (takesSmoothness(node.op)) {
         if (smoothness) {
             readNumberField(r.json, object, pointer, "smoothness", &node.smoothness,
                             NumberRange::above(0.0));
         } else {
-            r.json.error(pointer, std::string("op \"") + op.name +
+            r.json.error(pointer, "op \"" + opName +
                                       "\" needs \"smoothness\" (a number > 0, in world units)");
         }
     } else if (smoothness) {
-        r.json.warning(childPointer(pointer, "smoothness"),
-                       std::string("\"smoothness\" is ignored by op \"") + op.name +
-                           "\"; use a smooth_ op to blend");
+        r.json.warning(childPointer(pointer, "smoothness"), "\"smoothness\" is ignored by op \"" +
+                                                                opName +
+                                                                "\"; use a smooth_ op to blend");
     }
     if (const Json* blend = findMember(object, "blend")) {
         const std::string blendPointer = childPointer(pointer, "blend");
-        if (!op.blend) {
-            r.json.warning(blendPointer, std::string("\"blend\" is ignored by op \"") + op.name +
+        if (!takesBlend(node.op)) {
+            r.json.warning(blendPointer, "\"blend\" is ignored by op \"" + opName +
                                              "\"; only the smooth_ ops blend");
         } else if (const auto name = readString(r.json, *blend, blendPointer)) {
-            const auto it = std::find(kBlendNames.begin(), kBlendNames.end(), *name);
-            if (it != kBlendNames.end()) {
-                node.blend = SmoothBlend(it - kBlendNames.begin());
+            const auto spec = std::find_if(blendCatalogue().begin(), blendCatalogue().end(),
+                                           [&](const BlendSpec& b) { return b.name == *name; });
+            if (spec != blendCatalogue().end()) {
+                node.blend = spec->blend;
             } else {
                 r.json.error(blendPointer, "unknown blend \"" + *name +
-                                               "\"; valid blends: " + quotedList(kBlendNames));
+                                               "\"; valid blends: " + quotedList(blendNames()));
             }
         }
     }

@@ -7,6 +7,7 @@
 #include "lighting_json.hpp"
 #include "param_json.hpp"
 #include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -14,32 +15,6 @@
 
 namespace rmsc {
 namespace {
-
-// In SdfOp order.
-constexpr const char* kOpNames[] = {"union",
-                                    "subtraction",
-                                    "intersection",
-                                    "smooth_union",
-                                    "smooth_subtraction",
-                                    "smooth_intersection",
-                                    "xor",
-                                    "chamfer_union",
-                                    "chamfer_subtraction",
-                                    "chamfer_intersection",
-                                    "round_union",
-                                    "round_subtraction",
-                                    "round_intersection"};
-constexpr const char* kBlendNames[] = {"polynomial", "circular"}; // SmoothBlend order
-
-bool isSmooth(SdfOp op) {
-    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::SmoothIntersection;
-}
-
-// Operations with a radius in "smoothness": the smooth, chamfer and round ones.
-bool hasRadius(SdfOp op) {
-    return isSmooth(op) || (op >= SdfOp::ChamferUnion && op <= SdfOp::RoundIntersection);
-}
 
 // Material keys of the written file, one per Scene::materials entry. Scenes built in code may
 // have empty or repeated names; those get "material_<index>" so every key is unique.
@@ -142,10 +117,10 @@ Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& material
     Json out = Json::object();
     if (!node.name.empty()) out["name"] = node.name;
     if (node.isGroup) {
-        out["op"] = kOpNames[std::size_t(node.op)];
-        if (hasRadius(node.op)) out["smoothness"] = floatToJson(node.smoothness);
-        if (isSmooth(node.op) && node.blend != SmoothBlend::Polynomial)
-            out["blend"] = kBlendNames[std::size_t(node.blend)];
+        out["op"] = operationSpec(node.op).name;
+        if (takesSmoothness(node.op)) out["smoothness"] = floatToJson(node.smoothness);
+        if (takesBlend(node.op) && node.blend != blendCatalogue().front().blend)
+            out["blend"] = blendCatalogue()[std::size_t(node.blend)].name;
     } else if (node.profile) {
         writeProfileShape(*node.profile, out);
     } else {

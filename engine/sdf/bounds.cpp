@@ -7,6 +7,7 @@
 
 #include "sdf/compiler.hpp"
 #include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -514,14 +515,14 @@ SdfBounds parentBoundsAt(const SdfNode& node, float level, float fieldScale) {
     return boundedBy(transformAabb(local.box, node.transform.matrix()));
 }
 
+// Unions and xor (xor = max(min(a, b), -max(a, b)) <= min(a, b) is bounded like a union).
 bool isUnionLike(SdfOp op) {
-    return op == SdfOp::Union || op == SdfOp::Xor || op == SdfOp::SmoothUnion ||
-           op == SdfOp::ChamferUnion || op == SdfOp::RoundUnion;
+    const SdfOpCombination combination = operationSpec(op).combination;
+    return combination == SdfOpCombination::Union || combination == SdfOpCombination::Xor;
 }
 
 bool isIntersectionLike(SdfOp op) {
-    return op == SdfOp::Intersection || op == SdfOp::SmoothIntersection ||
-           op == SdfOp::ChamferIntersection || op == SdfOp::RoundIntersection;
+    return operationSpec(op).combination == SdfOpCombination::Intersection;
 }
 
 // For a union-like op(a, b) <= t: the level u with min(a, b) <= u. `k` is the smoothness as a
@@ -561,8 +562,7 @@ SdfBounds groupBoundsAt(const SdfNode& node, float t, float fieldScale) {
     if (kept.empty()) return boundedBy(Aabb{});
     const SdfOp op = node.op;
     const float k = std::max(node.smoothness, 0.0f) / fieldScale;
-    if (!std::isfinite(k) &&
-        (op == SdfOp::SmoothUnion || op == SdfOp::ChamferUnion || op == SdfOp::RoundUnion))
+    if (!std::isfinite(k) && isUnionLike(op) && takesSmoothness(op))
         return unbounded(node.pointer); // refused by the compiler anyway
 
     if (isUnionLike(op)) {

@@ -7,6 +7,7 @@
 #include "core/object_ids.hpp"
 #include "sdf/bounds.hpp"
 #include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -55,6 +56,11 @@ struct ShellSite {
     std::uint32_t idBase = 0; // pre-order index of the shell node in the whole tree
 };
 
+// The cut nodes of a group are subtracted with the subtraction of the group's seam.
+SdfOp cutOp(SdfOp op) {
+    return withCombination(op, SdfOpCombination::Subtraction);
+}
+
 // A node needs its own point frame when a modifier reads or changes the point.
 bool needsPointFrame(const SdfNode& node) {
     for (const SdfModifier& m : node.modifiers) {
@@ -68,26 +74,6 @@ bool needsPointFrame(const SdfNode& node) {
 int neighbourCells(const SdfModifier& m) {
     const ModifierSpec& spec = modifierSpec(m.type);
     return spec.cells ? spec.cells(m) : 1;
-}
-
-// The cut nodes of a group are subtracted with the subtraction of the group's family.
-SdfOp cutOp(SdfOp op) {
-    switch (op) {
-    case SdfOp::SmoothUnion:
-    case SdfOp::SmoothSubtraction:
-    case SdfOp::SmoothIntersection:
-        return SdfOp::SmoothSubtraction;
-    case SdfOp::ChamferUnion:
-    case SdfOp::ChamferSubtraction:
-    case SdfOp::ChamferIntersection:
-        return SdfOp::ChamferSubtraction;
-    case SdfOp::RoundUnion:
-    case SdfOp::RoundSubtraction:
-    case SdfOp::RoundIntersection:
-        return SdfOp::RoundSubtraction;
-    default:
-        return SdfOp::Subtraction;
-    }
 }
 
 constexpr long kCountCap = 1L << 40; // instruction counts saturate here (no overflow)
@@ -109,52 +95,6 @@ ChainCost chainCost(const std::vector<SdfModifier>& modifiers, std::size_t i, Ch
     if (cells == 1) return {std::min(rest.instructions + 1, kCountCap), rest.stack, rest.points};
     return {std::min(cells * (rest.instructions + 3) + cells - 1, kCountCap), rest.stack + 1,
             rest.points + 1};
-}
-
-// Operations that need a radius in `smoothness`: the smooth, chamfer and round ones.
-bool isSmooth(SdfOp op) {
-    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::SmoothIntersection || op == SdfOp::ChamferUnion ||
-           op == SdfOp::ChamferSubtraction || op == SdfOp::ChamferIntersection ||
-           op == SdfOp::RoundUnion || op == SdfOp::RoundSubtraction ||
-           op == SdfOp::RoundIntersection;
-}
-
-bool isSubtraction(SdfOp op) {
-    return op == SdfOp::Subtraction || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::ChamferSubtraction || op == SdfOp::RoundSubtraction;
-}
-
-std::string opName(SdfOp op) {
-    switch (op) {
-    case SdfOp::Union:
-        return "union";
-    case SdfOp::Subtraction:
-        return "subtraction";
-    case SdfOp::Intersection:
-        return "intersection";
-    case SdfOp::SmoothUnion:
-        return "smooth union";
-    case SdfOp::SmoothSubtraction:
-        return "smooth subtraction";
-    case SdfOp::SmoothIntersection:
-        return "smooth intersection";
-    case SdfOp::Xor:
-        return "xor";
-    case SdfOp::ChamferUnion:
-        return "chamfer union";
-    case SdfOp::ChamferSubtraction:
-        return "chamfer subtraction";
-    case SdfOp::ChamferIntersection:
-        return "chamfer intersection";
-    case SdfOp::RoundUnion:
-        return "round union";
-    case SdfOp::RoundSubtraction:
-        return "round subtraction";
-    case SdfOp::RoundIntersection:
-        return "round intersection";
-    }
-    return "operation";
 }
 
 // Smallest singular value of the linear part of `m`: the least a world-space length can shrink
@@ -323,7 +263,7 @@ class Planner {
                                  "through the depth buffer (a plain union), so it can only sit "
                                  "in plain union groups without modifiers; ";
         if (group.op != SdfOp::Union)
-            return lead + "its group " + group.pointer + " is a " + opName(group.op);
+            return lead + "its group " + group.pointer + " is a " + operationLabel(group.op);
         if (!group.modifiers.empty())
             return lead + "its group " + group.pointer +
                    " has modifiers, which would not "
@@ -391,15 +331,16 @@ class Planner {
     void checkGroup(const SdfNode& node) {
         if (node.children.empty())
             diagnostics_.error(file_, node.pointer,
-                               "the " + opName(node.op) + " group has no children");
-        if (isSubtraction(node.op) && node.children.size() == 1)
+                               "the " + operationLabel(node.op) + " group has no children");
+        if (operationSpec(node.op).combination == SdfOpCombination::Subtraction &&
+            node.children.size() == 1)
             diagnostics_.error(file_, node.pointer,
-                               "a " + opName(node.op) +
+                               "a " + operationLabel(node.op) +
                                    " needs at least two children (the shape and what to "
                                    "subtract from it), got one");
-        if (isSmooth(node.op) && !(std::isfinite(node.smoothness) && node.smoothness > 0.0f))
+        if (takesSmoothness(node.op) && !(std::isfinite(node.smoothness) && node.smoothness > 0.0f))
             diagnostics_.error(file_, node.pointer,
-                               "the smoothness (radius) of a " + opName(node.op) +
+                               "the smoothness (radius) of a " + operationLabel(node.op) +
                                    " must be a finite number > 0, got " +
                                    std::to_string(node.smoothness));
     }
