@@ -2,6 +2,7 @@
 // of json_reader.hpp, plus the spec's description where a key is missing.
 #include "param_json.hpp"
 
+#include "sdf/profiles.hpp"
 #include "transform_json.hpp"
 
 #include <cassert>
@@ -161,6 +162,38 @@ bool readParam(const JsonReader& reader, const Json& object, const std::string& 
     return ok;
 }
 
+bool readParam(const JsonReader& reader, const Json& object, const std::string& pointer,
+               const SdfParamSpec& spec, std::vector<glm::vec2>& out) {
+    assert(spec.type == ParamType::Points);
+    bool ok = true;
+    const Json* value = member(reader, object, pointer, spec, ok);
+    if (!value) return ok;
+    const std::string valuePointer = keyPointer(pointer, spec);
+    if (!value->is_array()) {
+        reader.error(valuePointer,
+                     "expected an array of [x, y] points, got " + jsonTypeName(*value));
+        return false;
+    }
+    if (value->size() < std::size_t(kMinPolygonPoints) ||
+        value->size() > std::size_t(kMaxPolygonPoints)) {
+        reader.error(valuePointer, "a polygon needs " + std::to_string(kMinPolygonPoints) + " to " +
+                                       std::to_string(kMaxPolygonPoints) + " points, got " +
+                                       std::to_string(value->size()));
+        return false;
+    }
+    out.clear();
+    for (std::size_t i = 0; i < value->size(); ++i) {
+        float v[2];
+        if (readNumbers(reader, (*value)[i], childPointer(valuePointer, i), 2, v,
+                        numberRange(spec))) {
+            out.emplace_back(v[0], v[1]);
+        } else {
+            ok = false;
+        }
+    }
+    return ok;
+}
+
 void setDefault(const SdfParamSpec& spec, float& out) {
     out = spec.value[0];
 }
@@ -181,6 +214,9 @@ void setDefault(const SdfParamSpec& spec, bool& out) {
 }
 void setDefault(const SdfParamSpec& spec, glm::bvec3& out) {
     out = glm::bvec3(spec.value[0] != 0.0f, spec.value[1] != 0.0f, spec.value[2] != 0.0f);
+}
+void setDefault(const SdfParamSpec&, std::vector<glm::vec2>& out) {
+    out.clear();
 }
 
 Json paramToJson(const SdfParamSpec&, float value) {
@@ -208,4 +244,11 @@ Json paramToJson(const SdfParamSpec&, glm::bvec3 value) {
         if (value[axis]) axes += "xyz"[axis];
     return axes;
 }
+Json paramToJson(const SdfParamSpec& spec, const std::vector<glm::vec2>& value) {
+    Json points = Json::array();
+    for (const glm::vec2& point : value)
+        points.push_back(paramToJson(spec, point));
+    return points;
+}
+
 } // namespace rmsc

@@ -19,7 +19,7 @@ NumberRange numberRange(const SdfParamSpec& spec);
 // Reads `spec.key` of `object` (at `pointer`) into `out`. Absent: an error when the parameter is
 // required, else `out` is left as it is (the default). Returns false on any error. The type of
 // `out` must be the one ParamType stores in: float (Number), int (Integer, Axis), glm::vec2,
-// glm::vec3, glm::ivec3, bool, glm::bvec3 (Axes).
+// glm::vec3, glm::ivec3, bool, glm::bvec3 (Axes), std::vector<glm::vec2> (Points).
 bool readParam(const JsonReader& reader, const Json& object, const std::string& pointer,
                const SdfParamSpec& spec, float& out);
 bool readParam(const JsonReader& reader, const Json& object, const std::string& pointer,
@@ -34,6 +34,8 @@ bool readParam(const JsonReader& reader, const Json& object, const std::string& 
                const SdfParamSpec& spec, bool& out);
 bool readParam(const JsonReader& reader, const Json& object, const std::string& pointer,
                const SdfParamSpec& spec, glm::bvec3& out);
+bool readParam(const JsonReader& reader, const Json& object, const std::string& pointer,
+               const SdfParamSpec& spec, std::vector<glm::vec2>& out);
 
 // Sets `out` to the spec's default.
 void setDefault(const SdfParamSpec& spec, float& out);
@@ -43,6 +45,7 @@ void setDefault(const SdfParamSpec& spec, glm::vec3& out);
 void setDefault(const SdfParamSpec& spec, glm::ivec3& out);
 void setDefault(const SdfParamSpec& spec, bool& out);
 void setDefault(const SdfParamSpec& spec, glm::bvec3& out);
+void setDefault(const SdfParamSpec& spec, std::vector<glm::vec2>& out);
 
 // Writes `value` as `spec.key` of `object`, unless the spec leaves the default out and `value`
 // is the default.
@@ -55,6 +58,7 @@ Json paramToJson(const SdfParamSpec& spec, glm::vec3 value);
 Json paramToJson(const SdfParamSpec& spec, glm::ivec3 value);
 Json paramToJson(const SdfParamSpec& spec, bool value);
 Json paramToJson(const SdfParamSpec& spec, glm::bvec3 value);
+Json paramToJson(const SdfParamSpec& spec, const std::vector<glm::vec2>& value);
 
 template <typename T> void writeParam(const SdfParamSpec& spec, const T& value, Json& object) {
     if (!spec.writtenAtDefault) {

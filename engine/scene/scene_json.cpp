@@ -1,6 +1,7 @@
 // Reading scene files (format version 1, docs/scene-format.md): each section is checked field
-// by field against the format and the catalogues (primitives, modifiers, operations), reporting
-// problem with its JSON pointer and carrying on, so one run shows everything wrong with a file.
+// by field against the format and the catalogues (primitives, modifiers, operations, profiles),
+// reporting every problem with its JSON pointer and carrying on, so one run shows everything
+// wrong with a file.
 #include "scene/scene_json.hpp"
 
 #include "core/limits.hpp"
@@ -10,6 +11,7 @@
 #include "param_json.hpp"
 #include "sdf/modifiers.hpp"
 #include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -255,13 +257,16 @@ void readShapeParams(SceneReader& r, const Json& object, const std::string& poin
 }
 
 constexpr int kMaxModifiers = 16; // per node
-constexpr int kMaxPolygonPoints = 256;
-constexpr float kMaxLength = 1.0e4f; // lengths, as the catalogue's
 
-const std::vector<std::string> kProfileTypes = {"circle", "rectangle", "rounded_rectangle",
-                                                "polygon"};
-const std::vector<std::vector<std::string>> kProfileKeys = {
-    {"type", "radius"}, {"type", "half_size"}, {"type", "half_size", "radius"}, {"type", "points"}};
+// Reports a catalogue row's problems at their keys (and elements) of the object at `pointer`.
+void reportProblems(const SceneReader& r, const std::string& pointer,
+                    const std::vector<ParamProblem>& problems) {
+    for (const ParamProblem& problem : problems) {
+        std::string at = childPointer(pointer, problem.key);
+        if (problem.element >= 0) at = childPointer(at, std::size_t(problem.element));
+        r.json.error(at, problem.message);
+    }
+}
 
 // A modifier: its parameters as its catalogue row describes them, then the row's own checks.
 void readModifier(const SceneReader& r, const Json& object, const std::string& pointer,
@@ -297,13 +302,9 @@ void readModifier(const SceneReader& r, const Json& object, const std::string& p
         if (ok) readOk |= 1u << i;
     }
     if (!spec->check) return;
-    std::vector<ModifierProblem> problems;
+    std::vector<ParamProblem> problems;
     spec->check(m, readOk, problems);
-    for (const ModifierProblem& problem : problems) {
-        std::string at = childPointer(pointer, problem.key);
-        if (problem.element >= 0) at = childPointer(at, std::size_t(problem.element));
-        r.json.error(at, problem.message);
-    }
+    reportProblems(r, pointer, problems);
 }
 
 void readModifiers(const SceneReader& r, const Json& object, const std::string& pointer,
@@ -331,117 +332,68 @@ void readModifiers(const SceneReader& r, const Json& object, const std::string& 
     }
 }
 
-void readPolygonPoints(const SceneReader& r, const Json& object, const std::string& pointer,
-                       SdfProfile& profile) {
-    const Json* points = findMember(object, "points");
-    if (!points) {
-        r.json.error(pointer, "missing \"points\" (the polygon's corners, [[x, y], ...])");
-        return;
-    }
-    const std::string pointsPointer = childPointer(pointer, "points");
-    if (!points->is_array()) {
-        r.json.error(pointsPointer,
-                     "expected an array of [x, y] points, got " + jsonTypeName(*points));
-        return;
-    }
-    if (points->size() < 3 || points->size() > std::size_t(kMaxPolygonPoints)) {
-        r.json.error(pointsPointer, "a polygon needs 3 to " + std::to_string(kMaxPolygonPoints) +
-                                        " points, got " + std::to_string(points->size()));
-        return;
-    }
-    bool ok = true;
-    for (std::size_t i = 0; i < points->size(); ++i) {
-        float v[2];
-        if (readNumbers(r.json, (*points)[i], childPointer(pointsPointer, i), 2, v,
-                        NumberRange::closed(-kMaxLength, kMaxLength))) {
-            profile.points.emplace_back(v[0], v[1]);
-        } else {
-            ok = false;
-        }
-    }
-    if (!ok) return;
-    // Shoelace formula: twice the signed area.
-    double area = 0.0;
-    for (std::size_t i = 0; i < profile.points.size(); ++i) {
-        const glm::vec2 a = profile.points[i];
-        const glm::vec2 b = profile.points[(i + 1) % profile.points.size()];
-        area += double(a.x) * b.y - double(b.x) * a.y;
-    }
-    if (!(std::abs(area) > 1e-12))
-        r.json.error(pointsPointer, "the polygon's points enclose no area (they are collinear "
-                                    "or repeated)");
-}
-
+// A profile: its parameters as its catalogue row describes them, then the row's own checks.
 void readProfile(const SceneReader& r, const Json& object, const std::string& pointer,
                  SdfProfile& profile) {
     if (!expectObject(r.json, object, pointer)) return;
+    const std::vector<std::string> names = profileNames();
     const Json* type = findMember(object, "type");
     if (!type) {
-        r.json.error(pointer, "missing \"type\"; profile types: " + quotedList(kProfileTypes));
+        r.json.error(pointer, "missing \"type\"; profile types: " + quotedList(names));
         return;
     }
     const std::string typePointer = childPointer(pointer, "type");
     const auto name = readString(r.json, *type, typePointer);
     if (!name) return;
-    const auto it = std::find(kProfileTypes.begin(), kProfileTypes.end(), *name);
-    if (it == kProfileTypes.end()) {
+    const ProfileSpec* spec = findProfile(*name);
+    if (!spec) {
         r.json.error(typePointer, "unknown profile type \"" + *name + "\"; profile types: " +
-                                      quotedList(sortedByDistance(*name, kProfileTypes)));
+                                      quotedList(sortedByDistance(*name, names)));
         return;
     }
-    const std::size_t index = std::size_t(it - kProfileTypes.begin());
-    profile.type = SdfProfileType(index);
-    warnUnknownKeys(r.json, object, pointer, kProfileKeys[index]);
-    if (profile.type == SdfProfileType::Circle) {
-        readNumberField(r.json, object, pointer, "radius", &profile.radius,
-                        NumberRange::openClosed(0.0, kMaxLength));
-    } else if (profile.type == SdfProfileType::Polygon) {
-        readPolygonPoints(r, object, pointer, profile);
-    } else {
-        bool sizeOk = true;
-        if (const Json* size = findMember(object, "half_size")) {
-            float v[2];
-            sizeOk = readNumbers(r.json, *size, childPointer(pointer, "half_size"), 2, v,
-                                 NumberRange::openClosed(0.0, kMaxLength));
-            if (sizeOk) profile.halfSize = glm::vec2(v[0], v[1]);
-        }
-        if (profile.type == SdfProfileType::RoundedRectangle) {
-            profile.radius = 0.1f;
-            if (readNumberField(r.json, object, pointer, "radius", &profile.radius,
-                                NumberRange::closed(0.0, kMaxLength)) &&
-                sizeOk && profile.radius > std::min(profile.halfSize.x, profile.halfSize.y))
-                r.json.error(childPointer(pointer, "radius"),
-                             "the corner radius " + formatNumber(profile.radius) +
-                                 " is larger than the smaller half size " +
-                                 formatNumber(std::min(profile.halfSize.x, profile.halfSize.y)));
-        }
+    profile.type = spec->type;
+    std::vector<std::string> known = {"type"};
+    for (const ProfileParam& param : spec->params)
+        known.emplace_back(param.spec.key);
+    warnUnknownKeys(r.json, object, pointer, known);
+    unsigned readOk = 0;
+    for (std::size_t i = 0; i < spec->params.size(); ++i) {
+        const ProfileParam& param = spec->params[i];
+        const bool ok = std::visit(
+            [&](auto field) {
+                setDefault(param.spec, profile.*field);
+                return readParam(r.json, object, pointer, param.spec, profile.*field);
+            },
+            param.field);
+        if (ok) readOk |= 1u << i;
     }
+    if (!spec->check) return;
+    std::vector<ParamProblem> problems;
+    spec->check(profile, readOk, problems);
+    reportProblems(r, pointer, problems);
 }
 
 // "extrusion" and "revolution": a 2D profile turned into a solid.
 void readProfileShape(const SceneReader& r, const Json& object, const std::string& pointer,
-                      const std::string& name, SdfNode& node) {
+                      const ProfileSolidSpec& solid, SdfNode& node) {
     SdfProfile profile;
-    const bool extrusion = name == "extrusion";
-    profile.solid = extrusion ? SdfProfileSolid::Extrusion : SdfProfileSolid::Revolution;
+    profile.solid = solid.solid;
     std::vector<std::string> known = kShapeCommonKeys;
     known.emplace_back("profile");
-    known.emplace_back(extrusion ? "depth" : "offset");
+    known.emplace_back(solid.param.spec.key);
     warnUnknownKeys(r.json, object, pointer, known);
     if (const Json* p = findMember(object, "profile")) {
         readProfile(r, *p, childPointer(pointer, "profile"), profile);
     } else {
-        r.json.error(pointer, "missing \"profile\" (the 2D shape to " +
-                                  std::string(extrusion ? "extrude" : "revolve") +
-                                  "; types: " + quotedList(kProfileTypes) + ")");
+        r.json.error(pointer, "missing \"profile\" (the 2D shape to " + std::string(solid.verb) +
+                                  "; types: " + quotedList(profileNames()) + ")");
     }
-    if (extrusion) {
-        readNumberField(r.json, object, pointer, "depth", &profile.depth,
-                        NumberRange::openClosed(0.0, kMaxLength));
-    } else {
-        readNumberField(r.json, object, pointer, "offset", &profile.offset,
-                        NumberRange::closed(0.0, kMaxLength));
-    }
+    std::visit(
+        [&](auto field) {
+            setDefault(solid.param.spec, profile.*field);
+            readParam(r.json, object, pointer, solid.param.spec, profile.*field);
+        },
+        solid.param.field);
     node.profile = std::move(profile);
 }
 
@@ -453,8 +405,8 @@ void readShape(SceneReader& r, const Json& object, const std::string& pointer, S
         warnUnknownKeys(r.json, object, pointer, kShapeCommonKeys);
         return;
     }
-    if (*name == "extrusion" || *name == "revolution") {
-        readProfileShape(r, object, pointer, *name, node);
+    if (const ProfileSolidSpec* solid = findProfileSolid(*name)) {
+        readProfileShape(r, object, pointer, *solid, node);
         return;
     }
     const PrimitiveSpec* spec = findPrimitive(*name);
@@ -467,8 +419,8 @@ void readShape(SceneReader& r, const Json& object, const std::string& pointer, S
         std::vector<std::string> shapes;
         for (const PrimitiveSpec& candidate : primitiveCatalogue())
             shapes.emplace_back(candidate.name);
-        shapes.emplace_back("extrusion");
-        shapes.emplace_back("revolution");
+        for (const ProfileSolidSpec& solid : profileSolidCatalogue())
+            shapes.emplace_back(solid.name);
         r.json.error(shapePointer, "unknown shape \"" + *name + "\"; known shapes: " +
                                        quotedList(sortedByDistance(*name, shapes)));
     }

@@ -8,6 +8,7 @@
 #include "param_json.hpp"
 #include "sdf/modifiers.hpp"
 #include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -66,10 +67,6 @@ Json renderToJson(const RenderSettings& render) {
     return out;
 }
 
-Json vec2ToJson(glm::vec2 v) {
-    return Json::array({floatToJson(v.x), floatToJson(v.y)});
-}
-
 // A modifier with the keys of its catalogue row.
 Json modifierToJson(const SdfModifier& m) {
     const ModifierSpec& spec = modifierSpec(m.type);
@@ -80,37 +77,18 @@ Json modifierToJson(const SdfModifier& m) {
     return out;
 }
 
-// "extrusion" / "revolution" and their profile.
+// "extrusion" / "revolution" and their profile, with the keys of their catalogue rows.
 void writeProfileShape(const SdfProfile& profile, Json& out) {
-    constexpr const char* kTypes[] = {"circle", "rectangle", "rounded_rectangle", "polygon"};
-    const bool extrusion = profile.solid == SdfProfileSolid::Extrusion;
-    out["shape"] = extrusion ? "extrusion" : "revolution";
+    const ProfileSolidSpec& solid = profileSolidSpec(profile.solid);
+    const ProfileSpec& spec = profileSpec(profile.type);
+    out["shape"] = solid.name;
     Json p = Json::object();
-    p["type"] = kTypes[std::size_t(profile.type)];
-    switch (profile.type) {
-    case SdfProfileType::Circle:
-        p["radius"] = floatToJson(profile.radius);
-        break;
-    case SdfProfileType::RoundedRectangle:
-        p["radius"] = floatToJson(profile.radius);
-        [[fallthrough]];
-    case SdfProfileType::Rectangle:
-        p["half_size"] = vec2ToJson(profile.halfSize);
-        break;
-    case SdfProfileType::Polygon: {
-        Json points = Json::array();
-        for (const glm::vec2& point : profile.points)
-            points.push_back(vec2ToJson(point));
-        p["points"] = std::move(points);
-        break;
-    }
-    }
+    p["type"] = spec.name;
+    for (const ProfileParam& param : spec.params)
+        std::visit([&](auto field) { writeParam(param.spec, profile.*field, p); }, param.field);
     out["profile"] = std::move(p);
-    if (extrusion) {
-        out["depth"] = floatToJson(profile.depth);
-    } else {
-        out["offset"] = floatToJson(profile.offset);
-    }
+    std::visit([&](auto field) { writeParam(solid.param.spec, profile.*field, out); },
+               solid.param.field);
 }
 
 Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& materials) {

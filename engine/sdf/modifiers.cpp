@@ -69,7 +69,7 @@ void packRepeat(const SdfModifier& m, float, int cell, glm::vec4* params) {
     params[2].w = 1.0f;
 }
 
-void checkRepeat(const SdfModifier& m, unsigned readOk, std::vector<ModifierProblem>& problems) {
+void checkRepeat(const SdfModifier& m, unsigned readOk, std::vector<ParamProblem>& problems) {
     if (!(readOk & 1u)) return; // the period
     if (m.vector == glm::vec3(0.0f))
         problems.push_back({"period", -1,

@@ -36,14 +36,6 @@ struct ModifierParam {
     ModifierField field;
 };
 
-// A problem the parameters' own ranges cannot catch: at `key` of the modifier (element
-// `element` of it, -1 for the whole value).
-struct ModifierProblem {
-    std::string_view key;
-    int element = -1;
-    std::string message;
-};
-
 struct ModifierSpec {
     SdfModifierType type;
     std::string_view name; // JSON value of "type"
@@ -65,7 +57,7 @@ struct ModifierSpec {
     // Problems of a modifier beyond each parameter's range; bit i of `readOk` is set when
     // parameter i was read without error (or left at its default). nullptr: none.
     void (*check)(const SdfModifier& m, unsigned readOk,
-                  std::vector<ModifierProblem>& problems) = nullptr;
+                  std::vector<ParamProblem>& problems) = nullptr;
     // Distance modifiers only: the formula reads the point, so the node needs its own frame.
     bool readsPoint = false;
     // Point modifiers: how many times the rest of the node's chain is evaluated (a neighbour

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <limits>
+#include <string>
 #include <string_view>
 
 namespace rmsc {
@@ -54,6 +55,14 @@ struct SdfParamSpec {
     std::string_view noun = {};
     // false: the writer leaves the key out while it holds its default (a feature turned off).
     bool writtenAtDefault = true;
+};
+
+// A problem of a row's values that the parameters' own ranges cannot catch (a catalogue row's
+// `check`): at `key` of the object, at element `element` of it (-1: the whole value).
+struct ParamProblem {
+    std::string_view key;
+    int element = -1;
+    std::string message;
 };
 
 } // namespace rmsc
