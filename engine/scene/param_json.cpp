@@ -251,4 +251,31 @@ Json paramToJson(const SdfParamSpec& spec, const std::vector<glm::vec2>& value) 
     return points;
 }
 
+Json paramDefaultToJson(const SdfParamSpec& spec) {
+    const auto as = [&](auto value) {
+        setDefault(spec, value);
+        return paramToJson(spec, value);
+    };
+    switch (spec.type) {
+    case ParamType::Number:
+        return as(0.0f);
+    case ParamType::Integer:
+    case ParamType::Axis:
+        return as(0);
+    case ParamType::Vec2:
+        return as(glm::vec2());
+    case ParamType::Vec3:
+        return as(glm::vec3());
+    case ParamType::IVec3:
+        return as(glm::ivec3());
+    case ParamType::Bool:
+        return as(false);
+    case ParamType::Axes:
+        return as(glm::bvec3());
+    case ParamType::Points:
+        return as(std::vector<glm::vec2>());
+    }
+    return Json();
+}
+
 } // namespace rmsc

@@ -47,6 +47,9 @@ void setDefault(const SdfParamSpec& spec, bool& out);
 void setDefault(const SdfParamSpec& spec, glm::bvec3& out);
 void setDefault(const SdfParamSpec& spec, std::vector<glm::vec2>& out);
 
+// The spec's default as the writer writes it.
+Json paramDefaultToJson(const SdfParamSpec& spec);
+
 // Writes `value` as `spec.key` of `object`, unless the spec leaves the default out and `value`
 // is the default.
 template <typename T> void writeParam(const SdfParamSpec& spec, const T& value, Json& object);
