@@ -2,7 +2,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 
-#include "sdf/primitive_docs.hpp"
+#include "sdf/catalogue_docs.hpp"
 #include "sdf/primitives.hpp"
 
 #include <cstdio>

@@ -37,9 +37,9 @@ enum class SmoothBlend {
     Circular,   // a circular arc
 };
 
-// A modifier on an SDF node (docs/scene-format.md, "Modifiers"). Point modifiers (Repeat to
-// Bend) transform the evaluation point in the node's local frame before the node is evaluated,
-// in list order; distance modifiers (Round, Onion, Displace) change the node's distance
+// A modifier on an SDF node (docs/scene-format.md, "Modifiers"; one catalogue row each,
+// sdf/modifiers.hpp). Point modifiers transform the evaluation point in the node's local frame
+// before the node is evaluated, in list order; distance modifiers change the node's distance
 // afterwards, in list order. Lengths are in the node's local units, angles in degrees.
 enum class SdfModifierType {
     Repeat,   // vector = period per axis (0: not repeated), count per axis (0: infinite)
