@@ -14,9 +14,6 @@
 namespace rmsc {
 namespace {
 
-// Distance reported by an empty program (SDF_FAR in the shader): nothing anywhere.
-constexpr float kSdfFar = 1e10f;
-
 // Distance of a shape instruction at world point p: the primitive at the local point, scaled
 // back to world units (sdfShapeDistance in the shader).
 float shapeDistance(const GpuSdfInstruction& instruction, glm::vec3 p) {

@@ -12,7 +12,8 @@
 
 namespace rmsc {
 
-// Stack size of the GLSL interpreter (SDF_MAX_STACK in shaders/common/sdf_scene.glsl).
+// Stack size of the GLSL interpreter (SDF_MAX_STACK; the shaders' copies of these numbers are
+// generated, sdf/glsl_constants.hpp).
 constexpr int kSdfMaxStack = 24;
 // Most instructions one scene may compile to.
 constexpr int kSdfMaxInstructions = 1 << 16;
@@ -25,6 +26,8 @@ constexpr int kSdfMaxPointStack = 16;
 // buffer map: 150 ms a frame instead of 332, and a cold first frame of 15 s instead of 47 s).
 constexpr int kSdfUniformInstructions = 511;
 constexpr int kSdfUniformBlockBytes = 16 + kSdfUniformInstructions * 128;
+// The distance of an empty program (or before anything is united into it): nothing anywhere.
+constexpr float kSdfFar = 1e10f;
 // Most vec4 entries of the SDF data buffer (polygon points, one per entry).
 constexpr int kSdfMaxData = 1 << 16;
 
