@@ -8,6 +8,7 @@
 #include "editor/material_texture_edits.hpp"
 #include "editor/scene_edits.hpp"
 #include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -22,30 +23,6 @@ namespace {
 
 using editor::Selection;
 using editor::SelectionKind;
-
-struct OpName {
-    SdfOp op;
-    const char* label;
-};
-constexpr OpName kOps[] = {
-    {SdfOp::Union, "union"},
-    {SdfOp::Subtraction, "subtraction"},
-    {SdfOp::Intersection, "intersection"},
-    {SdfOp::SmoothUnion, "smooth union"},
-    {SdfOp::SmoothSubtraction, "smooth subtraction"},
-    {SdfOp::SmoothIntersection, "smooth intersection"},
-};
-
-const char* opLabel(SdfOp op) {
-    for (const OpName& o : kOps)
-        if (o.op == op) return o.label;
-    return "?";
-}
-
-bool isSmooth(SdfOp op) {
-    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::SmoothIntersection;
-}
 
 std::string pathId(const std::vector<int>& path) {
     std::string id = "r";
@@ -154,8 +131,8 @@ void Viewer::drawMenuBar() {
             ImGui::EndMenu();
         }
         if (ImGui::BeginMenu("Group")) {
-            for (const OpName& op : kOps)
-                if (ImGui::MenuItem(op.label))
+            for (const OperationSpec& op : operationCatalogue())
+                if (ImGui::MenuItem(operationLabel(op.op).c_str()))
                     document.apply("Add group", [&](Scene& scene, Selection& selection) {
                         selection = Selection::sdf(
                             editor::insertSdfNode(scene, selection, editor::makeGroup(op.op)));
@@ -220,8 +197,8 @@ void Viewer::drawHierarchy() {
     ImGui::SameLine();
     if (ImGui::Button("+ Group")) ImGui::OpenPopup("add group");
     if (ImGui::BeginPopup("add group")) {
-        for (const OpName& op : kOps)
-            if (ImGui::Selectable(op.label))
+        for (const OperationSpec& op : operationCatalogue())
+            if (ImGui::Selectable(operationLabel(op.op).c_str()))
                 document.apply("Add group", [&](Scene& scene, Selection& selection) {
                     selection = Selection::sdf(
                         editor::insertSdfNode(scene, selection, editor::makeGroup(op.op)));
@@ -256,7 +233,7 @@ void Viewer::drawHierarchy() {
         if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
         if (document.selection == Selection::sdf(path)) flags |= ImGuiTreeNodeFlags_Selected;
         const std::string label =
-            (node.isGroup ? std::string("[") + opLabel(node.op) + "] " : std::string()) +
+            (node.isGroup ? "[" + operationLabel(node.op) + "] " : std::string()) +
             editor::displayName(node) + "##" + pathId(path);
         const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
         if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen())
@@ -601,18 +578,19 @@ void Viewer::drawInspector() {
                 ImGui::Separator();
                 if (node->isGroup) {
                     ImGui::TextDisabled("Group");
-                    if (ImGui::BeginCombo("operation", opLabel(node->op))) {
-                        for (const OpName& op : kOps) {
-                            if (ImGui::Selectable(op.label, node->op == op.op)) {
+                    if (ImGui::BeginCombo("operation", operationLabel(node->op).c_str())) {
+                        for (const OperationSpec& op : operationCatalogue()) {
+                            if (ImGui::Selectable(operationLabel(op.op).c_str(),
+                                                  node->op == op.op)) {
                                 node->op = op.op;
-                                if (isSmooth(op.op) && node->smoothness <= 0.0f)
+                                if (takesSmoothness(op.op) && node->smoothness <= 0.0f)
                                     node->smoothness = size * 0.1f;
                                 document.markChanged("Operation");
                             }
                         }
                         ImGui::EndCombo();
                     }
-                    if (isSmooth(node->op) &&
+                    if (takesSmoothness(node->op) &&
                         ImGui::DragFloat("smoothness", &node->smoothness, stepFor(size) * 0.5f,
                                          0.0f, size * 4.0f, "%.4f", ImGuiSliderFlags_AlwaysClamp))
                         document.markChanged("Smoothness");
