@@ -3,7 +3,7 @@
 // Inigo Quilez, "Distance functions" (twist, bend, elongation, rounding, onion;
 // https://iquilezles.org/articles/distfunctions/) and "Domain repetition"
 // (https://iquilezles.org/articles/sdfrepetition/); polar repetition as hg_sdf's pModPolar
-// (https://mercury.sexy/hg_sdf/).
+// (https://mercury.sexy/hg_sdf/); the taper after Barr 1984 (see taper).
 #include "modifier_formulas.hpp"
 
 #include <algorithm>
@@ -109,6 +109,15 @@ glm::vec3 bend(glm::vec3 p, const glm::vec4* a) {
     const float c = std::cos(a[0].x * p.x);
     const float s = std::sin(a[0].x * p.x);
     return glm::vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
+}
+
+// Params: [0].x the scale change k per unit along y, [0].y the reach R. The content at height y
+// is scaled by s = 1 + k clamp(y, -R, R) in x and z: a linear taper (Barr, "Global and local
+// deformations of solid primitives", SIGGRAPH 1984), held constant beyond |y| = R so that s
+// stays above 1 - |k| R > 0 everywhere.
+glm::vec3 taper(glm::vec3 p, const glm::vec4* a) {
+    const float scale = 1.0f + a[0].x * std::clamp(p.y, -a[0].y, a[0].y);
+    return glm::vec3(p.x / scale, p.y, p.z / scale);
 }
 
 // Params: [0].x radius.

@@ -14,6 +14,7 @@ glm::vec3 polar(glm::vec3 p, const glm::vec4* a);
 glm::vec3 elongate(glm::vec3 p, const glm::vec4* a);
 glm::vec3 twist(glm::vec3 p, const glm::vec4* a);
 glm::vec3 bend(glm::vec3 p, const glm::vec4* a);
+glm::vec3 taper(glm::vec3 p, const glm::vec4* a);
 
 // Distance modifiers: the distance d changed at the point p.
 float round(float d, glm::vec3 p, const glm::vec4* a);

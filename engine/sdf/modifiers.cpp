@@ -271,6 +271,72 @@ SdfBounds bendPreimage(const SdfModifier&, const Aabb& box) {
     return boundedBy(out);
 }
 
+// ---- taper ----
+
+constexpr ModifierParam kTaper[] = {
+    {{.key = "amount",
+      .type = ParamType::Number,
+      .required = true,
+      .range = closedRange(-100.0, 100.0),
+      .description = "the change of the x and z scale per unit along y (the scale is 1 at y = 0)"},
+     &SdfModifier::amount},
+    {{.key = "radius",
+      .type = ParamType::Number,
+      .required = false,
+      .value = {1.0f},
+      .range = openClosedRange(0.0, kBig),
+      .description = "how far from the y axis the content reaches, and the height beyond which "
+                     "the scale stays constant (sets the step correction)"},
+     &SdfModifier::radius},
+};
+
+void packTaper(const SdfModifier& m, float, int, glm::vec4* params) {
+    params[0].x = m.amount;
+    params[0].y = m.radius;
+}
+
+// The scale 1 + amount y must stay above 0 up to |y| = radius.
+void checkTaper(const SdfModifier& m, unsigned readOk, std::vector<ParamProblem>& problems) {
+    if ((readOk & 3u) != 3u || std::abs(m.amount) * m.radius < 1.0f) return;
+    problems.push_back({"amount", -1,
+                        "the taper " + shortestNumberText(m.amount) + " reaches a scale of 0 " +
+                            "within the radius " + shortestNumberText(m.radius) +
+                            "; |amount| x radius must be below 1"});
+}
+
+// Step correction. The field is f(T(p)), T(p) = (x / s, y, z / s), s = 1 + k clamp(y, -R, R),
+// f 1-Lipschitz; so it is at most |T(p) - T(p*)| for p* on the tapered surface, whose content
+// point T(p*) lies within R of the y axis (Hart, "Sphere tracing", 1996: a field composed with
+// a map is Lipschitz with the product of the constants). With m = 1 / (1 - |k| R), the largest
+// 1 / s, and x / s - x* / s* = (x - x*) / s + (x* / s*) (s* - s) / s, |s* - s| <= |k| |y - y*|:
+// |T(p) - T(p*)|^2 <= (m a + m |k| R b)^2 + b^2 with a the xz part and b the y part of p - p*,
+// so the constant is the largest singular value of [[m, m |k| R], [0, 1]].
+double taperLipschitz(const SdfModifier& m) {
+    const double kr = std::abs(double(m.amount)) * std::max(double(m.radius), 0.0);
+    const double inverse = 1.0 / std::max(1.0 - kr, 1e-6);
+    const double trace = inverse * inverse * (1.0 + kr * kr) + 1.0; // of M^T M
+    const double det = inverse;                                     // of M
+    return std::sqrt(0.5 * (trace + std::sqrt(std::max(trace * trace - 4.0 * det * det, 0.0))));
+}
+
+// y is kept; x and z are the content's times s(y) > 0, which is monotonic in y: over the box's
+// y range it lies between its values at the two ends.
+SdfBounds taperPreimage(const SdfModifier& m, const Aabb& box) {
+    const auto scale = [&](float y) {
+        return 1.0f + m.amount * std::clamp(y, -m.radius, m.radius);
+    };
+    const float a = scale(box.min.y);
+    const float b = scale(box.max.y);
+    const float lo = std::min(a, b);
+    const float hi = std::max(a, b);
+    Aabb out = box;
+    for (const int axis : {0, 2}) {
+        out.min[axis] = std::min(box.min[axis] * lo, box.min[axis] * hi);
+        out.max[axis] = std::max(box.max[axis] * lo, box.max[axis] * hi);
+    }
+    return boundedBy(out);
+}
+
 // ---- round, onion, displace ----
 // Each turns "result <= t" into "distance <= t + growth": round d - r; onion |d| - thickness
 // (d <= |d|); displace d + amplitude * noise with the noise in [-1, 1].
@@ -406,6 +472,18 @@ const ModifierSpec kCatalogue[] = {
      .pack = packAngle,
      .lipschitz = bendLipschitz,
      .preimage = bendPreimage},
+    {.type = SdfModifierType::Taper,
+     .name = "taper",
+     .stage = ModifierStage::Point,
+     .params = kTaper,
+     .description = "x and z scaled by 1 + `amount` y: narrowing or widening along y, constant "
+                    "beyond y = ±`radius`",
+     .source = "Barr, Global and local deformations of solid primitives (SIGGRAPH 1984)",
+     .movePoint = formulas::taper,
+     .pack = packTaper,
+     .check = checkTaper,
+     .lipschitz = taperLipschitz,
+     .preimage = taperPreimage},
     {.type = SdfModifierType::Round,
      .name = "round",
      .stage = ModifierStage::Distance,

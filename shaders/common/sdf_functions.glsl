@@ -228,7 +228,8 @@ float sdfValueNoise(vec3 p) {
 
 // Point modifier `kind` (SDF_POINT_*) with parameters a0..a2 applied to p. Formulas: Inigo
 // Quilez, "Distance functions" (twist, bend, elongation) and "Domain repetition"
-// (https://iquilezles.org/articles/sdfrepetition/); polar repetition as hg_sdf's pModPolar.
+// (https://iquilezles.org/articles/sdfrepetition/); polar repetition as hg_sdf's pModPolar;
+// the taper as Barr, "Global and local deformations of solid primitives" (SIGGRAPH 1984).
 vec3 sdfPointModifier(uint kind, vec3 p, vec4 a0, vec4 a1, vec4 a2) {
     if (kind == SDF_POINT_REPEAT) {
         for (int axis = 0; axis < 3; ++axis) {
@@ -268,6 +269,10 @@ vec3 sdfPointModifier(uint kind, vec3 p, vec4 a0, vec4 a1, vec4 a2) {
         float c = cos(a0.x * p.y);
         float s = sin(a0.x * p.y);
         return vec3(c * p.x - s * p.z, p.y, s * p.x + c * p.z);
+    }
+    if (kind == SDF_POINT_TAPER) { // Barr 1984; x, z scaled by 1 + k clamp(y, -R, R)
+        float scale = 1.0 + a0.x * clamp(p.y, -a0.y, a0.y);
+        return vec3(p.x / scale, p.y, p.z / scale);
     }
     // SDF_POINT_BEND
     float c = cos(a0.x * p.x);
