@@ -1,7 +1,7 @@
 // rmsc primitives: prints the primitive catalogue (names, parameters, exact or bound).
 #include "commands.hpp"
 
-#include "sdf/primitive_docs.hpp"
+#include "sdf/catalogue_docs.hpp"
 #include "sdf/primitives.hpp"
 
 #include <cstdio>

@@ -1,6 +1,8 @@
 // Structural scene edits for the editor (see scene_edits.hpp).
 #include "editor/scene_edits.hpp"
 
+#include "sdf/operations.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -115,16 +117,14 @@ SdfNode makeGroup(SdfOp op) {
     group.isGroup = true;
     group.op = op;
     group.children.push_back(makeShape(PrimitiveId::Sphere));
-    if (op == SdfOp::Subtraction || op == SdfOp::SmoothSubtraction) {
+    if (operationSpec(op).combination == SdfOpCombination::Subtraction) {
         // A subtraction needs two children: a sphere minus a smaller, offset sphere.
         SdfNode cut = makeShape(PrimitiveId::Sphere);
         cut.transform.position = glm::vec3(0.5f, 0.3f, 0.3f);
         cut.transform.scale = glm::vec3(0.6f);
         group.children.push_back(cut);
     }
-    if (op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-        op == SdfOp::SmoothIntersection)
-        group.smoothness = 0.1f;
+    if (takesSmoothness(op)) group.smoothness = 0.1f;
     return group;
 }
 

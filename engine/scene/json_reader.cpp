@@ -2,8 +2,9 @@
 // by the scene reader's messages.
 #include "json_reader.hpp"
 
+#include "core/number_text.hpp"
+
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 namespace rmsc {
@@ -56,27 +57,12 @@ std::string jsonTypeName(const Json& value) {
     }
 }
 
-namespace {
-
-// Plain digits for everyday magnitudes (100000, not 1e+05), exponents only for extremes.
-template <typename T> std::string shortestText(T value) {
-    char buffer[128];
-    const T magnitude = value < 0 ? -value : value;
-    const bool fixed = magnitude == 0 || (magnitude >= T(1e-5) && magnitude < T(1e15));
-    const auto result =
-        fixed ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
-              : std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
-} // namespace
-
 std::string formatNumber(float value) {
-    return shortestText(value);
+    return shortestNumberText(value);
 }
 
 std::string formatNumber(double value) {
-    return shortestText(value);
+    return shortestNumberText(value);
 }
 
 std::string quotedList(std::span<const std::string> names) {

@@ -1,12 +1,17 @@
 // Reading scene files (format version 1, docs/scene-format.md): each section is checked field
-// by field against the format and the primitive catalogue, reporting every problem with its
-// JSON pointer and carrying on, so one run shows everything wrong with a file.
+// by field against the format and the catalogues (primitives, modifiers, operations, profiles),
+// reporting every problem with its JSON pointer and carrying on, so one run shows everything
+// wrong with a file.
 #include "scene/scene_json.hpp"
 
 #include "core/limits.hpp"
 #include "json_reader.hpp"
 #include "lighting_json.hpp"
 #include "material_texture_json.hpp"
+#include "param_json.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -35,30 +40,6 @@ const std::vector<std::string> kShapeCommonKeys = {"name",       "shape", "posit
                                                    "cut",        "shell"};
 const std::vector<std::string> kShellKeys = {"proxy", "bound", "mesh"};
 const std::vector<std::string> kShellProxies = {"box", "sphere", "mesh"};
-
-struct OpName {
-    SdfOp op;
-    const char* name;
-    bool smooth; // needs "smoothness" (smooth: blend width; chamfer, round: radius)
-    bool blend;  // accepts "blend" (the smooth-minimum curve)
-};
-// In SdfOp order.
-constexpr OpName kOps[] = {
-    {SdfOp::Union, "union", false, false},
-    {SdfOp::Subtraction, "subtraction", false, false},
-    {SdfOp::Intersection, "intersection", false, false},
-    {SdfOp::SmoothUnion, "smooth_union", true, true},
-    {SdfOp::SmoothSubtraction, "smooth_subtraction", true, true},
-    {SdfOp::SmoothIntersection, "smooth_intersection", true, true},
-    {SdfOp::Xor, "xor", false, false},
-    {SdfOp::ChamferUnion, "chamfer_union", true, false},
-    {SdfOp::ChamferSubtraction, "chamfer_subtraction", true, false},
-    {SdfOp::ChamferIntersection, "chamfer_intersection", true, false},
-    {SdfOp::RoundUnion, "round_union", true, false},
-    {SdfOp::RoundSubtraction, "round_subtraction", true, false},
-    {SdfOp::RoundIntersection, "round_intersection", true, false},
-};
-const std::vector<std::string> kBlendNames = {"polynomial", "circular"}; // SmoothBlend order
 
 // Everything the section readers share.
 struct SceneReader {
@@ -275,199 +256,55 @@ void readShapeParams(SceneReader& r, const Json& object, const std::string& poin
     }
 }
 
-// Modifier types by JSON name, in SdfModifierType order, with the keys each accepts.
-const std::vector<std::string> kModifierNames = {"repeat", "mirror", "polar", "elongate", "twist",
-                                                 "bend",   "round",  "onion", "displace"};
-const std::vector<std::vector<std::string>> kModifierKeys = {
-    {"type", "period", "count", "neighbours"},
-    {"type", "axes"},
-    {"type", "count", "axis"},
-    {"type", "half_extents"},
-    {"type", "amount", "radius"},
-    {"type", "amount", "radius"},
-    {"type", "radius"},
-    {"type", "thickness"},
-    {"type", "amplitude", "frequency"}};
-constexpr int kMaxModifiers = limits::kSdfModifiers;   // per node
-constexpr int kMaxPolarCopies = limits::kPolarCopies;  // polar repetition
-constexpr int kMaxRepeatCount = limits::kRepeatCopies; // per axis
-constexpr int kMaxPolygonPoints = limits::kPolygonPoints;
-constexpr float kMaxLength = 1.0e4f; // lengths, as the catalogue's
+constexpr int kMaxModifiers = limits::kSdfModifiers; // per node
 
-const std::vector<std::string> kProfileTypes = {"circle", "rectangle", "rounded_rectangle",
-                                                "polygon"};
-const std::vector<std::vector<std::string>> kProfileKeys = {
-    {"type", "radius"}, {"type", "half_size"}, {"type", "half_size", "radius"}, {"type", "points"}};
-
-// A required number field: an error at the object when it is missing.
-bool readRequiredNumber(const SceneReader& r, const Json& object, const std::string& pointer,
-                        std::string_view key, float* out, NumberRange range,
-                        const std::string& what) {
-    if (!findMember(object, key)) {
-        r.json.error(pointer, "missing \"" + std::string(key) + "\" (" + what + ")");
-        return false;
-    }
-    return readNumberField(r.json, object, pointer, key, out, range);
-}
-
-// "x", "y" or "z" to 0, 1, 2.
-std::optional<int> readAxisName(const SceneReader& r, const Json& value,
-                                const std::string& pointer) {
-    const auto name = readString(r.json, value, pointer);
-    if (!name) return std::nullopt;
-    if (*name == "x") return 0;
-    if (*name == "y") return 1;
-    if (*name == "z") return 2;
-    r.json.error(pointer, "expected an axis \"x\", \"y\" or \"z\", got \"" + *name + "\"");
-    return std::nullopt;
-}
-
-void readRepeat(const SceneReader& r, const Json& object, const std::string& pointer,
-                SdfModifier& m) {
-    const Json* period = findMember(object, "period");
-    if (!period) {
-        r.json.error(pointer, "missing \"period\" (the cell size along x, y, z; 0 = not "
-                              "repeated on that axis)");
-        return;
-    }
-    const std::string periodPointer = childPointer(pointer, "period");
-    float v[3];
-    NumberRange periodRange = NumberRange::closed(0.0, kMaxLength);
-    periodRange.noun = "a period";
-    const bool periodOk = readNumbers(r.json, *period, periodPointer, 3, v, periodRange);
-    if (periodOk) {
-        m.vector = glm::vec3(v[0], v[1], v[2]);
-        if (m.vector == glm::vec3(0.0f))
-            r.json.error(periodPointer, "the period is 0 on every axis, so nothing repeats; "
-                                        "give a period > 0 on at least one axis");
-    }
-    if (const Json* count = findMember(object, "count")) {
-        const std::string countPointer = childPointer(pointer, "count");
-        if (!count->is_array() || count->size() != 3) {
-            r.json.error(countPointer,
-                         "expected 3 integers (copies along x, y, z; 0 = "
-                         "unlimited), got " +
-                             jsonTypeName(*count) +
-                             (count->is_array()
-                                  ? " of " + std::to_string(count->size()) + " elements"
-                                  : ""));
-        } else {
-            for (int axis = 0; axis < 3; ++axis) {
-                const std::string elementPointer = childPointer(countPointer, std::size_t(axis));
-                const auto n = readInteger(r.json, (*count)[std::size_t(axis)], elementPointer, 0,
-                                           kMaxRepeatCount);
-                if (!n) continue;
-                m.counts[axis] = *n;
-                if (periodOk && *n > 1 && !(m.vector[axis] > 0.0f))
-                    r.json.error(elementPointer, std::string("count ") + std::to_string(*n) +
-                                                     " along " + "xyz"[axis] +
-                                                     " needs a period > 0 on that axis, got " +
-                                                     formatNumber(m.vector[axis]));
-            }
-        }
-    }
-    if (const Json* neighbours = findMember(object, "neighbours")) {
-        if (neighbours->is_boolean()) {
-            m.neighbours = neighbours->get<bool>();
-        } else {
-            r.json.error(childPointer(pointer, "neighbours"),
-                         "expected true or false, got " + jsonTypeName(*neighbours));
-        }
+// Reports a catalogue row's problems at their keys (and elements) of the object at `pointer`.
+void reportProblems(const SceneReader& r, const std::string& pointer,
+                    const std::vector<ParamProblem>& problems) {
+    for (const ParamProblem& problem : problems) {
+        std::string at = childPointer(pointer, problem.key);
+        if (problem.element >= 0) at = childPointer(at, std::size_t(problem.element));
+        r.json.error(at, problem.message);
     }
 }
 
+// A modifier: its parameters as its catalogue row describes them, then the row's own checks.
 void readModifier(const SceneReader& r, const Json& object, const std::string& pointer,
                   SdfModifier& m) {
     m.pointer = pointer;
+    const std::vector<std::string> names = modifierNames();
     const Json* type = findMember(object, "type");
     if (!type) {
-        r.json.error(pointer, "missing \"type\"; known modifiers: " + quotedList(kModifierNames));
+        r.json.error(pointer, "missing \"type\"; known modifiers: " + quotedList(names));
         return;
     }
     const std::string typePointer = childPointer(pointer, "type");
     const auto name = readString(r.json, *type, typePointer);
     if (!name) return;
-    const auto it = std::find(kModifierNames.begin(), kModifierNames.end(), *name);
-    if (it == kModifierNames.end()) {
+    const ModifierSpec* spec = findModifier(*name);
+    if (!spec) {
         r.json.error(typePointer, "unknown modifier \"" + *name + "\"; known modifiers: " +
-                                      quotedList(sortedByDistance(*name, kModifierNames)));
+                                      quotedList(sortedByDistance(*name, names)));
         return;
     }
-    const std::size_t index = std::size_t(it - kModifierNames.begin());
-    m.type = SdfModifierType(index);
-    warnUnknownKeys(r.json, object, pointer, kModifierKeys[index]);
-    switch (m.type) {
-    case SdfModifierType::Repeat:
-        readRepeat(r, object, pointer, m);
-        break;
-    case SdfModifierType::Mirror: {
-        const Json* axes = findMember(object, "axes");
-        if (!axes) {
-            r.json.error(pointer, "missing \"axes\" (the axes to mirror, e.g. \"x\" or \"xz\")");
-            break;
-        }
-        const std::string axesPointer = childPointer(pointer, "axes");
-        const auto text = readString(r.json, *axes, axesPointer);
-        if (!text) break;
-        bool ok = !text->empty();
-        for (char c : *text) {
-            const int axis = c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1;
-            if (axis < 0 || m.axes[axis]) ok = false;
-            if (axis >= 0) m.axes[axis] = true;
-        }
-        if (!ok)
-            r.json.error(axesPointer, "expected one to three different axes among \"x\", "
-                                      "\"y\", \"z\" (e.g. \"xz\"), got \"" +
-                                          *text + "\"");
-        break;
+    m = defaultModifier(spec->type);
+    m.pointer = pointer;
+    std::vector<std::string> known = {"type"};
+    for (const ModifierParam& param : spec->params)
+        known.emplace_back(param.spec.key);
+    warnUnknownKeys(r.json, object, pointer, known);
+    unsigned readOk = 0;
+    for (std::size_t i = 0; i < spec->params.size(); ++i) {
+        const ModifierParam& param = spec->params[i];
+        const bool ok = std::visit(
+            [&](auto field) { return readParam(r.json, object, pointer, param.spec, m.*field); },
+            param.field);
+        if (ok) readOk |= 1u << i;
     }
-    case SdfModifierType::Polar: {
-        if (const Json* count = findMember(object, "count")) {
-            if (const auto n =
-                    readInteger(r.json, *count, childPointer(pointer, "count"), 1, kMaxPolarCopies))
-                m.count = *n;
-        } else {
-            r.json.error(pointer, "missing \"count\" (the number of copies around the axis)");
-        }
-        if (const Json* axis = findMember(object, "axis"))
-            if (const auto a = readAxisName(r, *axis, childPointer(pointer, "axis"))) m.axis = *a;
-        break;
-    }
-    case SdfModifierType::Elongate: {
-        const Json* extents = findMember(object, "half_extents");
-        if (!extents) {
-            r.json.error(pointer, "missing \"half_extents\" (half the stretch along x, y, z)");
-            break;
-        }
-        float v[3];
-        if (readNumbers(r.json, *extents, childPointer(pointer, "half_extents"), 3, v,
-                        NumberRange::closed(0.0, kMaxLength)))
-            m.vector = glm::vec3(v[0], v[1], v[2]);
-        break;
-    }
-    case SdfModifierType::Twist:
-    case SdfModifierType::Bend:
-        readRequiredNumber(r, object, pointer, "amount", &m.amount,
-                           NumberRange::closed(-3600.0, 3600.0), "degrees per unit length");
-        m.radius = 1.0f;
-        readNumberField(r.json, object, pointer, "radius", &m.radius,
-                        NumberRange::openClosed(0.0, kMaxLength));
-        break;
-    case SdfModifierType::Round:
-        readRequiredNumber(r, object, pointer, "radius", &m.radius,
-                           NumberRange::closed(0.0, kMaxLength), "the rounding radius");
-        break;
-    case SdfModifierType::Onion:
-        readRequiredNumber(r, object, pointer, "thickness", &m.thickness,
-                           NumberRange::openClosed(0.0, kMaxLength), "the shell thickness");
-        break;
-    case SdfModifierType::Displace:
-        readRequiredNumber(r, object, pointer, "amplitude", &m.amount,
-                           NumberRange::closed(0.0, kMaxLength), "the noise amplitude");
-        readNumberField(r.json, object, pointer, "frequency", &m.frequency,
-                        NumberRange::openClosed(0.0, 1.0e3));
-        break;
-    }
+    if (!spec->check) return;
+    std::vector<ParamProblem> problems;
+    spec->check(m, readOk, problems);
+    reportProblems(r, pointer, problems);
 }
 
 void readModifiers(const SceneReader& r, const Json& object, const std::string& pointer,
@@ -495,117 +332,68 @@ void readModifiers(const SceneReader& r, const Json& object, const std::string& 
     }
 }
 
-void readPolygonPoints(const SceneReader& r, const Json& object, const std::string& pointer,
-                       SdfProfile& profile) {
-    const Json* points = findMember(object, "points");
-    if (!points) {
-        r.json.error(pointer, "missing \"points\" (the polygon's corners, [[x, y], ...])");
-        return;
-    }
-    const std::string pointsPointer = childPointer(pointer, "points");
-    if (!points->is_array()) {
-        r.json.error(pointsPointer,
-                     "expected an array of [x, y] points, got " + jsonTypeName(*points));
-        return;
-    }
-    if (points->size() < 3 || points->size() > std::size_t(kMaxPolygonPoints)) {
-        r.json.error(pointsPointer, "a polygon needs 3 to " + std::to_string(kMaxPolygonPoints) +
-                                        " points, got " + std::to_string(points->size()));
-        return;
-    }
-    bool ok = true;
-    for (std::size_t i = 0; i < points->size(); ++i) {
-        float v[2];
-        if (readNumbers(r.json, (*points)[i], childPointer(pointsPointer, i), 2, v,
-                        NumberRange::closed(-kMaxLength, kMaxLength))) {
-            profile.points.emplace_back(v[0], v[1]);
-        } else {
-            ok = false;
-        }
-    }
-    if (!ok) return;
-    // Shoelace formula: twice the signed area.
-    double area = 0.0;
-    for (std::size_t i = 0; i < profile.points.size(); ++i) {
-        const glm::vec2 a = profile.points[i];
-        const glm::vec2 b = profile.points[(i + 1) % profile.points.size()];
-        area += double(a.x) * b.y - double(b.x) * a.y;
-    }
-    if (!(std::abs(area) > 1e-12))
-        r.json.error(pointsPointer, "the polygon's points enclose no area (they are collinear "
-                                    "or repeated)");
-}
-
+// A profile: its parameters as its catalogue row describes them, then the row's own checks.
 void readProfile(const SceneReader& r, const Json& object, const std::string& pointer,
                  SdfProfile& profile) {
     if (!expectObject(r.json, object, pointer)) return;
+    const std::vector<std::string> names = profileNames();
     const Json* type = findMember(object, "type");
     if (!type) {
-        r.json.error(pointer, "missing \"type\"; profile types: " + quotedList(kProfileTypes));
+        r.json.error(pointer, "missing \"type\"; profile types: " + quotedList(names));
         return;
     }
     const std::string typePointer = childPointer(pointer, "type");
     const auto name = readString(r.json, *type, typePointer);
     if (!name) return;
-    const auto it = std::find(kProfileTypes.begin(), kProfileTypes.end(), *name);
-    if (it == kProfileTypes.end()) {
+    const ProfileSpec* spec = findProfile(*name);
+    if (!spec) {
         r.json.error(typePointer, "unknown profile type \"" + *name + "\"; profile types: " +
-                                      quotedList(sortedByDistance(*name, kProfileTypes)));
+                                      quotedList(sortedByDistance(*name, names)));
         return;
     }
-    const std::size_t index = std::size_t(it - kProfileTypes.begin());
-    profile.type = SdfProfileType(index);
-    warnUnknownKeys(r.json, object, pointer, kProfileKeys[index]);
-    if (profile.type == SdfProfileType::Circle) {
-        readNumberField(r.json, object, pointer, "radius", &profile.radius,
-                        NumberRange::openClosed(0.0, kMaxLength));
-    } else if (profile.type == SdfProfileType::Polygon) {
-        readPolygonPoints(r, object, pointer, profile);
-    } else {
-        bool sizeOk = true;
-        if (const Json* size = findMember(object, "half_size")) {
-            float v[2];
-            sizeOk = readNumbers(r.json, *size, childPointer(pointer, "half_size"), 2, v,
-                                 NumberRange::openClosed(0.0, kMaxLength));
-            if (sizeOk) profile.halfSize = glm::vec2(v[0], v[1]);
-        }
-        if (profile.type == SdfProfileType::RoundedRectangle) {
-            profile.radius = 0.1f;
-            if (readNumberField(r.json, object, pointer, "radius", &profile.radius,
-                                NumberRange::closed(0.0, kMaxLength)) &&
-                sizeOk && profile.radius > std::min(profile.halfSize.x, profile.halfSize.y))
-                r.json.error(childPointer(pointer, "radius"),
-                             "the corner radius " + formatNumber(profile.radius) +
-                                 " is larger than the smaller half size " +
-                                 formatNumber(std::min(profile.halfSize.x, profile.halfSize.y)));
-        }
+    profile.type = spec->type;
+    std::vector<std::string> known = {"type"};
+    for (const ProfileParam& param : spec->params)
+        known.emplace_back(param.spec.key);
+    warnUnknownKeys(r.json, object, pointer, known);
+    unsigned readOk = 0;
+    for (std::size_t i = 0; i < spec->params.size(); ++i) {
+        const ProfileParam& param = spec->params[i];
+        const bool ok = std::visit(
+            [&](auto field) {
+                setDefault(param.spec, profile.*field);
+                return readParam(r.json, object, pointer, param.spec, profile.*field);
+            },
+            param.field);
+        if (ok) readOk |= 1u << i;
     }
+    if (!spec->check) return;
+    std::vector<ParamProblem> problems;
+    spec->check(profile, readOk, problems);
+    reportProblems(r, pointer, problems);
 }
 
 // "extrusion" and "revolution": a 2D profile turned into a solid.
 void readProfileShape(const SceneReader& r, const Json& object, const std::string& pointer,
-                      const std::string& name, SdfNode& node) {
+                      const ProfileSolidSpec& solid, SdfNode& node) {
     SdfProfile profile;
-    const bool extrusion = name == "extrusion";
-    profile.solid = extrusion ? SdfProfileSolid::Extrusion : SdfProfileSolid::Revolution;
+    profile.solid = solid.solid;
     std::vector<std::string> known = kShapeCommonKeys;
     known.emplace_back("profile");
-    known.emplace_back(extrusion ? "depth" : "offset");
+    known.emplace_back(solid.param.spec.key);
     warnUnknownKeys(r.json, object, pointer, known);
     if (const Json* p = findMember(object, "profile")) {
         readProfile(r, *p, childPointer(pointer, "profile"), profile);
     } else {
-        r.json.error(pointer, "missing \"profile\" (the 2D shape to " +
-                                  std::string(extrusion ? "extrude" : "revolve") +
-                                  "; types: " + quotedList(kProfileTypes) + ")");
+        r.json.error(pointer, "missing \"profile\" (the 2D shape to " + std::string(solid.verb) +
+                                  "; types: " + quotedList(profileNames()) + ")");
     }
-    if (extrusion) {
-        readNumberField(r.json, object, pointer, "depth", &profile.depth,
-                        NumberRange::openClosed(0.0, kMaxLength));
-    } else {
-        readNumberField(r.json, object, pointer, "offset", &profile.offset,
-                        NumberRange::closed(0.0, kMaxLength));
-    }
+    std::visit(
+        [&](auto field) {
+            setDefault(solid.param.spec, profile.*field);
+            readParam(r.json, object, pointer, solid.param.spec, profile.*field);
+        },
+        solid.param.field);
     node.profile = std::move(profile);
 }
 
@@ -617,8 +405,8 @@ void readShape(SceneReader& r, const Json& object, const std::string& pointer, S
         warnUnknownKeys(r.json, object, pointer, kShapeCommonKeys);
         return;
     }
-    if (*name == "extrusion" || *name == "revolution") {
-        readProfileShape(r, object, pointer, *name, node);
+    if (const ProfileSolidSpec* solid = findProfileSolid(*name)) {
+        readProfileShape(r, object, pointer, *solid, node);
         return;
     }
     const PrimitiveSpec* spec = findPrimitive(*name);
@@ -631,8 +419,8 @@ void readShape(SceneReader& r, const Json& object, const std::string& pointer, S
         std::vector<std::string> shapes;
         for (const PrimitiveSpec& candidate : primitiveCatalogue())
             shapes.emplace_back(candidate.name);
-        shapes.emplace_back("extrusion");
-        shapes.emplace_back("revolution");
+        for (const ProfileSolidSpec& solid : profileSolidCatalogue())
+            shapes.emplace_back(solid.name);
         r.json.error(shapePointer, "unknown shape \"" + *name + "\"; known shapes: " +
                                        quotedList(sortedByDistance(*name, shapes)));
     }
@@ -647,46 +435,42 @@ void readGroup(SceneReader& r, const Json& object, const std::string& pointer, i
     if (const Json* op = findMember(object, "op")) {
         const std::string opPointer = childPointer(pointer, "op");
         if (const auto name = readString(r.json, *op, opPointer)) {
-            const auto it = std::find_if(std::begin(kOps), std::end(kOps),
-                                         [&](const OpName& o) { return o.name == *name; });
-            if (it != std::end(kOps)) {
-                node.op = it->op;
+            if (const OperationSpec* spec = findOperation(*name)) {
+                node.op = spec->op;
             } else {
-                std::vector<std::string> names;
-                for (const OpName& o : kOps)
-                    names.emplace_back(o.name);
                 r.json.error(opPointer, "unknown op \"" + *name + "\"; valid ops: " +
-                                            quotedList(sortedByDistance(*name, names)));
+                                            quotedList(sortedByDistance(*name, operationNames())));
             }
         }
     }
-    const OpName& op = kOps[std::size_t(node.op)];
+    const std::string opName(operationSpec(node.op).name);
     const Json* smoothness = findMember(object, "smoothness");
-    if (op.smooth) {
+    if (takesSmoothness(node.op)) {
         if (smoothness) {
             readNumberField(r.json, object, pointer, "smoothness", &node.smoothness,
                             NumberRange::above(0.0));
         } else {
-            r.json.error(pointer, std::string("op \"") + op.name +
+            r.json.error(pointer, "op \"" + opName +
                                       "\" needs \"smoothness\" (a number > 0, in world units)");
         }
     } else if (smoothness) {
-        r.json.warning(childPointer(pointer, "smoothness"),
-                       std::string("\"smoothness\" is ignored by op \"") + op.name +
-                           "\"; use a smooth_ op to blend");
+        r.json.warning(childPointer(pointer, "smoothness"), "\"smoothness\" is ignored by op \"" +
+                                                                opName +
+                                                                "\"; use a smooth_ op to blend");
     }
     if (const Json* blend = findMember(object, "blend")) {
         const std::string blendPointer = childPointer(pointer, "blend");
-        if (!op.blend) {
-            r.json.warning(blendPointer, std::string("\"blend\" is ignored by op \"") + op.name +
+        if (!takesBlend(node.op)) {
+            r.json.warning(blendPointer, "\"blend\" is ignored by op \"" + opName +
                                              "\"; only the smooth_ ops blend");
         } else if (const auto name = readString(r.json, *blend, blendPointer)) {
-            const auto it = std::find(kBlendNames.begin(), kBlendNames.end(), *name);
-            if (it != kBlendNames.end()) {
-                node.blend = SmoothBlend(it - kBlendNames.begin());
+            const auto spec = std::find_if(blendCatalogue().begin(), blendCatalogue().end(),
+                                           [&](const BlendSpec& b) { return b.name == *name; });
+            if (spec != blendCatalogue().end()) {
+                node.blend = spec->blend;
             } else {
                 r.json.error(blendPointer, "unknown blend \"" + *name +
-                                               "\"; valid blends: " + quotedList(kBlendNames));
+                                               "\"; valid blends: " + quotedList(blendNames()));
             }
         }
     }

@@ -5,6 +5,10 @@
 #include "scene/scene_json.hpp"
 
 #include "lighting_json.hpp"
+#include "param_json.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -12,32 +16,6 @@
 
 namespace rmsc {
 namespace {
-
-// In SdfOp order.
-constexpr const char* kOpNames[] = {"union",
-                                    "subtraction",
-                                    "intersection",
-                                    "smooth_union",
-                                    "smooth_subtraction",
-                                    "smooth_intersection",
-                                    "xor",
-                                    "chamfer_union",
-                                    "chamfer_subtraction",
-                                    "chamfer_intersection",
-                                    "round_union",
-                                    "round_subtraction",
-                                    "round_intersection"};
-constexpr const char* kBlendNames[] = {"polynomial", "circular"}; // SmoothBlend order
-
-bool isSmooth(SdfOp op) {
-    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::SmoothIntersection;
-}
-
-// Operations with a radius in "smoothness": the smooth, chamfer and round ones.
-bool hasRadius(SdfOp op) {
-    return isSmooth(op) || (op >= SdfOp::ChamferUnion && op <= SdfOp::RoundIntersection);
-}
 
 // Material keys of the written file, one per Scene::materials entry. Scenes built in code may
 // have empty or repeated names; those get "material_<index>" so every key is unique.
@@ -89,97 +67,38 @@ Json renderToJson(const RenderSettings& render) {
     return out;
 }
 
-Json vec2ToJson(glm::vec2 v) {
-    return Json::array({floatToJson(v.x), floatToJson(v.y)});
-}
-
-// A modifier with the keys docs/scene-format.md ("Modifiers") gives it.
+// A modifier with the keys of its catalogue row.
 Json modifierToJson(const SdfModifier& m) {
-    constexpr const char* kNames[] = {"repeat", "mirror", "polar", "elongate", "twist",
-                                      "bend",   "round",  "onion", "displace"}; // type order
+    const ModifierSpec& spec = modifierSpec(m.type);
     Json out = Json::object();
-    out["type"] = kNames[std::size_t(m.type)];
-    switch (m.type) {
-    case SdfModifierType::Repeat:
-        out["period"] = vec3ToJson(m.vector);
-        if (m.counts != glm::ivec3(0))
-            out["count"] = Json::array({m.counts.x, m.counts.y, m.counts.z});
-        if (m.neighbours) out["neighbours"] = true;
-        break;
-    case SdfModifierType::Mirror: {
-        std::string axes;
-        for (int axis = 0; axis < 3; ++axis)
-            if (m.axes[axis]) axes += "xyz"[axis];
-        out["axes"] = axes;
-        break;
-    }
-    case SdfModifierType::Polar:
-        out["count"] = m.count;
-        out["axis"] = std::string(1, "xyz"[std::clamp(m.axis, 0, 2)]);
-        break;
-    case SdfModifierType::Elongate:
-        out["half_extents"] = vec3ToJson(m.vector);
-        break;
-    case SdfModifierType::Twist:
-    case SdfModifierType::Bend:
-        out["amount"] = floatToJson(m.amount);
-        out["radius"] = floatToJson(m.radius);
-        break;
-    case SdfModifierType::Round:
-        out["radius"] = floatToJson(m.radius);
-        break;
-    case SdfModifierType::Onion:
-        out["thickness"] = floatToJson(m.thickness);
-        break;
-    case SdfModifierType::Displace:
-        out["amplitude"] = floatToJson(m.amount);
-        out["frequency"] = floatToJson(m.frequency);
-        break;
-    }
+    out["type"] = spec.name;
+    for (const ModifierParam& param : spec.params)
+        std::visit([&](auto field) { writeParam(param.spec, m.*field, out); }, param.field);
     return out;
 }
 
-// "extrusion" / "revolution" and their profile.
+// "extrusion" / "revolution" and their profile, with the keys of their catalogue rows.
 void writeProfileShape(const SdfProfile& profile, Json& out) {
-    constexpr const char* kTypes[] = {"circle", "rectangle", "rounded_rectangle", "polygon"};
-    const bool extrusion = profile.solid == SdfProfileSolid::Extrusion;
-    out["shape"] = extrusion ? "extrusion" : "revolution";
+    const ProfileSolidSpec& solid = profileSolidSpec(profile.solid);
+    const ProfileSpec& spec = profileSpec(profile.type);
+    out["shape"] = solid.name;
     Json p = Json::object();
-    p["type"] = kTypes[std::size_t(profile.type)];
-    switch (profile.type) {
-    case SdfProfileType::Circle:
-        p["radius"] = floatToJson(profile.radius);
-        break;
-    case SdfProfileType::RoundedRectangle:
-        p["radius"] = floatToJson(profile.radius);
-        [[fallthrough]];
-    case SdfProfileType::Rectangle:
-        p["half_size"] = vec2ToJson(profile.halfSize);
-        break;
-    case SdfProfileType::Polygon: {
-        Json points = Json::array();
-        for (const glm::vec2& point : profile.points)
-            points.push_back(vec2ToJson(point));
-        p["points"] = std::move(points);
-        break;
-    }
-    }
+    p["type"] = spec.name;
+    for (const ProfileParam& param : spec.params)
+        std::visit([&](auto field) { writeParam(param.spec, profile.*field, p); }, param.field);
     out["profile"] = std::move(p);
-    if (extrusion) {
-        out["depth"] = floatToJson(profile.depth);
-    } else {
-        out["offset"] = floatToJson(profile.offset);
-    }
+    std::visit([&](auto field) { writeParam(solid.param.spec, profile.*field, out); },
+               solid.param.field);
 }
 
 Json sdfNodeToJson(const SdfNode& node, const std::vector<std::string>& materials) {
     Json out = Json::object();
     if (!node.name.empty()) out["name"] = node.name;
     if (node.isGroup) {
-        out["op"] = kOpNames[std::size_t(node.op)];
-        if (hasRadius(node.op)) out["smoothness"] = floatToJson(node.smoothness);
-        if (isSmooth(node.op) && node.blend != SmoothBlend::Polynomial)
-            out["blend"] = kBlendNames[std::size_t(node.blend)];
+        out["op"] = operationSpec(node.op).name;
+        if (takesSmoothness(node.op)) out["smoothness"] = floatToJson(node.smoothness);
+        if (takesBlend(node.op) && node.blend != blendCatalogue().front().blend)
+            out["blend"] = blendCatalogue()[std::size_t(node.blend)].name;
     } else if (node.profile) {
         writeProfileShape(*node.profile, out);
     } else {

@@ -2,15 +2,21 @@
 //
 // Each kind of JSON object in the format is an ObjectDef below: where it lives in a scene
 // (a probe context), the keys that select its kind ({"type": "spot"}) and a schema per key.
-// When the reader learns a key or a name, `rmsc schema` and the unit test SceneSchema.* say
-// which ObjectDef or family lacks it; add a row there, then refresh the shipped file with
+// The catalogue rows (primitives, modifiers, profiles, profile solids, operation and blend
+// names) become ObjectDefs and names here by themselves. When the reader learns a key or a name
+// outside the catalogues, `rmsc schema` and the unit test SceneSchema.* say which ObjectDef or
+// family lacks it; add a row there. After either, refresh the shipped file with
 //   rmsc schema > docs/scene.schema.json
 #include "scene/scene_schema.hpp"
 
 #include "core/limits.hpp"
 #include "json_reader.hpp"
+#include "param_json.hpp"
 #include "scene/scene_json.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 #include "sdf/primitives.hpp"
+#include "sdf/profiles.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -85,6 +91,53 @@ Json enumOf(const std::set<std::string>& names) {
     return values;
 }
 
+// A string naming a catalogue row.
+Json namesOf(const std::vector<std::string>& names, const std::string& description) {
+    return {{"type", "string"},
+            {"enum", enumOf({names.begin(), names.end()})},
+            {"description", description}};
+}
+
+// A catalogue parameter (sdf/param_spec.hpp): its type, range, default and description.
+Json paramSchema(const SdfParamSpec& spec) {
+    const NumberRange range = numberRange(spec);
+    Json schema;
+    switch (spec.type) {
+    case ParamType::Number:
+        schema = number(range);
+        break;
+    case ParamType::Integer:
+        schema = integer(int(range.min), int(range.max));
+        break;
+    case ParamType::Vec2:
+        schema = numbers(2, range);
+        break;
+    case ParamType::Vec3:
+        schema = numbers(3, range);
+        break;
+    case ParamType::IVec3:
+        schema = integers(3, int(range.min), int(range.max));
+        break;
+    case ParamType::Bool:
+        schema = boolean();
+        break;
+    case ParamType::Axes:
+        schema = {{"type", "string"}, {"pattern", "^[xyz]{1,3}$"}};
+        break;
+    case ParamType::Axis:
+        schema = {{"type", "string"}, {"enum", {"x", "y", "z"}}};
+        break;
+    case ParamType::Points:
+        schema = {{"type", "array"},
+                  {"items", numbers(2, range)},
+                  {"minItems", kMinPolygonPoints},
+                  {"maxItems", kMaxPolygonPoints}};
+        break;
+    }
+    if (!spec.required) schema["default"] = paramDefaultToJson(spec);
+    return described(schema, std::string(spec.description));
+}
+
 // ---- The format's objects ----
 
 struct Key {
@@ -154,7 +207,6 @@ Json sceneWith(const char* key, Json value) {
 }
 
 std::vector<ObjectDef> objectDefs() {
-    const NumberRange length = NumberRange::closed(0.0, kBig);
     const NumberRange positiveLength = NumberRange::openClosed(0.0, kBig);
     const std::vector<Key> lightCommon = {
         {"type", string()},
@@ -349,67 +401,14 @@ std::vector<ObjectDef> objectDefs() {
          "/sdf",
          {{"op", "smooth_union"}, {"smoothness", 0.1}, {"children", Json::array()}},
          plus(nodeKeys(),
-              {{"op", readerNames("how the children combine")},
+              {{"op", namesOf(operationNames(), "how the children combine")},
                {"smoothness", described(number(NumberRange::above(0.0)),
                                         "metres; required by the smooth_, chamfer_ and round_ "
                                         "ops")},
-               {"blend", readerNames("the smooth-minimum curve of the smooth_ ops")},
+               {"blend", namesOf(blendNames(), "the smooth-minimum curve of the smooth_ ops")},
                {"children", {{"type", "array"}, {"items", ref("node")}}}}),
          {},
          "a group of nodes combined by an operation"},
-        {"shape_extrusion",
-         kScene,
-         "/sdf",
-         {{"shape", "extrusion"}},
-         plus(nodeKeys(), {{"shape", string()},
-                           {"profile", ref("profile")},
-                           {"depth", described(number(positiveLength), "metres along z")}}),
-         {"shape", "profile"},
-         "a 2D profile extruded along z"},
-        {"shape_revolution",
-         kScene,
-         "/sdf",
-         {{"shape", "revolution"}},
-         plus(nodeKeys(), {{"shape", string()},
-                           {"profile", ref("profile")},
-                           {"offset", described(number(length), "distance from the y axis")}}),
-         {"shape", "profile"},
-         "a 2D profile revolved around y"},
-        {"profile_circle",
-         extrusion,
-         "/sdf/profile",
-         {{"type", "circle"}},
-         {{"type", string()}, {"radius", number(positiveLength)}},
-         {"type"},
-         ""},
-        {"profile_rectangle",
-         extrusion,
-         "/sdf/profile",
-         {{"type", "rectangle"}},
-         {{"type", string()}, {"half_size", numbers(2, positiveLength)}},
-         {"type"},
-         ""},
-        {"profile_rounded_rectangle",
-         extrusion,
-         "/sdf/profile",
-         {{"type", "rounded_rectangle"}},
-         {{"type", string()},
-          {"half_size", numbers(2, positiveLength)},
-          {"radius", described(number(length), "at most the smaller half size")}},
-         {"type"},
-         ""},
-        {"profile_polygon",
-         extrusion,
-         "/sdf/profile",
-         {{"type", "polygon"}},
-         {{"type", string()},
-          {"points",
-           {{"type", "array"},
-            {"items", numbers(2, NumberRange::closed(-kBig, kBig))},
-            {"minItems", 3},
-            {"maxItems", 256}}}},
-         {"type", "points"},
-         "a simple polygon enclosing some area"},
         {"shell",
          sdfShape,
          "/sdf/shell",
@@ -421,85 +420,58 @@ std::vector<ObjectDef> objectDefs() {
           {"mesh", path("a glTF file, the proxy when \"proxy\" is \"mesh\"")}},
          {},
          "draws the node through a proxy mesh (mesh-shell mode)"},
-        {"modifier_repeat",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "repeat"}, {"period", {1, 0, 0}}},
-         {{"type", string()},
-          {"period", described(numbers(3, length), "cell size per axis, 0 = not repeated")},
-          {"count", described(integers(3, 0, 1 << 20), "copies per axis, 0 = unlimited")},
-          {"neighbours", boolean()}},
-         {"type", "period"},
-         ""},
-        {"modifier_mirror",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "mirror"}, {"axes", "x"}},
-         {{"type", string()},
-          {"axes", described({{"type", "string"}, {"pattern", "^[xyz]{1,3}$"}},
-                             "one to three different axes, e.g. \"xz\"")}},
-         {"type", "axes"},
-         ""},
-        {"modifier_polar",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "polar"}, {"count", 4}},
-         {{"type", string()},
-          {"count", integer(1, 1024)},
-          {"axis", {{"type", "string"}, {"enum", {"x", "y", "z"}}}}},
-         {"type", "count"},
-         ""},
-        {"modifier_elongate",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "elongate"}, {"half_extents", {0, 0, 0}}},
-         {{"type", string()}, {"half_extents", numbers(3, length)}},
-         {"type", "half_extents"},
-         ""},
-        {"modifier_twist",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "twist"}, {"amount", 0}},
-         {{"type", string()},
-          {"amount",
-           described(number(NumberRange::closed(-3600.0, 3600.0)), "degrees per unit length")},
-          {"radius", number(positiveLength)}},
-         {"type", "amount"},
-         ""},
-        {"modifier_bend",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "bend"}, {"amount", 0}},
-         {{"type", string()},
-          {"amount",
-           described(number(NumberRange::closed(-3600.0, 3600.0)), "degrees per unit length")},
-          {"radius", number(positiveLength)}},
-         {"type", "amount"},
-         ""},
-        {"modifier_round",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "round"}, {"radius", 0}},
-         {{"type", string()}, {"radius", number(length)}},
-         {"type", "radius"},
-         ""},
-        {"modifier_onion",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "onion"}, {"thickness", 0.1}},
-         {{"type", string()}, {"thickness", number(positiveLength)}},
-         {"type", "thickness"},
-         ""},
-        {"modifier_displace",
-         sdfShape,
-         "/sdf/modifiers/0",
-         {{"type", "displace"}, {"amplitude", 0}},
-         {{"type", string()},
-          {"amplitude", number(length)},
-          {"frequency", number(NumberRange::openClosed(0.0, 1e3))}},
-         {"type", "amplitude"},
-         ""},
     };
+    // Insert the catalogue rows where they have always been in the file: the profile solids and
+    // the profiles before "shell", the modifiers after it.
+    const auto shell =
+        std::find_if(defs.begin(), defs.end(), [](const ObjectDef& d) { return d.def == "shell"; });
+    std::vector<ObjectDef> profiles;
+    for (const ProfileSolidSpec& solid : profileSolidCatalogue()) {
+        std::vector<Key> keys =
+            plus(nodeKeys(), {{"shape", string()}, {"profile", ref("profile")}});
+        keys.push_back({std::string(solid.param.spec.key), paramSchema(solid.param.spec)});
+        profiles.push_back({"shape_" + std::string(solid.name),
+                            kScene,
+                            "/sdf",
+                            {{"shape", std::string(solid.name)}},
+                            keys,
+                            {"shape", "profile"},
+                            std::string(solid.description)});
+    }
+    for (const ProfileSpec& spec : profileCatalogue()) {
+        std::vector<Key> keys = {{"type", string()}};
+        std::vector<std::string> required = {"type"};
+        for (const ProfileParam& param : spec.params) {
+            keys.push_back({std::string(param.spec.key), paramSchema(param.spec)});
+            if (param.spec.required) required.emplace_back(param.spec.key);
+        }
+        profiles.push_back({"profile_" + std::string(spec.name),
+                            extrusion,
+                            "/sdf/profile",
+                            {{"type", std::string(spec.name)}},
+                            keys,
+                            required,
+                            std::string(spec.description)});
+    }
+    std::vector<ObjectDef> modifiers;
+    for (const ModifierSpec& spec : modifierCatalogue()) {
+        std::vector<Key> keys = {{"type", string()}};
+        std::vector<std::string> required = {"type"};
+        for (const ModifierParam& param : spec.params) {
+            keys.push_back({std::string(param.spec.key), paramSchema(param.spec)});
+            if (param.spec.required) required.emplace_back(param.spec.key);
+        }
+        modifiers.push_back({"modifier_" + std::string(spec.name),
+                             sdfShape,
+                             "/sdf/modifiers/0",
+                             {{"type", std::string(spec.name)}},
+                             keys,
+                             required,
+                             std::string(spec.description)});
+    }
+    const std::ptrdiff_t at = shell - defs.begin();
+    defs.insert(defs.begin() + at + 1, modifiers.begin(), modifiers.end());
+    defs.insert(defs.begin() + at, profiles.begin(), profiles.end());
     // One shape per catalogue primitive, its parameters with the catalogue's ranges.
     for (const PrimitiveSpec& spec : primitiveCatalogue()) {
         std::vector<Key> keys = plus(nodeKeys(), {{"shape", string()}});
@@ -660,8 +632,8 @@ SceneSchema generateSceneSchema() {
         {"$schema", "https://json-schema.org/draft/2020-12/schema"},
         {"$id", "https://rmsc.invalid/scene.schema.json"},
         {"title", "rmsc scene file, format version " + std::to_string(kSceneFormatVersion)},
-        {"description", "Generated by `rmsc schema` from the scene reader and the primitive "
-                        "catalogue; see docs/scene-format.md. Do not edit by hand."},
+        {"description", "Generated by `rmsc schema` from the scene reader and the catalogues; see "
+                        "docs/scene-format.md. Do not edit by hand."},
     };
     const std::vector<ObjectDef> defs = objectDefs();
     Json all = Json::object();

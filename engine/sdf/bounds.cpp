@@ -6,6 +6,8 @@
 #include "sdf/bounds.hpp"
 
 #include "sdf/compiler.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -495,84 +497,10 @@ float smallestScale(const Transform& transform) {
 }
 
 // Box of the points whose image under the point modifier `m` lies in `box` (the modifier maps
-// the node's local point to the point its content is evaluated at, as cpu_eval's pointModifier).
+// the node's local point to the point its content is evaluated at, as its C++ formula does).
 SdfBounds modifierPreimage(const SdfModifier& m, const Aabb& box) {
     if (box.empty()) return boundedBy(box);
-    Aabb out = box;
-    // The largest distance of the box from an axis through the origin (the other two axes u, v).
-    auto radiusAround = [&](int u, int v) {
-        const float du = std::max(std::abs(box.min[u]), std::abs(box.max[u]));
-        const float dv = std::max(std::abs(box.min[v]), std::abs(box.max[v]));
-        return std::sqrt(du * du + dv * dv);
-    };
-    switch (m.type) {
-    case SdfModifierType::Repeat:
-        // Along a repeated axis the point moves by (id - first) period, with id clamped to
-        // 0 .. count - 1 and first = (count - 1) / 2 (the neighbour check picks another id in
-        // the same range): the content's copies reach first * period further either way.
-        // count 0 is infinite repetition.
-        for (int axis = 0; axis < 3; ++axis) {
-            const float period = m.vector[axis];
-            if (!(period > 0.0f)) continue;
-            const int count = std::max(m.counts[axis], 0);
-            if (count == 0) return unbounded(m.pointer);
-            const float reach = 0.5f * float(count - 1) * period;
-            out.min[axis] -= reach;
-            out.max[axis] += reach;
-        }
-        return boundedBy(out);
-    case SdfModifierType::Mirror:
-        // A folded axis sees |x|: x reaches as far either way as the box does on the + side.
-        for (int axis = 0; axis < 3; ++axis) {
-            if (!m.axes[axis]) continue;
-            if (box.max[axis] < 0.0f) return boundedBy(Aabb{});
-            out.min[axis] = -box.max[axis];
-            out.max[axis] = box.max[axis];
-        }
-        return boundedBy(out);
-    case SdfModifierType::Polar: {
-        // A rotation about the axis: same extent along it, and every point within the box's
-        // largest distance from it.
-        const int axis = m.axis;
-        const int u = axis == 0 ? 1 : 0;
-        const int v = axis == 2 ? 1 : 2;
-        const float radius = radiusAround(u, v);
-        out.min[u] = out.min[v] = -radius;
-        out.max[u] = out.max[v] = radius;
-        return boundedBy(out);
-    }
-    case SdfModifierType::Elongate:
-        // q = x - clamp(x, -h, h): x = q + h for q > 0, q - h for q < 0, [-h, h] for q = 0.
-        for (int axis = 0; axis < 3; ++axis) {
-            const float h = std::max(m.vector[axis], 0.0f);
-            out.min[axis] = box.min[axis] > 0.0f ? box.min[axis] + h : box.min[axis] - h;
-            out.max[axis] = box.max[axis] < 0.0f ? box.max[axis] - h : box.max[axis] + h;
-        }
-        return boundedBy(out);
-    case SdfModifierType::Twist: {
-        // A rotation about y by an angle that depends on y: y and the distance from y are kept.
-        const float radius = radiusAround(0, 2);
-        out.min.x = out.min.z = -radius;
-        out.max.x = out.max.z = radius;
-        return boundedBy(out);
-    }
-    case SdfModifierType::Bend: {
-        // A rotation about z (in the xy plane) by an angle that depends on x: z and the
-        // distance from z are kept.
-        const float radius = radiusAround(0, 1);
-        out.min.x = out.min.y = -radius;
-        out.max.x = out.max.y = radius;
-        return boundedBy(out);
-    }
-    default: // distance modifiers do not move the point
-        return boundedBy(out);
-    }
-}
-
-bool isPointModifier(SdfModifierType type) {
-    return type == SdfModifierType::Repeat || type == SdfModifierType::Mirror ||
-           type == SdfModifierType::Polar || type == SdfModifierType::Elongate ||
-           type == SdfModifierType::Twist || type == SdfModifierType::Bend;
+    return modifierSpec(m.type).preimage(m, box);
 }
 
 SdfBounds localBoundsAt(const SdfNode& node, float level, float fieldScale);
@@ -588,14 +516,14 @@ SdfBounds parentBoundsAt(const SdfNode& node, float level, float fieldScale) {
     return boundedBy(transformAabb(local.box, node.transform.matrix()));
 }
 
+// Unions and xor (xor = max(min(a, b), -max(a, b)) <= min(a, b) is bounded like a union).
 bool isUnionLike(SdfOp op) {
-    return op == SdfOp::Union || op == SdfOp::Xor || op == SdfOp::SmoothUnion ||
-           op == SdfOp::ChamferUnion || op == SdfOp::RoundUnion;
+    const SdfOpCombination combination = operationSpec(op).combination;
+    return combination == SdfOpCombination::Union || combination == SdfOpCombination::Xor;
 }
 
 bool isIntersectionLike(SdfOp op) {
-    return op == SdfOp::Intersection || op == SdfOp::SmoothIntersection ||
-           op == SdfOp::ChamferIntersection || op == SdfOp::RoundIntersection;
+    return operationSpec(op).combination == SdfOpCombination::Intersection;
 }
 
 // For a union-like op(a, b) <= t: the level u with min(a, b) <= u. `k` is the smoothness as a
@@ -635,8 +563,7 @@ SdfBounds groupBoundsAt(const SdfNode& node, float t, float fieldScale) {
     if (kept.empty()) return boundedBy(Aabb{});
     const SdfOp op = node.op;
     const float k = std::max(node.smoothness, 0.0f) / fieldScale;
-    if (!std::isfinite(k) &&
-        (op == SdfOp::SmoothUnion || op == SdfOp::ChamferUnion || op == SdfOp::RoundUnion))
+    if (!std::isfinite(k) && isUnionLike(op) && takesSmoothness(op))
         return unbounded(node.pointer); // refused by the compiler anyway
 
     if (isUnionLike(op)) {
@@ -696,12 +623,10 @@ SdfBounds localBoundsAt(const SdfNode& node, float level, float fieldScale) {
     float bodyLevel = level * shrink;
     const float bodyFieldScale = fieldScale / shrink;
     // Distance modifiers, applied to the body's field in list order, each turn "result <= t"
-    // into "body <= t + amount": Round d - r; Onion |d| - thickness (d <= |d|); Displace
-    // d + amplitude * noise with the noise in [-1, 1].
+    // into "body <= t + growth" (ModifierSpec::growth).
     for (const SdfModifier& m : node.modifiers) {
-        if (m.type == SdfModifierType::Round) bodyLevel += m.radius;
-        if (m.type == SdfModifierType::Onion) bodyLevel += m.thickness;
-        if (m.type == SdfModifierType::Displace) bodyLevel += std::abs(m.amount);
+        const ModifierSpec& spec = modifierSpec(m.type);
+        if (spec.growth) bodyLevel += spec.growth(m);
     }
     bodyLevel = std::max(bodyLevel, 0.0f);
 

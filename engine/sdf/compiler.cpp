@@ -6,6 +6,8 @@
 
 #include "core/object_ids.hpp"
 #include "sdf/bounds.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -54,67 +56,24 @@ struct ShellSite {
     std::uint32_t idBase = 0; // pre-order index of the shell node in the whole tree
 };
 
-// Upper bound of the gradient length of the value noise of the Displace modifier (sdfValueNoise
-// in the shader): each partial derivative is the smoothstep slope (at most 1.5) times a
-// difference of two lattice values in [-1, 1] (at most 2), so |grad| <= 3 sqrt(3).
-constexpr double kNoiseGradientBound = 5.196152422706632;
-
-bool isPointModifier(SdfModifierType type) {
-    return type == SdfModifierType::Repeat || type == SdfModifierType::Mirror ||
-           type == SdfModifierType::Polar || type == SdfModifierType::Elongate ||
-           type == SdfModifierType::Twist || type == SdfModifierType::Bend;
+// The cut nodes of a group are subtracted with the subtraction of the group's seam.
+SdfOp cutOp(SdfOp op) {
+    return withCombination(op, SdfOpCombination::Subtraction);
 }
 
 // A node needs its own point frame when a modifier reads or changes the point.
 bool needsPointFrame(const SdfNode& node) {
-    for (const SdfModifier& m : node.modifiers)
-        if (isPointModifier(m.type) || m.type == SdfModifierType::Displace) return true;
+    for (const SdfModifier& m : node.modifiers) {
+        const ModifierSpec& spec = modifierSpec(m.type);
+        if (spec.stage == ModifierStage::Point || spec.readsPoint) return true;
+    }
     return false;
 }
 
-// Cells a repetition evaluates per point: 2^(repeated axes) with the neighbour check (the own
-// cell and the nearest neighbour along each repeated axis), else 1.
+// Cells a point modifier evaluates the rest of its chain in (ModifierSpec::cells).
 int neighbourCells(const SdfModifier& m) {
-    if (m.type != SdfModifierType::Repeat || !m.neighbours) return 1;
-    int cells = 1;
-    for (int axis = 0; axis < 3; ++axis)
-        if (m.vector[axis] > 0.0f) cells *= 2;
-    return cells;
-}
-
-// Lipschitz constant of a point modifier's map (the factor the distance is divided by so
-// sphere tracing stays safe). Twist by k rad/unit about y moves a point of the content (within
-// radius R of the axis) so that |T(p) - T(q)| <= |shear(kR)| |p - q|, the largest singular
-// value of [[1, 0], [kR, 1]]: kR/2 + sqrt(1 + (kR/2)^2). Bend by k about z (the angle follows
-// x) gives |T(p) - T(q)| <= (1 + kR) |p - q| with R the content's radius in the xy plane.
-// Derivation in docs/scene-format.md ("Step corrections"). The others are 1-Lipschitz.
-double pointModifierLipschitz(const SdfModifier& m) {
-    const double k = std::abs(double(m.amount)) * std::numbers::pi / 180.0;
-    const double r = std::max(double(m.radius), 0.0);
-    if (m.type == SdfModifierType::Twist)
-        return k * r / 2.0 + std::sqrt(1.0 + (k * r / 2.0) * (k * r / 2.0));
-    if (m.type == SdfModifierType::Bend) return 1.0 + k * r;
-    return 1.0;
-}
-
-// The cut nodes of a group are subtracted with the subtraction of the group's family.
-SdfOp cutOp(SdfOp op) {
-    switch (op) {
-    case SdfOp::SmoothUnion:
-    case SdfOp::SmoothSubtraction:
-    case SdfOp::SmoothIntersection:
-        return SdfOp::SmoothSubtraction;
-    case SdfOp::ChamferUnion:
-    case SdfOp::ChamferSubtraction:
-    case SdfOp::ChamferIntersection:
-        return SdfOp::ChamferSubtraction;
-    case SdfOp::RoundUnion:
-    case SdfOp::RoundSubtraction:
-    case SdfOp::RoundIntersection:
-        return SdfOp::RoundSubtraction;
-    default:
-        return SdfOp::Subtraction;
-    }
+    const ModifierSpec& spec = modifierSpec(m.type);
+    return spec.cells ? spec.cells(m) : 1;
 }
 
 constexpr long kCountCap = 1L << 40; // instruction counts saturate here (no overflow)
@@ -136,52 +95,6 @@ ChainCost chainCost(const std::vector<SdfModifier>& modifiers, std::size_t i, Ch
     if (cells == 1) return {std::min(rest.instructions + 1, kCountCap), rest.stack, rest.points};
     return {std::min(cells * (rest.instructions + 3) + cells - 1, kCountCap), rest.stack + 1,
             rest.points + 1};
-}
-
-// Operations that need a radius in `smoothness`: the smooth, chamfer and round ones.
-bool isSmooth(SdfOp op) {
-    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::SmoothIntersection || op == SdfOp::ChamferUnion ||
-           op == SdfOp::ChamferSubtraction || op == SdfOp::ChamferIntersection ||
-           op == SdfOp::RoundUnion || op == SdfOp::RoundSubtraction ||
-           op == SdfOp::RoundIntersection;
-}
-
-bool isSubtraction(SdfOp op) {
-    return op == SdfOp::Subtraction || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::ChamferSubtraction || op == SdfOp::RoundSubtraction;
-}
-
-std::string opName(SdfOp op) {
-    switch (op) {
-    case SdfOp::Union:
-        return "union";
-    case SdfOp::Subtraction:
-        return "subtraction";
-    case SdfOp::Intersection:
-        return "intersection";
-    case SdfOp::SmoothUnion:
-        return "smooth union";
-    case SdfOp::SmoothSubtraction:
-        return "smooth subtraction";
-    case SdfOp::SmoothIntersection:
-        return "smooth intersection";
-    case SdfOp::Xor:
-        return "xor";
-    case SdfOp::ChamferUnion:
-        return "chamfer union";
-    case SdfOp::ChamferSubtraction:
-        return "chamfer subtraction";
-    case SdfOp::ChamferIntersection:
-        return "chamfer intersection";
-    case SdfOp::RoundUnion:
-        return "round union";
-    case SdfOp::RoundSubtraction:
-        return "round subtraction";
-    case SdfOp::RoundIntersection:
-        return "round intersection";
-    }
-    return "operation";
 }
 
 // Smallest singular value of the linear part of `m`: the least a world-space length can shrink
@@ -350,7 +263,7 @@ class Planner {
                                  "through the depth buffer (a plain union), so it can only sit "
                                  "in plain union groups without modifiers; ";
         if (group.op != SdfOp::Union)
-            return lead + "its group " + group.pointer + " is a " + opName(group.op);
+            return lead + "its group " + group.pointer + " is a " + operationLabel(group.op);
         if (!group.modifiers.empty())
             return lead + "its group " + group.pointer +
                    " has modifiers, which would not "
@@ -418,15 +331,16 @@ class Planner {
     void checkGroup(const SdfNode& node) {
         if (node.children.empty())
             diagnostics_.error(file_, node.pointer,
-                               "the " + opName(node.op) + " group has no children");
-        if (isSubtraction(node.op) && node.children.size() == 1)
+                               "the " + operationLabel(node.op) + " group has no children");
+        if (operationSpec(node.op).combination == SdfOpCombination::Subtraction &&
+            node.children.size() == 1)
             diagnostics_.error(file_, node.pointer,
-                               "a " + opName(node.op) +
+                               "a " + operationLabel(node.op) +
                                    " needs at least two children (the shape and what to "
                                    "subtract from it), got one");
-        if (isSmooth(node.op) && !(std::isfinite(node.smoothness) && node.smoothness > 0.0f))
+        if (takesSmoothness(node.op) && !(std::isfinite(node.smoothness) && node.smoothness > 0.0f))
             diagnostics_.error(file_, node.pointer,
-                               "the smoothness (radius) of a " + opName(node.op) +
+                               "the smoothness (radius) of a " + operationLabel(node.op) +
                                    " must be a finite number > 0, got " +
                                    std::to_string(node.smoothness));
     }
@@ -524,58 +438,16 @@ GpuSdfInstruction pushPoint(const PlannedNode& planned, const glm::vec4* rows) {
 GpuSdfInstruction pointModifierInstruction(const SdfModifier& m, const PlannedNode& planned,
                                            int cell) {
     GpuSdfInstruction instruction = pointInstruction(SdfOpcode::PointModifier, planned);
-    const float radiansPerDegree = std::numbers::pi_v<float> / 180.0f;
-    switch (m.type) {
-    case SdfModifierType::Repeat: {
-        instruction.kind = std::uint32_t(SdfPointModifierKind::Repeat);
-        instruction.params[0] = glm::vec4(glm::max(m.vector, 0.0f), 0.0f);
-        instruction.params[1] = glm::vec4(glm::vec3(glm::max(m.counts, 0)), 0.0f);
-        if (cell >= 0) {
-            int bit = 0;
-            for (int axis = 0; axis < 3; ++axis)
-                if (m.vector[axis] > 0.0f) instruction.params[2][axis] = float((cell >> bit++) & 1);
-            instruction.params[2].w = 1.0f;
-        }
-        break;
-    }
-    case SdfModifierType::Mirror:
-        instruction.kind = std::uint32_t(SdfPointModifierKind::Mirror);
-        instruction.params[0] = glm::vec4(glm::vec3(m.axes), 0.0f);
-        break;
-    case SdfModifierType::Polar:
-        instruction.kind = std::uint32_t(SdfPointModifierKind::Polar);
-        instruction.params[0] = glm::vec4(float(std::max(m.count, 1)), float(m.axis), 0, 0);
-        break;
-    case SdfModifierType::Elongate:
-        instruction.kind = std::uint32_t(SdfPointModifierKind::Elongate);
-        instruction.params[0] = glm::vec4(glm::max(m.vector, 0.0f), 0.0f);
-        break;
-    case SdfModifierType::Twist:
-        instruction.kind = std::uint32_t(SdfPointModifierKind::Twist);
-        instruction.params[0].x = m.amount * radiansPerDegree;
-        break;
-    default: // Bend
-        instruction.kind = std::uint32_t(SdfPointModifierKind::Bend);
-        instruction.params[0].x = m.amount * radiansPerDegree;
-        break;
-    }
+    instruction.kind = modifierKind(m.type);
+    modifierSpec(m.type).pack(m, 1.0f, cell, instruction.params);
     return instruction;
 }
 
+// A distance modifier, its lengths converted to the units of the node's field.
 GpuSdfInstruction distanceModifierInstruction(const SdfModifier& m, const PlannedNode& planned) {
     GpuSdfInstruction instruction = pointInstruction(SdfOpcode::DistanceModifier, planned);
-    const float scale = float(planned.nodeScale);
-    if (m.type == SdfModifierType::Round) {
-        instruction.kind = std::uint32_t(SdfDistanceModifierKind::Round);
-        instruction.params[0].x = m.radius * scale;
-    } else if (m.type == SdfModifierType::Onion) {
-        instruction.kind = std::uint32_t(SdfDistanceModifierKind::Onion);
-        instruction.params[0].x = m.thickness * scale;
-    } else {
-        instruction.kind = std::uint32_t(SdfDistanceModifierKind::Displace);
-        instruction.params[0].x = m.amount * scale;
-        instruction.params[0].y = m.frequency;
-    }
+    instruction.kind = modifierKind(m.type);
+    modifierSpec(m.type).pack(m, float(planned.nodeScale), -1, instruction.params);
     return instruction;
 }
 
@@ -874,14 +746,13 @@ std::optional<SdfProgram> finishProgram(Planner& planner, const PlannedNode& pla
 
 double sdfFieldShrink(const std::vector<SdfModifier>& modifiers) {
     double lipschitz = 1.0;
-    double displacement = 1.0;
+    double gradient = 1.0;
     for (const SdfModifier& m : modifiers) {
-        lipschitz *= pointModifierLipschitz(m);
-        if (m.type == SdfModifierType::Displace)
-            displacement +=
-                std::abs(double(m.amount)) * std::abs(double(m.frequency)) * kNoiseGradientBound;
+        const ModifierSpec& spec = modifierSpec(m.type);
+        if (spec.lipschitz) lipschitz *= spec.lipschitz(m);
+        if (spec.gradientGain) gradient += spec.gradientGain(m);
     }
-    return lipschitz * displacement;
+    return lipschitz * gradient;
 }
 
 std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,

@@ -3,6 +3,7 @@
 // what the shader computes. The single formulas are in sdf_functions.cpp.
 #include "sdf/cpu_eval.hpp"
 
+#include "sdf/modifiers.hpp"
 #include "sdf/sdf_functions.hpp"
 
 #include <algorithm>
@@ -13,9 +14,6 @@
 
 namespace rmsc {
 namespace {
-
-// Distance reported by an empty program (SDF_FAR in the shader): nothing anywhere.
-constexpr float kSdfFar = 1e10f;
 
 // Distance of a shape instruction at world point p: the primitive at the local point, scaled
 // back to world units (sdfShapeDistance in the shader).
@@ -52,6 +50,12 @@ float leafDistance(const SdfProgram& program, const GpuSdfInstruction& instructi
                : shapeDistance(instruction, p);
 }
 
+// A distance modifier at the current point (sdfDistanceModifier in the shader).
+float distanceModifier(const GpuSdfInstruction& instruction, float d, glm::vec3 p) {
+    return modifierOfKind(ModifierStage::Distance, instruction.kind)
+        .changeDistance(d, p, instruction.params);
+}
+
 bool isLeaf(const GpuSdfInstruction& instruction) {
     return instruction.opcode == std::uint32_t(SdfOpcode::Shape) ||
            instruction.opcode == std::uint32_t(SdfOpcode::Profile);
@@ -71,7 +75,7 @@ bool pointStep(const GpuSdfInstruction& instruction, glm::vec3& p,
         return true;
     }
     case SdfOpcode::PointModifier:
-        p = sdfPointModifier(SdfPointModifierKind(instruction.kind), p, instruction.params);
+        p = modifierOfKind(ModifierStage::Point, instruction.kind).movePoint(p, instruction.params);
         return true;
     case SdfOpcode::PopPoint:
         assert(savedTop > 0);
@@ -164,8 +168,7 @@ float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
         } else if (pointStep(instruction, p, saved, savedTop)) {
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::DistanceModifier)) {
             assert(top >= 1);
-            stack[top - 1] = sdfDistanceModifier(SdfDistanceModifierKind(instruction.kind),
-                                                 stack[top - 1], p, instruction.params[0]);
+            stack[top - 1] = distanceModifier(instruction, stack[top - 1], p);
         } else {
             assert(top >= 2);
             float weightA = 0.0f;
@@ -209,9 +212,7 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
         } else if (pointStep(instruction, p, saved, savedTop)) {
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::DistanceModifier)) {
             assert(top >= 1);
-            stack[top - 1].distance =
-                sdfDistanceModifier(SdfDistanceModifierKind(instruction.kind),
-                                    stack[top - 1].distance, p, instruction.params[0]);
+            stack[top - 1].distance = distanceModifier(instruction, stack[top - 1].distance, p);
         } else {
             assert(top >= 2);
             const SdfSurface b = stack[top - 1];

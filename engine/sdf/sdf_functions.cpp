@@ -106,7 +106,7 @@ float latticeValue(glm::ivec3 c) {
 // Value noise: lattice values blended trilinearly with the cubic
 // smoothstep weights 3t^2 - 2t^3 (Perlin 1985, "An image synthesizer"; Quilez, "Value noise
 // derivatives", https://iquilezles.org/articles/morenoise/). In [-1, 1]; gradient length at
-// most 3 sqrt(3) (kNoiseGradientBound in the compiler).
+// most 3 sqrt(3) (kNoiseGradientBound).
 float sdfValueNoise(glm::vec3 p) {
     const glm::vec3 cell = glm::floor(p);
     const glm::vec3 f = p - cell;
@@ -123,12 +123,12 @@ float sdfValueNoise(glm::vec3 p) {
     return glm::mix(glm::mix(x00, x10, u.y), glm::mix(x01, x11, u.y), u.z);
 }
 
-// A point modifier (sdfPointModifier in the shader). Formulas: Inigo Quilez, "Distance
-
-// A point modifier. Formulas: Inigo Quilez, "Distance functions" (twist, bend, elongation) and
-// "Domain repetition" (https://iquilezles.org/articles/sdfrepetition/); polar repetition as
-// hg_sdf's pModPolar.
-glm::vec3 sdfPointModifier(SdfPointModifierKind kind, glm::vec3 p, const glm::vec4 (&a)[3]) {
+// A point modifier (sdfPointModifier in the shader), parameters as its catalogue row packs them
+// (engine/sdf/modifiers.cpp). Formulas: Inigo Quilez, "Distance functions" (twist, bend,
+// elongation) and "Domain repetition" (https://iquilezles.org/articles/sdfrepetition/); polar
+// repetition as hg_sdf's pModPolar; the taper after Barr, "Global and local deformations of
+// solid primitives" (SIGGRAPH 1984).
+glm::vec3 sdfPointModifier(SdfPointModifierKind kind, glm::vec3 p, const glm::vec4* a) {
     switch (kind) {
     case SdfPointModifierKind::Repeat:
         for (int axis = 0; axis < 3; ++axis) {
@@ -174,6 +174,13 @@ glm::vec3 sdfPointModifier(SdfPointModifierKind kind, glm::vec3 p, const glm::ve
         const float c = std::cos(a[0].x * p.x);
         const float s = std::sin(a[0].x * p.x);
         return glm::vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
+    }
+    case SdfPointModifierKind::Taper: {
+        // The content at height y scaled by s = 1 + k clamp(y, -R, R) in x and z ([0].x = k per
+        // unit along y, [0].y = the reach R), held constant beyond |y| = R so that s stays above
+        // 1 - |k| R > 0 everywhere.
+        const float scale = 1.0f + a[0].x * std::clamp(p.y, -a[0].y, a[0].y);
+        return glm::vec3(p.x / scale, p.y, p.z / scale);
     }
     }
     return p;

@@ -4,7 +4,7 @@
 
 #include "document_edits.hpp"
 #include "editor/scene_edits.hpp"
-#include "operation_labels.hpp"
+#include "sdf/operations.hpp"
 
 #include <imgui.h>
 
@@ -39,8 +39,8 @@ void drawAddButtons(editor::Document& document, ViewerCommands& commands) {
     ImGui::SameLine();
     if (ImGui::Button("+ Group")) ImGui::OpenPopup("add group");
     if (ImGui::BeginPopup("add group")) {
-        for (const OpName& op : kOps)
-            if (ImGui::Selectable(op.label)) addGroup(document, op.op);
+        for (const OperationSpec& op : operationCatalogue())
+            if (ImGui::Selectable(operationLabel(op.op).c_str())) addGroup(document, op.op);
         ImGui::EndPopup();
     }
     ImGui::SameLine();
@@ -64,7 +64,7 @@ void drawSdfNode(const SdfNode& node, std::vector<int>& path, Selection& selecti
     if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
     if (selection == Selection::sdf(path)) flags |= ImGuiTreeNodeFlags_Selected;
     const std::string label =
-        (node.isGroup ? std::string("[") + opLabel(node.op) + "] " : std::string()) +
+        (node.isGroup ? "[" + operationLabel(node.op) + "] " : std::string()) +
         editor::displayName(node) + "##" + pathId(path);
     const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selection = Selection::sdf(path);

@@ -3,24 +3,24 @@
 #include "inspector.hpp"
 
 #include "panel_widgets.hpp"
+#include "sdf/modifiers.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
-#include <iterator>
+#include <cmath>
+#include <string>
 
 namespace rmsc::app {
 
 bool editModifiers(SdfNode& node, float size) {
-    static const char* kNames[] = {"repeat", "mirror", "polar", "elongate", "twist",
-                                   "bend",   "round",  "onion", "displace"};
     bool changed = false;
     ImGui::TextDisabled("Modifiers");
     const float step = stepFor(size);
     for (std::size_t i = 0; i < node.modifiers.size(); ++i) {
         SdfModifier& m = node.modifiers[i];
         ImGui::PushID(int(i));
-        ImGui::Text("%zu. %s", i + 1, kNames[int(m.type)]);
+        ImGui::Text("%zu. %s", i + 1, std::string(modifierSpec(m.type).name).c_str());
         ImGui::SameLine();
         if (ImGui::SmallButton("remove")) {
             node.modifiers.erase(node.modifiers.begin() + std::ptrdiff_t(i));
@@ -61,6 +61,19 @@ bool editModifiers(SdfNode& node, float size) {
                                         ImGuiSliderFlags_AlwaysClamp);
             helpTooltip("How far from the axis the content reaches (sets the step correction).");
             break;
+        case SdfModifierType::Taper: {
+            // |amount| x radius stays below 1: the scale must not reach 0 (the reader's check).
+            const float most = 0.99f / std::max(m.radius, 1e-4f);
+            changed |= ImGui::DragFloat("scale per unit", &m.amount, 0.01f / std::max(size, 1e-3f),
+                                        -std::min(most, 100.0f), std::min(most, 100.0f), "%.3f",
+                                        ImGuiSliderFlags_AlwaysClamp);
+            changed |= ImGui::DragFloat("radius", &m.radius, step, 1e-4f,
+                                        std::min(1e4f, 0.99f / std::max(std::abs(m.amount), 1e-4f)),
+                                        "%.3f", ImGuiSliderFlags_AlwaysClamp);
+            helpTooltip("How far the content reaches: from the y axis, and the height beyond "
+                        "which the scale stays constant (sets the step correction).");
+            break;
+        }
         case SdfModifierType::Round:
             changed |= ImGui::DragFloat("radius", &m.radius, step * 0.25f, 0.0f, 1e4f, "%.4f",
                                         ImGuiSliderFlags_AlwaysClamp);
@@ -79,16 +92,18 @@ bool editModifiers(SdfNode& node, float size) {
         ImGui::PopID();
     }
     if (ImGui::BeginCombo("add modifier", "...")) {
-        for (int t = 0; t < int(std::size(kNames)); ++t) {
-            if (!ImGui::Selectable(kNames[t])) continue;
+        for (const ModifierSpec& spec : modifierCatalogue()) {
+            if (!ImGui::Selectable(std::string(spec.name).c_str())) continue;
             SdfModifier m;
-            m.type = SdfModifierType(t);
+            m.type = spec.type;
             // Defaults that show the effect at the object's size.
             m.vector = m.type == SdfModifierType::Repeat ? glm::vec3(size * 3.0f, 0.0f, 0.0f)
                                                          : glm::vec3(size * 0.5f, 0.0f, 0.0f);
             m.axes = glm::bvec3(true, false, false);
             m.count = 6;
-            m.amount = m.type == SdfModifierType::Displace ? size * 0.05f : 45.0f;
+            m.amount = m.type == SdfModifierType::Displace ? size * 0.05f
+                       : m.type == SdfModifierType::Taper  ? 0.5f / std::max(size, 1e-3f)
+                                                           : 45.0f;
             m.radius = m.type == SdfModifierType::Round ? size * 0.05f : size;
             m.thickness = size * 0.05f;
             m.frequency = 4.0f / std::max(size, 1e-3f);

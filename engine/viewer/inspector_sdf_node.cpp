@@ -4,8 +4,8 @@
 #include "inspector.hpp"
 
 #include "editor/scene_edits.hpp"
-#include "operation_labels.hpp"
 #include "panel_widgets.hpp"
+#include "sdf/operations.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -20,17 +20,18 @@ namespace {
 // A group's operation and, for the smooth ones, its smoothness; `size` is the group's.
 void drawGroupFields(SdfNode& node, float size, editor::Document& document) {
     ImGui::TextDisabled("Group");
-    if (ImGui::BeginCombo("operation", opLabel(node.op))) {
-        for (const OpName& op : kOps) {
-            if (ImGui::Selectable(op.label, node.op == op.op)) {
+    if (ImGui::BeginCombo("operation", operationLabel(node.op).c_str())) {
+        for (const OperationSpec& op : operationCatalogue()) {
+            if (ImGui::Selectable(operationLabel(op.op).c_str(), node.op == op.op)) {
                 node.op = op.op;
-                if (isSmooth(op.op) && node.smoothness <= 0.0f) node.smoothness = size * 0.1f;
+                if (takesSmoothness(op.op) && node.smoothness <= 0.0f)
+                    node.smoothness = size * 0.1f;
                 document.markChanged("Operation");
             }
         }
         ImGui::EndCombo();
     }
-    if (isSmooth(node.op) &&
+    if (takesSmoothness(node.op) &&
         ImGui::DragFloat("smoothness", &node.smoothness, stepFor(size) * 0.5f, 0.0f, size * 4.0f,
                          "%.4f", ImGuiSliderFlags_AlwaysClamp))
         document.markChanged("Smoothness");

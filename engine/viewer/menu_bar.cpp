@@ -2,8 +2,8 @@
 #include "menu_bar.hpp"
 
 #include "document_edits.hpp"
-#include "operation_labels.hpp"
 #include "panel_widgets.hpp"
+#include "sdf/operations.hpp"
 
 #include <imgui.h>
 
@@ -56,8 +56,8 @@ void drawAddMenu(editor::Document& document, ViewerCommands& commands) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Group")) {
-        for (const OpName& op : kOps)
-            if (ImGui::MenuItem(op.label)) addGroup(document, op.op);
+        for (const OperationSpec& op : operationCatalogue())
+            if (ImGui::MenuItem(operationLabel(op.op).c_str())) addGroup(document, op.op);
         ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Directional light")) addLight(document);

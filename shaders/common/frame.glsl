@@ -1,5 +1,8 @@
-// Per-frame camera and settings (std140, binding 0). Mirrors GpuFrame in engine/render/include/render/frame.hpp.
-layout(std140, binding = 0) uniform FrameBlock {
+// Per-frame camera and settings (std140, binding FRAME_BINDING). Mirrors GpuFrame in
+// engine/render/include/render/frame.hpp.
+#include "generated/constants.glsl"
+
+layout(std140, binding = FRAME_BINDING) uniform FrameBlock {
     mat4 view;
     mat4 viewProjection;
     mat4 frustumCorners; // world directions to the BL, BR, TL, TR corners, forward component 1

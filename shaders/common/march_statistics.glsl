@@ -4,7 +4,9 @@
 // (SDF_COUNT_EVALUATIONS) adds the primitives each pixel evaluated to the 64-bit count in [2]
 // (low word) and [3] (high word: a carry whenever the low word wraps); so does the
 // instrumented cone pass (passes/cone.frag), the march pass's pre-pass.
-layout(std430, binding = 5) buffer MarchStatisticsBuffer { // kMarchStatisticsBinding
+#include "generated/constants.glsl"
+
+layout(std430, binding = MARCH_STATISTICS_BINDING) buffer MarchStatisticsBuffer {
     uint marchStatistics[4];
 };
 

@@ -12,17 +12,21 @@
 // (tangent-space xy added to the surface normal's in-plane part, z multiplied) per projection.
 // Here each projection has an explicit right-handed frame (tangent T, bitangent B, axis A with
 // T x B = A) so the map's +x points along T and its +y (up the image) along B.
+#include "generated/constants.glsl"
 #include "common/scene_buffers.glsl"
 
-#define SDF_TEXTURE_COUNT 8
-layout(binding = 5) uniform sampler2D uSdfTexture0;
-layout(binding = 6) uniform sampler2D uSdfTexture1;
-layout(binding = 7) uniform sampler2D uSdfTexture2;
-layout(binding = 8) uniform sampler2D uSdfTexture3;
-layout(binding = 9) uniform sampler2D uSdfTexture4;
-layout(binding = 10) uniform sampler2D uSdfTexture5;
-layout(binding = 11) uniform sampler2D uSdfTexture6;
-layout(binding = 12) uniform sampler2D uSdfTexture7;
+// One sampler per texture slot, SDF_TEXTURE_COUNT of them (picked by sampleSdfTexture).
+#if SDF_TEXTURE_COUNT != 8
+#error "declare one uSdfTexture per slot (SDF_TEXTURE_COUNT)"
+#endif
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 0) uniform sampler2D uSdfTexture0;
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 1) uniform sampler2D uSdfTexture1;
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 2) uniform sampler2D uSdfTexture2;
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 3) uniform sampler2D uSdfTexture3;
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 4) uniform sampler2D uSdfTexture4;
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 5) uniform sampler2D uSdfTexture5;
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 6) uniform sampler2D uSdfTexture6;
+layout(binding = SDF_TEXTURE_FIRST_UNIT + 7) uniform sampler2D uSdfTexture7;
 
 // Samples with an explicit level of detail: the hit is found in non-uniform control flow, where
 // implicit derivatives are undefined. `footprint` is a pixel's size in texture repeats.

@@ -1,5 +1,6 @@
-// Scene buffers shared by every pass: materials and lights (std430). Mirrors
-// engine/render/include/render/gpu_layout.hpp; binding numbers match SsboBinding there.
+// Scene buffers shared by every pass: materials and lights (std430). Mirrors the structs of
+// engine/render/include/render/gpu_layout.hpp; the bindings and LIGHT_* types are generated.
+#include "generated/constants.glsl"
 
 // A triplanar texture of an SDF material (GpuMaterialTexture).
 struct GpuMaterialTexture {
@@ -17,11 +18,6 @@ struct GpuMaterial {
     GpuMaterialTexture roughnessTexture;
 };
 
-// GpuLightType (engine/render/include/render/gpu_layout.hpp).
-#define LIGHT_DIRECTIONAL 0
-#define LIGHT_POINT 1
-#define LIGHT_SPOT 2
-
 struct GpuLight {
     vec4 directionType;  // xyz = direction the light travels, w = LIGHT_* type
     vec4 colorIntensity; // rgb = colour (linear), a = intensity
@@ -36,15 +32,15 @@ struct GpuShadowView {
     vec4 params; // x = texel world size (ortho) or per unit distance (perspective), y = perspective
 };
 
-layout(std430, binding = 1) readonly buffer MaterialBuffer {
+layout(std430, binding = MATERIAL_BINDING) readonly buffer MaterialBuffer {
     GpuMaterial materials[];
 };
 
-layout(std430, binding = 2) readonly buffer LightBuffer {
+layout(std430, binding = LIGHT_BINDING) readonly buffer LightBuffer {
     uvec4 lightHeader; // x = light count
     GpuLight lights[];
 };
 
-layout(std430, binding = 3) readonly buffer ShadowViewBuffer {
+layout(std430, binding = SHADOW_VIEW_BINDING) readonly buffer ShadowViewBuffer {
     GpuShadowView shadowViews[];
 };

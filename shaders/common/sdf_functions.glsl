@@ -3,23 +3,10 @@
 // program buffers, the combine operations, modifiers, 2D profiles and surface records.
 // Mirrored exactly by engine/sdf/sdf_functions.cpp (the formulas) and engine/sdf/cpu_eval.cpp
 // (the rest); tests/gpu/test_formula_parity.cpp compares the formulas one by one.
+// The SDF_* numbers (opcodes, kinds, stack sizes, bindings) come from generated/constants.glsl.
+#include "generated/constants.glsl"
 #include "common/scene_buffers.glsl"
 #include "common/sdf_primitives.glsl"
-
-// Must equal kSdfMaxStack in engine/sdf/include/sdf/program.hpp; the compiler refuses deeper programs.
-#define SDF_MAX_STACK 24
-
-// SdfOpcode (engine/sdf/include/sdf/program.hpp).
-#define SDF_OPCODE_SHAPE 0u
-#define SDF_OPCODE_COMBINE 1u
-#define SDF_OPCODE_PUSH_POINT 2u
-#define SDF_OPCODE_POINT_MODIFIER 3u
-#define SDF_OPCODE_POP_POINT 4u
-#define SDF_OPCODE_DISTANCE_MODIFIER 5u
-#define SDF_OPCODE_PROFILE 6u
-#define SDF_OPCODE_BOUND_SKIP 7u
-#define SDF_OPCODE_ACCUMULATE 8u
-#define SDF_OPCODE_SEED_BEST 9u
 
 // The instrumented variant of the shaders (SDF_COUNT_EVALUATIONS defined, for `rmsc bench`)
 // counts the primitives evaluated by this invocation; otherwise the count compiles to nothing.
@@ -29,43 +16,6 @@ uint sdfEvaluations = 0u;
 #else
 #define SDF_COUNT_EVALUATION
 #endif
-
-// Must equal kSdfMaxPointStack in engine/sdf/include/sdf/program.hpp; the compiler refuses deeper programs.
-#define SDF_MAX_POINT_STACK 16
-
-// SdfPointModifierKind, SdfDistanceModifierKind (engine/sdf/include/sdf/program.hpp), SdfProfileType
-// (engine/sdf/include/sdf/sdf_tree.hpp).
-#define SDF_POINT_REPEAT 0u
-#define SDF_POINT_MIRROR 1u
-#define SDF_POINT_POLAR 2u
-#define SDF_POINT_ELONGATE 3u
-#define SDF_POINT_TWIST 4u
-#define SDF_POINT_BEND 5u
-#define SDF_DISTANCE_ROUND 0u
-#define SDF_DISTANCE_ONION 1u
-#define SDF_DISTANCE_DISPLACE 2u
-#define SDF_PROFILE_CIRCLE 0u
-#define SDF_PROFILE_RECTANGLE 1u
-#define SDF_PROFILE_ROUNDED_RECTANGLE 2u
-#define SDF_PROFILE_POLYGON 3u
-
-// SdfOp (engine/sdf/include/sdf/sdf_tree.hpp).
-#define SDF_OP_UNION 0u
-#define SDF_OP_SUBTRACTION 1u
-#define SDF_OP_INTERSECTION 2u
-#define SDF_OP_SMOOTH_UNION 3u
-#define SDF_OP_SMOOTH_SUBTRACTION 4u
-#define SDF_OP_SMOOTH_INTERSECTION 5u
-#define SDF_OP_XOR 6u
-#define SDF_OP_CHAMFER_UNION 7u
-#define SDF_OP_CHAMFER_SUBTRACTION 8u
-#define SDF_OP_CHAMFER_INTERSECTION 9u
-#define SDF_OP_ROUND_UNION 10u
-#define SDF_OP_ROUND_SUBTRACTION 11u
-#define SDF_OP_ROUND_INTERSECTION 12u
-
-// Distance reported by an empty program: nothing anywhere.
-#define SDF_FAR 1e10
 
 // Mirrors GpuSdfInstruction (std430, 128 bytes).
 struct SdfInstruction {
@@ -78,7 +28,7 @@ struct SdfInstruction {
     vec4 misc;           // shape: x = distance scale
 };
 
-layout(std430, binding = 0) readonly buffer SdfProgramBuffer {
+layout(std430, binding = SDF_PROGRAM_BINDING) readonly buffer SdfProgramBuffer {
     uvec4 sdfHeader; // x = instruction count, y = stack depth (GpuSdfHeader)
     SdfInstruction sdfInstructions[];
 };
@@ -86,13 +36,12 @@ layout(std430, binding = 0) readonly buffer SdfProgramBuffer {
 // Data the instructions index into: polygon points (xy), GpuSdfHeader::dataCount entries.
 // The header and first SDF_UNIFORM_INSTRUCTIONS instructions of the same buffer as a uniform
 // block (kSdfUniformInstructions in engine/sdf/include/sdf/program.hpp): what generated code reads.
-#define SDF_UNIFORM_INSTRUCTIONS 511
-layout(std140, binding = 1) uniform SdfProgramUniforms { // kSdfProgramUniformBinding
+layout(std140, binding = SDF_PROGRAM_UNIFORM_BINDING) uniform SdfProgramUniforms {
     uvec4 sdfUniformHeader;
     SdfInstruction sdfUniformInstructions[SDF_UNIFORM_INSTRUCTIONS];
 };
 
-layout(std430, binding = 4) readonly buffer SdfData { // kSdfDataBinding
+layout(std430, binding = SDF_DATA_BINDING) readonly buffer SdfData {
     vec4 sdfData[];
 };
 
@@ -280,7 +229,8 @@ float sdfValueNoise(vec3 p) {
 
 // Point modifier `kind` (SDF_POINT_*) with parameters a0..a2 applied to p. Formulas: Inigo
 // Quilez, "Distance functions" (twist, bend, elongation) and "Domain repetition"
-// (https://iquilezles.org/articles/sdfrepetition/); polar repetition as hg_sdf's pModPolar.
+// (https://iquilezles.org/articles/sdfrepetition/); polar repetition as hg_sdf's pModPolar;
+// the taper as Barr, "Global and local deformations of solid primitives" (SIGGRAPH 1984).
 vec3 sdfPointModifier(uint kind, vec3 p, vec4 a0, vec4 a1, vec4 a2) {
     if (kind == SDF_POINT_REPEAT) {
         for (int axis = 0; axis < 3; ++axis) {
@@ -320,6 +270,10 @@ vec3 sdfPointModifier(uint kind, vec3 p, vec4 a0, vec4 a1, vec4 a2) {
         float c = cos(a0.x * p.y);
         float s = sin(a0.x * p.y);
         return vec3(c * p.x - s * p.z, p.y, s * p.x + c * p.z);
+    }
+    if (kind == SDF_POINT_TAPER) { // Barr 1984; x, z scaled by 1 + k clamp(y, -R, R)
+        float scale = 1.0 + a0.x * clamp(p.y, -a0.y, a0.y);
+        return vec3(p.x / scale, p.y, p.z / scale);
     }
     // SDF_POINT_BEND
     float c = cos(a0.x * p.x);

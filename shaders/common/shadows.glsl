@@ -13,7 +13,7 @@
 #include "common/scene_buffers.glsl"
 #include "common/sdf_scene.glsl"
 
-layout(binding = 15) uniform sampler2DArrayShadow uShadowMaps; // kShadowMapUnit
+layout(binding = SHADOW_MAP_UNIT) uniform sampler2DArrayShadow uShadowMaps;
 
 // What casts SDF soft shadows and occludes ambient light: the scene's map, unless the including
 // pass defines more (the shell pass adds its shell) before including this file.

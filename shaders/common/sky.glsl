@@ -11,7 +11,7 @@
 // With no sky (type 0) the frame's constant ambient colour is used (the original behaviour).
 #include "common/frame.glsl"
 
-layout(binding = 14) uniform sampler2D uSkyImage; // kSkyImageUnit, linear RGB, rows top down
+layout(binding = SKY_IMAGE_UNIT) uniform sampler2D uSkyImage; // linear RGB, rows top down
 
 const float SKY_PI = 3.14159265358979;
 
@@ -37,12 +37,12 @@ vec3 skyImage(vec3 dir, float lod) {
 vec3 skyRadiance(vec3 dir, float blur) {
     int type = int(frame.sky.x + 0.5);
     vec3 radiance = frame.skyZenith.rgb; // constant
-    if (type == 2) radiance = skyGradient(dir, blur);
-    if (type == 3) radiance = skyImage(dir, clamp(blur, 0.0, 1.0) * max(frame.sky.z - 2.0, 0.0));
+    if (type == SKY_GRADIENT) radiance = skyGradient(dir, blur);
+    if (type == SKY_IMAGE) radiance = skyImage(dir, clamp(blur, 0.0, 1.0) * max(frame.sky.z - 2.0, 0.0));
     return radiance * frame.sky.y;
 }
 
-bool hasSky() { return frame.sky.x > 0.5; }
+bool hasSky() { return int(frame.sky.x + 0.5) != SKY_NONE; }
 
 // Diffuse ambient: the sky's radiance averaged around the normal (irradiance / pi).
 vec3 skyDiffuse(vec3 normal) {

@@ -1,7 +1,8 @@
 #version 450 core
 // Cone pass: the low-resolution pre-pass of the march pass. One fragment per tile of
-// CONE_TILE_SIZE^2 pixels marches a cone holding every ray of the tile and writes how far all
-// of them may skip: passes/march.frag starts each pixel's march there, not at the near plane.
+// CONE_TILE_SIZE^2 pixels (texel (x, y) for the pixels (x, y) * CONE_TILE_SIZE and up) marches a
+// cone holding every ray of the tile and writes how far all of them may skip: passes/march.frag
+// starts each pixel's march there, not at the near plane.
 // The idea is cone marching (one march for a bundle of neighbouring rays; see e.g. Nabil
 // Mansour, "Cone Marching in Three.js", https://nabilmansour.com/articles/cone-marching-in-three-js);
 // the step and the bound below are derived here.
@@ -18,7 +19,7 @@
 // pixel's march meets a surface before the distance written here, and each one finds the same
 // first surface as a march from the near plane.
 #include "common/sdf_scene.glsl"
-#include "common/cone_tiles.glsl"
+#include "generated/constants.glsl"
 #include "common/march_statistics.glsl"
 
 layout(location = 0) out vec2 outCone; // x = distance every ray of the tile may skip, y = steps

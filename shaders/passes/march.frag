@@ -7,7 +7,7 @@
 #include "common/sdf_scene.glsl"
 #include "common/sdf_textures.glsl"
 #include "common/march_statistics.glsl"
-#include "common/cone_tiles.glsl"
+#include "generated/constants.glsl"
 
 in vec3 vRayDirection;
 in vec2 vUv;
@@ -18,7 +18,7 @@ layout(binding = 2) uniform sampler2D uRasterViewDepth;
 layout(binding = 3) uniform usampler2D uRasterObjectId;
 layout(binding = 4) uniform sampler2D uRasterDepth;
 // x: how far every ray of the tile may skip (0 when the renderer skips the cone pass).
-layout(binding = 13) uniform sampler2D uConeStart; // kConeStartUnit
+layout(binding = CONE_START_UNIT) uniform sampler2D uConeStart;
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outNormal;

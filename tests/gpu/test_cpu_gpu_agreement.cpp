@@ -1,6 +1,7 @@
 // The GPU march agrees with the CPU evaluator: the depth and id AOVs of scenes with every
-// primitive and operation match CPU ray casts through the same compiled program.
+// primitive, operation and modifier match CPU ray casts through the same compiled program.
 #include "gpu_test_support.hpp"
+#include "scene_text.hpp"
 
 #include "render/frame.hpp"
 #include "sdf/cpu_eval.hpp"
@@ -73,8 +74,8 @@ Agreement compare(const PreparedScene& prepared, int width, int height, int step
 
 // `minSdfShare`: the share of sampled pixels that must show SDF objects, so the check has
 // something to compare.
-void expectAgreement(const std::string& scenePath, double minSdfShare) {
-    const PreparedScene prepared = openRepositoryScene(scenePath);
+void expectAgreement(const PreparedScene& prepared, const std::string& scenePath,
+                     double minSdfShare) {
     const Agreement a = compare(prepared, 192, 108, 3);
     // Rays that graze a silhouette may stop one step apart on GPU (float32, fused
     // multiply-adds) and CPU; allow 1% of samples, no more.
@@ -88,6 +89,10 @@ void expectAgreement(const std::string& scenePath, double minSdfShare) {
     EXPECT_LE(a.gpuMisses, a.sampled / 500) << scenePath << ": " << a.firstProblem;
 }
 
+void expectAgreement(const std::string& scenePath, double minSdfShare) {
+    expectAgreement(openRepositoryScene(scenePath), scenePath, minSdfShare);
+}
+
 } // namespace
 
 TEST(CpuGpuAgreement, EveryPrimitive) {
@@ -98,6 +103,26 @@ TEST(CpuGpuAgreement, EveryOperationWithMeshes) {
 }
 TEST(CpuGpuAgreement, ModifiersAndProfiles) {
     expectAgreement("samples/scenes/modifiers.json", 0.15);
+}
+// The taper alone, narrowing and widening, on a group, and in chains with other modifiers
+// (not in modifiers.json, whose image is a reference).
+TEST(CpuGpuAgreement, Taper) {
+    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+      "camera": {"position": [0, 1.2, 4.2], "target": [0, 0.1, 0], "fov": 45},
+      "sdf": {"children": [
+        {"shape": "capped_cylinder", "radius": 0.3, "half_height": 0.6, "position": [-1.5, 0, 0],
+         "modifiers": [{"type": "taper", "amount": -1.1, "radius": 0.6}]},
+        {"shape": "box", "half_extents": [0.3, 0.55, 0.3], "position": [-0.5, 0, 0],
+         "modifiers": [{"type": "taper", "amount": 0.9, "radius": 0.55},
+                       {"type": "twist", "amount": 60, "radius": 0.6}, {"type": "round", "radius": 0.02}]},
+        {"op": "smooth_union", "smoothness": 0.1, "position": [0.55, 0, 0],
+         "modifiers": [{"type": "taper", "amount": 0.7, "radius": 0.7}],
+         "children": [{"shape": "sphere", "radius": 0.35, "position": [0, 0.3, 0]},
+                      {"shape": "torus", "major_radius": 0.3, "minor_radius": 0.1, "position": [0, -0.3, 0]}]},
+        {"shape": "sphere", "radius": 0.35, "position": [1.6, 0, 0],
+         "modifiers": [{"type": "mirror", "axes": "x"}, {"type": "taper", "amount": -1.5, "radius": 0.4},
+                       {"type": "displace", "amplitude": 0.03, "frequency": 6}]}]}})");
+    expectAgreement(prepared, "the taper scene", 0.1);
 }
 TEST(CpuGpuAgreement, FullPrimitiveSet) {
     expectAgreement("samples/scenes/primitives.json", 0.75);

@@ -10,7 +10,10 @@
 #include "gl/program.hpp"
 #include "render/gpu_layout.hpp"
 #include "render/shader_library.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 #include "sdf/primitives.hpp"
+#include "sdf/profiles.hpp"
 #include "sdf/sdf_functions.hpp"
 
 #include <glm/gtc/constants.hpp>
@@ -87,26 +90,6 @@ struct CaseSet {
     std::vector<Expectation> expected;
     std::vector<glm::vec4> data; // polygon points (the SDF data buffer)
 };
-
-const char* const kOpNames[] = {"union",
-                                "subtraction",
-                                "intersection",
-                                "smooth_union",
-                                "smooth_subtraction",
-                                "smooth_intersection",
-                                "xor",
-                                "chamfer_union",
-                                "chamfer_subtraction",
-                                "chamfer_intersection",
-                                "round_union",
-                                "round_subtraction",
-                                "round_intersection"};
-static_assert(std::size(kOpNames) == std::size_t(SdfOp::RoundIntersection) + 1);
-
-bool isSmooth(SdfOp op) {
-    return op == SdfOp::SmoothUnion || op == SdfOp::SmoothSubtraction ||
-           op == SdfOp::SmoothIntersection;
-}
 
 bool isFractal(PrimitiveId id) {
     return id >= PrimitiveId::Mandelbulb;
@@ -207,11 +190,12 @@ CaseSet primitiveCases(const std::function<bool(PrimitiveId)>& include, std::uin
 CaseSet combineCases() {
     CaseSet set;
     Draw draw{std::mt19937(1702u)};
-    for (std::uint32_t op = 0; op < std::size(kOpNames); ++op) {
-        for (int blend = 0; blend < (isSmooth(SdfOp(op)) ? 2 : 1); ++blend) {
+    for (const OperationSpec& spec : operationCatalogue()) {
+        const std::uint32_t op = std::uint32_t(spec.op);
+        for (int blend = 0; blend < (takesBlend(spec.op) ? 2 : 1); ++blend) {
             const int formula = addFormula(
-                set, "operation " + std::string(kOpNames[op]) +
-                         (isSmooth(SdfOp(op)) ? blend ? " (circular)" : " (polynomial)" : ""));
+                set, "operation " + std::string(spec.name) +
+                         (takesBlend(spec.op) ? blend ? " (circular)" : " (polynomial)" : ""));
             for (int n = 0; n < kCasesPerFormula; ++n) {
                 const float s = draw.logUniform(0.01f, 1000.0f);
                 const float k = s * draw.logUniform(1e-3f, 1.0f);
@@ -249,17 +233,29 @@ bool nearPolarSeam(glm::vec3 p, float count, int axis) {
     return std::abs(x - std::round(x)) * sector < 1e-4;
 }
 
-// Every point modifier, parameters packed as the compiler packs them (engine/sdf/compiler.cpp)
-// over the ranges the scene format allows: repeat periods up to the size s of the case (0: the
-// axis is not repeated) and counts 0 (infinite), 1 to 8 or up to 2^20, with and without the
-// neighbour-cell selector; polar counts 1 to 1024 about each axis, points off the seams
-// (nearPolarSeam); twist and bend -3600 to 3600 degrees per unit.
+// The modifier catalogue's rows of one stage, in the order of their instruction kinds.
+std::vector<const ModifierSpec*> modifierRows(ModifierStage stage) {
+    std::vector<const ModifierSpec*> rows;
+    for (const ModifierSpec& spec : modifierCatalogue())
+        if (spec.stage == stage) rows.push_back(&spec);
+    for (std::size_t kind = 0; kind < rows.size(); ++kind)
+        EXPECT_EQ(modifierKind(rows[kind]->type), kind) << rows[kind]->name;
+    return rows;
+}
+
+// Every point modifier, parameters packed as the compiler packs them (the catalogue rows,
+// engine/sdf/modifiers.cpp) over the ranges the scene format allows: repeat periods up to the
+// size s of the case (0: the axis is not repeated) and counts 0 (infinite), 1 to 8 or up to
+// 2^20, with and without the neighbour-cell selector; polar counts 1 to 1024 about each axis,
+// points off the seams (nearPolarSeam); twist and bend -3600 to 3600 degrees per unit; taper
+// reaches R up to 2 s with |k| R up to 0.99.
 CaseSet pointModifierCases() {
     CaseSet set;
     Draw draw{std::mt19937(1703u)};
-    const char* const names[] = {"repeat", "mirror", "polar", "elongate", "twist", "bend"};
-    for (std::uint32_t kind = 0; kind < std::size(names); ++kind) {
-        const int formula = addFormula(set, "point modifier " + std::string(names[kind]));
+    const std::vector<const ModifierSpec*> rows = modifierRows(ModifierStage::Point);
+    EXPECT_EQ(rows.size(), std::size_t(SdfPointModifierKind::Taper) + 1);
+    for (std::uint32_t kind = 0; kind < rows.size(); ++kind) {
+        const int formula = addFormula(set, "point modifier " + std::string(rows[kind]->name));
         for (int n = 0; n < kCasesPerFormula; ++n) {
             const float s = draw.logUniform(0.01f, 1000.0f);
             FormulaCase c;
@@ -297,6 +293,11 @@ CaseSet pointModifierCases() {
             case SdfPointModifierKind::Bend:
                 c.params[0].x = draw.uniform(-3600.0f, 3600.0f) * (glm::pi<float>() / 180.0f);
                 break;
+            case SdfPointModifierKind::Taper: {
+                const float reach = draw.uniform(1e-3f, 2.0f) * s;
+                c.params[0] = glm::vec4(draw.uniform(-0.99f, 0.99f) / reach, reach, 0.0f, 0.0f);
+                break;
+            }
             }
             glm::vec3 p = draw.inCube(extent);
             while (SdfPointModifierKind(kind) == SdfPointModifierKind::Polar &&
@@ -323,9 +324,10 @@ CaseSet pointModifierCases() {
 CaseSet distanceModifierCases() {
     CaseSet set;
     Draw draw{std::mt19937(1704u)};
-    const char* const names[] = {"round", "onion", "displace"};
-    for (std::uint32_t kind = 0; kind < std::size(names); ++kind) {
-        const int formula = addFormula(set, "distance modifier " + std::string(names[kind]));
+    const std::vector<const ModifierSpec*> rows = modifierRows(ModifierStage::Distance);
+    EXPECT_EQ(rows.size(), std::size_t(SdfDistanceModifierKind::Displace) + 1);
+    for (std::uint32_t kind = 0; kind < rows.size(); ++kind) {
+        const int formula = addFormula(set, "distance modifier " + std::string(rows[kind]->name));
         for (int n = 0; n < kCasesPerFormula; ++n) {
             const float s = draw.logUniform(0.01f, 1000.0f);
             const glm::vec3 p = draw.inCube(1.5f * s);
@@ -381,11 +383,11 @@ CaseSet profileCases() {
         for (glm::vec2 point : randomPolygon(draw, count, s))
             set.data.emplace_back(point, 0.0f, 0.0f);
     }
-    const char* const names[] = {"circle", "rectangle", "rounded_rectangle", "polygon"};
     for (int solid = 0; solid < 2; ++solid) {
-        for (std::uint32_t kind = 0; kind < std::size(names); ++kind) {
+        for (const ProfileSpec& profile : profileCatalogue()) {
+            const std::uint32_t kind = std::uint32_t(profile.type);
             const int formula = addFormula(set, std::string(solid ? "revolution" : "extrusion") +
-                                                    " of " + names[kind]);
+                                                    " of " + std::string(profile.name));
             for (int n = 0; n < kCasesPerFormula; ++n) {
                 FormulaCase c;
                 c.formula = glm::uvec4(kProfile, kind, 0u, 0u);

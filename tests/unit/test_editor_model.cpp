@@ -9,6 +9,8 @@
 #include "editor/fly_camera.hpp"
 #include "editor/scene_edits.hpp"
 #include "scene/scene_json.hpp"
+#include "sdf/compiler.hpp"
+#include "sdf/operations.hpp"
 
 #include <gtest/gtest.h>
 
@@ -73,6 +75,21 @@ class EditorFiles : public ::testing::Test {
 };
 
 } // namespace
+
+TEST(EditorSceneEdits, EveryNewGroupCompiles) {
+    // The editor offers every operation of the catalogue: each new group must be valid, with
+    // a second child for subtractions and a smoothness for the ops that need one.
+    for (const OperationSpec& spec : operationCatalogue()) {
+        SCOPED_TRACE(std::string(spec.name));
+        const SdfNode group = editor::makeGroup(spec.op);
+        EXPECT_EQ(group.op, spec.op);
+        EXPECT_EQ(group.children.size(),
+                  spec.combination == SdfOpCombination::Subtraction ? 2u : 1u);
+        EXPECT_EQ(group.smoothness > 0.0f, takesSmoothness(spec.op));
+        Diagnostics diagnostics;
+        EXPECT_TRUE(compileSdf(group, 0, "new.json", diagnostics)) << diagnostics.format();
+    }
+}
 
 TEST(EditorSceneEdits, FindsNodesByPathAndRejectsBadPaths) {
     const Scene scene = sampleScene();

@@ -5,6 +5,7 @@
 #include "core/limits.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/glsl_codegen.hpp"
+#include "sdf/glsl_constants.hpp"
 #include "sdf/program.hpp"
 
 #include <gtest/gtest.h>
@@ -64,14 +65,20 @@ TEST(LimitCatalogue, RowsHoldTheConstantsThatTheLayersUse) {
     EXPECT_EQ(row("kGeneratedCodeShapes").value, kMaxGeneratedLeaves);
 }
 
+// The shaders' stack sizes come from generated/constants.glsl (sdf/glsl_constants.hpp), made
+// from the limits; no shader source writes them itself.
 TEST(LimitCatalogue, ShaderArraysHaveTheSizesOfTheLimits) {
+    const std::string generated = glslDefines(sdfGlslConstants());
+    EXPECT_NE(generated.find("#define SDF_MAX_STACK " + std::to_string(limits::kSdfStack) + "\n"),
+              std::string::npos);
+    EXPECT_NE(generated.find("#define SDF_MAX_POINT_STACK " +
+                             std::to_string(limits::kSdfPointStack) + "\n"),
+              std::string::npos);
     const std::string glsl = readSourceFile("shaders/common/sdf_functions.glsl");
     ASSERT_FALSE(glsl.empty());
-    EXPECT_NE(glsl.find("#define SDF_MAX_STACK " + std::to_string(limits::kSdfStack) + "\n"),
-              std::string::npos);
-    EXPECT_NE(
-        glsl.find("#define SDF_MAX_POINT_STACK " + std::to_string(limits::kSdfPointStack) + "\n"),
-        std::string::npos);
+    EXPECT_EQ(glsl.find("#define SDF_MAX_STACK"), std::string::npos);
+    EXPECT_EQ(glsl.find("#define SDF_MAX_POINT_STACK"), std::string::npos);
+    EXPECT_NE(glsl.find("#include \"generated/constants.glsl\""), std::string::npos);
 }
 
 TEST(LimitCatalogue, ValuesReadWithTheirUnits) {

@@ -2,7 +2,10 @@
 // conventions, mesh path resolution, unknown-key warnings, loading through a FileSource,
 // writing and reading back, and the generated primitive table in docs/scene-format.md.
 #include "scene/scene_json.hpp"
-#include "sdf/primitive_docs.hpp"
+#include "sdf/catalogue_docs.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -504,21 +507,55 @@ TEST(SceneJson, DocsExampleIsAValidScene) {
     EXPECT_EQ(scene->sdf->children.size(), 3u);
 }
 
+namespace {
+
+// The text of docs/scene-format.md between <!-- name:begin --> and <!-- name:end -->.
+std::string docsSection(const std::string& name) {
+    const std::string docs = readSourceFile("docs/scene-format.md");
+    const std::string begin = "<!-- " + name + ":begin -->\n";
+    const std::string end = "<!-- " + name + ":end -->";
+    const std::size_t from = docs.find(begin);
+    const std::size_t to = docs.find(end);
+    if (from == std::string::npos || to == std::string::npos || to < from) return "(missing)";
+    return docs.substr(from + begin.size(), to - from - begin.size());
+}
+
+} // namespace
+
 TEST(SceneJson, DocsContainTheGeneratedPrimitiveTable) {
     const std::string generated = primitiveCatalogueMarkdown();
     for (const PrimitiveSpec& spec : primitiveCatalogue())
         EXPECT_NE(generated.find("| `" + std::string(spec.name) + "` |"), std::string::npos);
-
-    const std::string docs = readSourceFile("docs/scene-format.md");
-    ASSERT_FALSE(docs.empty()) << "docs/scene-format.md is missing";
-    const std::string begin = "<!-- primitives:begin -->\n";
-    const std::string end = "<!-- primitives:end -->";
-    const std::size_t from = docs.find(begin);
-    const std::size_t to = docs.find(end);
-    ASSERT_NE(from, std::string::npos);
-    ASSERT_NE(to, std::string::npos);
-    ASSERT_LT(from, to);
-    EXPECT_EQ(docs.substr(from + begin.size(), to - from - begin.size()), generated)
+    EXPECT_EQ(docsSection("primitives"), generated)
         << "regenerate the table in docs/scene-format.md from primitiveCatalogueMarkdown():\n"
         << generated;
+}
+
+TEST(SceneJson, DocsContainTheGeneratedModifierOperationAndProfileTables) {
+    const std::string modifiers = modifierCatalogueMarkdown();
+    for (const ModifierSpec& spec : modifierCatalogue()) {
+        EXPECT_NE(modifiers.find("| `" + std::string(spec.name) + "` |"), std::string::npos);
+        for (const ModifierParam& param : spec.params)
+            EXPECT_NE(modifiers.find("`" + std::string(param.spec.key) + "`: "), std::string::npos);
+    }
+    EXPECT_NE(modifiers.find("`thickness`: number, required, range (0, 10000]"), std::string::npos);
+    EXPECT_NE(modifiers.find("`axis`: \"x\", \"y\" or \"z\", default \"y\""), std::string::npos);
+    const std::string operations = operationCatalogueMarkdown();
+    EXPECT_NE(operations.find("| `chamfer_union` | required | ignored |"), std::string::npos);
+    EXPECT_NE(operations.find("| `smooth_intersection` | required | optional |"),
+              std::string::npos);
+    const std::string profiles = profileCatalogueMarkdown();
+    for (const ProfileSpec& spec : profileCatalogue())
+        EXPECT_NE(profiles.find("| `" + std::string(spec.name) + "` |"), std::string::npos);
+    EXPECT_NE(profiles.find("| `revolution` |"), std::string::npos);
+
+    EXPECT_EQ(docsSection("modifiers"), modifiers)
+        << "regenerate the table in docs/scene-format.md from modifierCatalogueMarkdown():\n"
+        << modifiers;
+    EXPECT_EQ(docsSection("operations"), operations)
+        << "regenerate the table in docs/scene-format.md from operationCatalogueMarkdown():\n"
+        << operations;
+    EXPECT_EQ(docsSection("profiles"), profiles)
+        << "regenerate the tables in docs/scene-format.md from profileCatalogueMarkdown():\n"
+        << profiles;
 }

@@ -1,9 +1,11 @@
 // docs/scene.schema.json against the reader: the shipped file is exactly what `rmsc schema`
 // generates; the generator, which probes the reader for the keys and names it knows, found
 // every one of them described and nothing else; every catalogue primitive and parameter
-// appears with the catalogue's range; every reference resolves.
+// appears with the catalogue's range, every modifier with its parameters' ranges, defaults and
+// descriptions; every reference resolves.
 #include "scene/scene_json.hpp"
 #include "scene/scene_schema.hpp"
+#include "sdf/modifiers.hpp"
 #include "sdf/primitives.hpp"
 
 #include <gtest/gtest.h>
@@ -97,5 +99,34 @@ TEST(SceneSchema, EveryCataloguePrimitiveAndParameterWithItsRange) {
             EXPECT_EQ(number["minimum"].get<float>(), param.minValue);
             EXPECT_EQ(number["maximum"].get<float>(), param.maxValue);
         }
+    }
+}
+
+TEST(SceneSchema, EveryCatalogueModifierWithItsRangesDefaultsAndRequiredKeys) {
+    const ordered_json schema = shippedSchema();
+    for (const ModifierSpec& spec : modifierCatalogue()) {
+        SCOPED_TRACE(std::string(spec.name));
+        const ordered_json& def = schema["$defs"]["modifier_" + std::string(spec.name)];
+        ASSERT_TRUE(def.is_object());
+        EXPECT_EQ(def["properties"]["type"]["const"], std::string(spec.name));
+        EXPECT_EQ(def["description"], std::string(spec.description));
+        std::vector<std::string> required = {"type"};
+        for (const ModifierParam& param : spec.params) {
+            SCOPED_TRACE(std::string(param.spec.key));
+            const ordered_json& key = def["properties"][std::string(param.spec.key)];
+            ASSERT_TRUE(key.is_object());
+            EXPECT_EQ(key["description"], std::string(param.spec.description));
+            EXPECT_EQ(key.contains("default"), !param.spec.required);
+            if (param.spec.required) required.emplace_back(param.spec.key);
+            if (param.spec.type != ParamType::Number) continue;
+            const char* min = param.spec.range.minExclusive ? "exclusiveMinimum" : "minimum";
+            const char* max = param.spec.range.maxExclusive ? "exclusiveMaximum" : "maximum";
+            EXPECT_EQ(key[min].get<double>(), param.spec.range.min);
+            EXPECT_EQ(key[max].get<double>(), param.spec.range.max);
+            if (!param.spec.required) {
+                EXPECT_EQ(key["default"].get<float>(), param.spec.value[0]);
+            }
+        }
+        EXPECT_EQ(def["required"], ordered_json(required));
     }
 }

@@ -439,6 +439,15 @@ TEST(SdfBounds, EveryModifierContainsItsInside) {
     bend.radius = 0.8f;
     cases.push_back({"bend", {bend}});
 
+    SdfModifier taper = m(SdfModifierType::Taper);
+    taper.amount = 1.1f;
+    taper.radius = 0.6f;
+    cases.push_back({"taper", {taper}});
+    SdfModifier narrowing = taper;
+    narrowing.amount = -1.5f;
+    narrowing.radius = 0.45f;
+    cases.push_back({"narrowing taper", {narrowing}});
+
     SdfModifier round = m(SdfModifierType::Round);
     round.radius = 0.15f;
     cases.push_back({"round", {round}});
@@ -458,6 +467,7 @@ TEST(SdfBounds, EveryModifierContainsItsInside) {
         {"mirror, elongate, twist, round, displace", {mirror, elongate, twist, round, displace}});
     cases.push_back(
         {"repeat then polar then bend, onion", {repeat, cases[3].modifiers[0], bend, onion}});
+    cases.push_back({"taper, twist, round", {taper, twist, round}});
 
     for (const Case& c : cases) {
         // On a shape, turned and scaled non-uniformly and off-centre.

@@ -1,10 +1,11 @@
 // Modifiers, cut nodes and profile solids: property tests on the CPU evaluator (repetition,
-// mirror, polar repetition, rounding, onion, elongation, the step corrections of twist, bend and
-// displacement against a brute-force surface distance, cut = explicit subtraction), the
-// instructions the compiler emits for them and its limits, and the scene reader's errors.
+// mirror, polar repetition, rounding, onion, elongation, taper, the step corrections of twist,
+// bend, taper and displacement against a brute-force surface distance, cut = explicit subtraction),
+// the instructions the compiler emits for them and its limits, and the scene reader's errors.
 #include "scene/scene_json.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/cpu_eval.hpp"
+#include "sdf/modifiers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,6 +32,16 @@ SdfProgram compileJson(const std::string& sdf) {
         compileSdf(*scene->sdf, std::uint32_t(scene->materials.size()), "test.json", diagnostics);
     EXPECT_TRUE(program) << diagnostics.format();
     return program ? *program : SdfProgram{};
+}
+
+// The modifiers of a sphere read from a JSON array of modifiers.
+std::vector<SdfModifier> compileJsonModifiers(const std::string& modifiers) {
+    Diagnostics diagnostics;
+    const std::optional<Scene> scene =
+        parseScene(sceneWithSdf(R"({"shape": "sphere", "modifiers": )" + modifiers + "}"), "m.json",
+                   diagnostics);
+    EXPECT_TRUE(scene && scene->sdf) << diagnostics.format();
+    return scene && scene->sdf ? scene->sdf->modifiers : std::vector<SdfModifier>{};
 }
 
 // The diagnostics of reading (and, if that succeeds, compiling) a scene that must fail.
@@ -290,6 +301,44 @@ TEST(SdfModifiers, BendNeverOverestimates) {
                     1 + radians(70) * 0.61);
 }
 
+TEST(SdfModifiers, TaperScalesXAndZLinearlyAlongY) {
+    // A capped cylinder of radius 0.25 and half height 0.5, tapered by 0.8 per unit: at height
+    // y its radius is 0.25 (1 + 0.8 y) up to |y| = radius 0.4, and constant beyond.
+    const SdfProgram program = compileJson(
+        R"({"shape": "capped_cylinder", "radius": 0.25, "half_height": 0.5,
+            "modifiers": [{"type": "taper", "amount": 0.8, "radius": 0.4}]})");
+    for (const float y : {-0.45f, -0.3f, 0.0f, 0.2f, 0.35f, 0.45f}) {
+        const float radius = 0.25f * (1.0f + 0.8f * std::clamp(y, -0.4f, 0.4f));
+        for (const float angle : {0.0f, 1.0f, 2.5f, 4.0f}) {
+            const glm::vec3 direction(std::cos(angle), 0.0f, std::sin(angle));
+            const glm::vec3 on = direction * radius + glm::vec3(0.0f, y, 0.0f);
+            EXPECT_NEAR(sdfDistance(program, on), 0.0f, 1e-5f) << y << " " << angle;
+            EXPECT_LT(sdfDistance(program, on - 0.01f * direction), 0.0f) << y;
+            EXPECT_GT(sdfDistance(program, on + 0.01f * direction), 0.0f) << y;
+        }
+    }
+    // Amount 0 leaves the content as it was.
+    const SdfProgram plain = compileJson(R"({"shape": "capped_cylinder", "radius": 0.25})");
+    const SdfProgram zero = compileJson(
+        R"({"shape": "capped_cylinder", "radius": 0.25, "modifiers": [{"type": "taper", "amount": 0}]})");
+    for (const glm::vec3& p : randomPoints(50, glm::vec3(-1.0f), glm::vec3(1.0f), 3))
+        EXPECT_EQ(sdfDistance(zero, p), sdfDistance(plain, p));
+}
+
+TEST(SdfModifiers, TaperNeverOverestimates) {
+    const SdfProgram program = compileJson(
+        R"({"shape": "box", "half_extents": [0.2, 0.5, 0.2],
+            "modifiers": [{"type": "taper", "amount": -1.2, "radius": 0.5}]})");
+    const double kr = double(1.2f) * 0.5; // as the reader stores it
+    const double m = 1.0 / (1.0 - kr);
+    const double trace = m * m * (1.0 + kr * kr) + 1.0;
+    const double lipschitz = std::sqrt(0.5 * (trace + std::sqrt(trace * trace - 4.0 * m * m)));
+    EXPECT_NEAR(sdfFieldShrink(
+                    compileJsonModifiers(R"([{"type": "taper", "amount": -1.2, "radius": 0.5}])")),
+                lipschitz, 1e-9);
+    expectSafeBound(program, {-0.35f, -0.55f, -0.35f}, {0.35f, 0.55f, 0.35f}, lipschitz);
+}
+
 TEST(SdfModifiers, DisplacementNeverOverestimates) {
     const SdfProgram program = compileJson(
         R"({"shape": "sphere", "radius": 0.45,
@@ -408,7 +457,7 @@ TEST(SdfCompilerModifiers, EmitsPointFramesOnlyWhereThePointIsNeeded) {
     ASSERT_EQ(twisted.instructions.size(), expected.size());
     for (std::size_t i = 0; i < expected.size(); ++i)
         EXPECT_EQ(twisted.instructions[i].opcode, std::uint32_t(expected[i])) << i;
-    EXPECT_EQ(twisted.instructions[1].kind, std::uint32_t(SdfPointModifierKind::Twist));
+    EXPECT_EQ(twisted.instructions[1].kind, modifierKind(SdfModifierType::Twist));
     EXPECT_NEAR(twisted.instructions[1].params[0].x, radians(30), 1e-6);
     // The push carries the node's world-to-local; the shape then reads the point as it is.
     EXPECT_EQ(twisted.instructions[0].worldToLocal[1], glm::vec4(0, 1, 0, -2));
@@ -524,6 +573,13 @@ TEST(SdfModifierErrors, OtherModifierParameters) {
     expectError(R"({"shape": "sphere", "modifiers": [{"type": "twist"}]})", "/sdf/modifiers/0",
                 "missing \"amount\"");
     expectError(R"({"shape": "sphere", "cut": 1})", "/sdf/cut", "expected true or false");
+    expectError(
+        R"({"shape": "sphere", "modifiers": [{"type": "taper", "amount": 2, "radius": 0.5}]})",
+        "/sdf/modifiers/0/amount",
+        "the taper 2 reaches a scale of 0 within the radius 0.5; |amount| x radius must be "
+        "below 1");
+    expectError(R"({"shape": "sphere", "modifiers": [{"type": "taper"}]})", "/sdf/modifiers/0",
+                "missing \"amount\"");
 }
 
 TEST(SdfModifierErrors, ProfileErrors) {
@@ -550,6 +606,7 @@ TEST(SdfModifierErrors, RoundTripKeepsModifiersCutAndProfiles) {
                                        {"type": "mirror", "axes": "xz"}, {"type": "polar", "count": 5, "axis": "z"},
                                        {"type": "elongate", "half_extents": [0.1, 0, 0.2]},
                                        {"type": "twist", "amount": 20, "radius": 2}, {"type": "bend", "amount": -5, "radius": 1},
+                                       {"type": "taper", "amount": 0.3, "radius": 2},
                                        {"type": "round", "radius": 0.05}, {"type": "onion", "thickness": 0.01},
                                        {"type": "displace", "amplitude": 0.02, "frequency": 3}]},
         {"shape": "sphere", "cut": true},
@@ -565,7 +622,9 @@ TEST(SdfModifierErrors, RoundTripKeepsModifiersCutAndProfiles) {
     EXPECT_NE(written.find("\"neighbours\": true"), std::string::npos);
     EXPECT_NE(written.find("\"cut\": true"), std::string::npos);
     EXPECT_NE(written.find("\"rounded_rectangle\""), std::string::npos);
-    ASSERT_EQ(again->sdf->children[0].modifiers.size(), 9u);
+    ASSERT_EQ(again->sdf->children[0].modifiers.size(), 10u);
+    EXPECT_EQ(again->sdf->children[0].modifiers[6].type, SdfModifierType::Taper);
+    EXPECT_EQ(again->sdf->children[0].modifiers[6].amount, 0.3f);
     EXPECT_EQ(again->sdf->children[0].modifiers[2].axis, 2);
     EXPECT_EQ(again->sdf->children[0].modifiers[0].counts, glm::ivec3(3, 0, 0));
 }

@@ -11,10 +11,11 @@
 
 namespace rmsc {
 
-// Pixels per tile side, as CONE_TILE_SIZE in shaders/common/cone_tiles.glsl.
+// Pixels per tile side (CONE_TILE_SIZE in the shaders, generated/constants.glsl).
 constexpr int kConeTileSize = 8;
 
-// Texture unit of the cone target in the march pass (uConeStart in shaders/passes/march.frag).
+// Texture unit of the cone target in the march pass (uConeStart in shaders/passes/march.frag,
+// CONE_START_UNIT).
 constexpr unsigned kConeStartUnit = 13;
 
 // One texel per tile: x = the distance every ray of the tile may skip, y = the cone's steps.

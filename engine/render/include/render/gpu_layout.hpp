@@ -1,5 +1,7 @@
 // The std430 structs of the scene buffers shared by every pass (materials, lights), mirrored in
-// shaders/common/scene_buffers.glsl, and the binding points of all shader storage buffers.
+// shaders/common/scene_buffers.glsl, and the binding points of all shader storage buffers. The
+// shaders get the numbers below from generated/constants.glsl (renderGlslConstants in
+// render/shader_library.hpp), never by hand.
 #pragma once
 
 #include "scene/scene.hpp"
@@ -12,7 +14,7 @@
 
 namespace rmsc {
 
-// SSBO binding points, the same numbers as in shaders/common/scene_buffers.glsl.
+// SSBO binding points (the shaders' *_BINDING).
 enum SsboBinding : unsigned {
     kSdfProgramBinding = 0,
     kMaterialBinding = 1,

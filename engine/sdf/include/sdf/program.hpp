@@ -14,7 +14,8 @@
 
 namespace rmsc {
 
-// Stack size of the GLSL interpreter (SDF_MAX_STACK in shaders/common/sdf_scene.glsl).
+// Stack size of the GLSL interpreter (SDF_MAX_STACK; the shaders' copies of these numbers are
+// generated, sdf/glsl_constants.hpp).
 constexpr int kSdfMaxStack = limits::kSdfStack;
 // Most instructions one scene may compile to.
 constexpr int kSdfMaxInstructions = limits::kSdfInstructions;
@@ -27,6 +28,8 @@ constexpr int kSdfMaxPointStack = limits::kSdfPointStack;
 // buffer map: 150 ms a frame instead of 332, and a cold first frame of 15 s instead of 47 s).
 constexpr int kSdfUniformInstructions = 511;
 constexpr int kSdfUniformBlockBytes = 16 + kSdfUniformInstructions * 128;
+// The distance of an empty program (or before anything is united into it): nothing anywhere.
+constexpr float kSdfFar = 1e10f;
 // Most vec4 entries of the SDF data buffer (polygon points, one per entry).
 constexpr int kSdfMaxData = limits::kSdfData;
 
@@ -37,9 +40,9 @@ enum class SdfOpcode : std::uint32_t {
     Shape = 0,            // push the distance of primitive `kind` at worldToLocal * p
     Combine = 1,          // pop b, pop a, push op `kind` (an SdfOp) of a and b
     PushPoint = 2,        // save p on the point stack, then p = worldToLocal * p
-    PointModifier = 3,    // p = modifier `kind` (SdfPointModifierKind) of p
+    PointModifier = 3,    // p = point modifier `kind` of p (modifierKind, sdf/modifiers.hpp)
     PopPoint = 4,         // p = the saved point on top of the point stack (popped)
-    DistanceModifier = 5, // top of the value stack changed by `kind` (SdfDistanceModifierKind)
+    DistanceModifier = 5, // top of the value stack changed by distance modifier `kind`
     Profile = 6,          // push the distance of a 2D profile solid (`kind`: SdfProfileType)
     // Bounds (the compiler's bounding-volume hierarchy over the plain unions at the top of the
     // tree): the program keeps the union of the finished parts in a running value `best`.
@@ -56,19 +59,19 @@ enum class SdfOpcode : std::uint32_t {
     SeedBest = 9,
 };
 
-// PointModifier parameters:
-//   Repeat:   params[0].xyz period (0: axis not repeated), params[1].xyz copies (0: infinite),
-//             params[2].xyz neighbour cell selector (0 own cell, 1 nearest neighbour),
-//             params[2].w 1 when the selector is used
-//   Mirror:   params[0].xyz 1 where the axis is folded
-//   Polar:    params[0].x copies, params[0].y axis (0 x, 1 y, 2 z)
-//   Elongate: params[0].xyz half extents
-//   Twist:    params[0].x radians per unit along y
-//   Bend:     params[0].x radians per unit along x
-enum class SdfPointModifierKind : std::uint32_t { Repeat, Mirror, Polar, Elongate, Twist, Bend };
-// DistanceModifier parameters (lengths already in the units of the value on the stack):
-//   Round: params[0].x radius; Onion: params[0].x thickness;
-//   Displace: params[0].x amplitude, params[0].y frequency (in the point's units)
+// PointModifier and DistanceModifier parameters: as the modifier's catalogue row packs them
+// (ModifierSpec::pack in engine/sdf/modifiers.cpp), lengths of distance modifiers already in the
+// units of the value on the stack. The instruction kinds, each stage's rows in catalogue order
+// (modifierKind); the keys of the formulas in sdf/sdf_functions.hpp.
+enum class SdfPointModifierKind : std::uint32_t {
+    Repeat,
+    Mirror,
+    Polar,
+    Elongate,
+    Twist,
+    Bend,
+    Taper
+};
 enum class SdfDistanceModifierKind : std::uint32_t { Round, Onion, Displace };
 // Profile parameters: params[0] = (radius, half width, half height, -), params[1] = (solid:
 // 0 extrusion / 1 revolution, half depth or offset, -, -), params[2] = (first point in the data

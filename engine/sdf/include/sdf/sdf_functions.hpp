@@ -25,11 +25,14 @@ float sdfSmoothMin(float a, float b, float k, float blend, float& h);
 // factor for the smooth ones.
 float sdfCombine(SdfOp op, float a, float b, const glm::vec4& opParams, float& weightA);
 
-// The value noise of the Displace modifier, in [-1, 1].
+// The value noise of the Displace modifier, in [-1, 1]; its gradient length is at most
+// 3 sqrt(3) (kNoiseGradientBound).
 float sdfValueNoise(glm::vec3 p);
+constexpr double kNoiseGradientBound = 5.196152422706632;
 
-// Point modifier `kind` applied to p, parameters as SdfOpcode::PointModifier packs them.
-glm::vec3 sdfPointModifier(SdfPointModifierKind kind, glm::vec3 p, const glm::vec4 (&params)[3]);
+// Point modifier `kind` applied to p, parameters params[0..2] as SdfOpcode::PointModifier packs
+// them (the modifier's catalogue row, sdf/modifiers.hpp).
+glm::vec3 sdfPointModifier(SdfPointModifierKind kind, glm::vec3 p, const glm::vec4* params);
 
 // Distance modifier `kind` applied to the distance d at the point p, parameters as
 // SdfOpcode::DistanceModifier packs them in params[0].

@@ -37,9 +37,9 @@ enum class SmoothBlend {
     Circular,   // a circular arc
 };
 
-// A modifier on an SDF node (docs/scene-format.md, "Modifiers"). Point modifiers (Repeat to
-// Bend) transform the evaluation point in the node's local frame before the node is evaluated,
-// in list order; distance modifiers (Round, Onion, Displace) change the node's distance
+// A modifier on an SDF node (docs/scene-format.md, "Modifiers"; one catalogue row each,
+// sdf/modifiers.hpp). Point modifiers transform the evaluation point in the node's local frame
+// before the node is evaluated, in list order; distance modifiers change the node's distance
 // afterwards, in list order. Lengths are in the node's local units, angles in degrees.
 enum class SdfModifierType {
     Repeat,   // vector = period per axis (0: not repeated), count per axis (0: infinite)
@@ -48,6 +48,7 @@ enum class SdfModifierType {
     Elongate, // vector = half the stretch per axis
     Twist,    // amount = degrees per unit along y, radius = the content's radius around y
     Bend,     // amount = degrees per unit along x (bend in the xy plane), radius = content radius
+    Taper,    // amount = change of the x, z scale per unit along y, radius = the content's reach
     Round,    // radius subtracted from the distance
     Onion,    // thickness: |d| - thickness
     Displace, // amount = amplitude, frequency of the value noise
@@ -62,8 +63,9 @@ struct SdfModifier {
     glm::bvec3 axes{false};  // Mirror
     int count = 0;           // Polar: number of copies
     int axis = 1;            // Polar: 0 = x, 1 = y, 2 = z
-    float amount = 0.0f;     // Twist, Bend: degrees per unit; Displace: amplitude
-    float radius = 0.0f;     // Round; Twist, Bend: radius the content lies within
+    float amount = 0.0f;     // Twist, Bend: degrees per unit; Displace: amplitude; Taper: scale
+                             // change per unit
+    float radius = 0.0f;     // Round; Twist, Bend, Taper: radius the content lies within
     float thickness = 0.0f;  // Onion
     float frequency = 1.0f;  // Displace
 };

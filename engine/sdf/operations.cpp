@@ -1,0 +1,112 @@
+// The operation catalogue rows (sdf/operations.hpp).
+#include "sdf/operations.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+namespace rmsc {
+namespace {
+
+using C = SdfOpCombination;
+using S = SdfOpSeam;
+
+// In SdfOp order.
+const OperationSpec kCatalogue[] = {
+    {SdfOp::Union, "union", C::Union, S::Hard, "Everything inside any child."},
+    {SdfOp::Subtraction, "subtraction", C::Subtraction, S::Hard,
+     "The first child minus all later children (needs at least two children)."},
+    {SdfOp::Intersection, "intersection", C::Intersection, S::Hard, "What is inside every child."},
+    {SdfOp::SmoothUnion, "smooth_union", C::Union, S::Smooth,
+     "Union with the seams blended over about `smoothness` metres (smooth minimum, curve chosen "
+     "by `blend`). Materials blend with the same factor as the distances, so a red and a blue "
+     "child show a gradient across the seam."},
+    {SdfOp::SmoothSubtraction, "smooth_subtraction", C::Subtraction, S::Smooth,
+     "Subtraction with blended cut edges; the cut surface keeps the first child's material."},
+    {SdfOp::SmoothIntersection, "smooth_intersection", C::Intersection, S::Smooth,
+     "Intersection with blended edges; materials blend as for `smooth_union`."},
+    {SdfOp::Xor, "xor", C::Xor, S::Hard,
+     "What is inside exactly one child (folded left to right: inside an odd number of "
+     "children)."},
+    {SdfOp::ChamferUnion, "chamfer_union", C::Union, S::Chamfer,
+     "Union with a 45-degree bevel in the inside corners of the seam, meeting each child "
+     "`smoothness` metres from the seam."},
+    {SdfOp::ChamferSubtraction, "chamfer_subtraction", C::Subtraction, S::Chamfer,
+     "Subtraction with the cut edges bevelled."},
+    {SdfOp::ChamferIntersection, "chamfer_intersection", C::Intersection, S::Chamfer,
+     "Intersection with the edges bevelled."},
+    {SdfOp::RoundUnion, "round_union", C::Union, S::Round,
+     "Union with the inside corners of the seam filled by a quarter circle of radius "
+     "`smoothness`."},
+    {SdfOp::RoundSubtraction, "round_subtraction", C::Subtraction, S::Round,
+     "Subtraction with the cut edges rounded to radius `smoothness`."},
+    {SdfOp::RoundIntersection, "round_intersection", C::Intersection, S::Round,
+     "Intersection with the edges rounded to radius `smoothness`."},
+};
+
+// In SmoothBlend order. Quilez, "Smooth minimum" (https://iquilezles.org/articles/smin/).
+const BlendSpec kBlends[] = {
+    {SmoothBlend::Polynomial, "polynomial",
+     "a quadratic polynomial: the seam dips by `k`/4 where both children are equally near"},
+    {SmoothBlend::Circular, "circular", "a circular arc: dips by `k`(1 - 1/√2), rounder"},
+};
+
+} // namespace
+
+std::span<const OperationSpec> operationCatalogue() {
+    return kCatalogue;
+}
+
+const OperationSpec& operationSpec(SdfOp op) {
+    assert(std::size_t(op) < std::size(kCatalogue) && kCatalogue[std::size_t(op)].op == op);
+    return kCatalogue[std::size_t(op)];
+}
+
+const OperationSpec* findOperation(std::string_view name) {
+    for (const OperationSpec& spec : kCatalogue)
+        if (spec.name == name) return &spec;
+    return nullptr;
+}
+
+std::vector<std::string> operationNames() {
+    std::vector<std::string> names;
+    for (const OperationSpec& spec : kCatalogue)
+        names.emplace_back(spec.name);
+    return names;
+}
+
+std::span<const BlendSpec> blendCatalogue() {
+    return kBlends;
+}
+
+std::vector<std::string> blendNames() {
+    std::vector<std::string> names;
+    for (const BlendSpec& spec : kBlends)
+        names.emplace_back(spec.name);
+    return names;
+}
+
+bool takesSmoothness(SdfOp op) {
+    return operationSpec(op).seam != SdfOpSeam::Hard;
+}
+
+bool takesBlend(SdfOp op) {
+    return operationSpec(op).seam == SdfOpSeam::Smooth;
+}
+
+std::string operationLabel(SdfOp op) {
+    std::string label(operationSpec(op).name);
+    std::replace(label.begin(), label.end(), '_', ' ');
+    return label;
+}
+
+SdfOp withCombination(SdfOp op, SdfOpCombination combination) {
+    const SdfOpSeam seam = operationSpec(op).seam;
+    for (const OperationSpec& spec : kCatalogue)
+        if (spec.combination == combination && spec.seam == seam) return spec.op;
+    for (const OperationSpec& spec : kCatalogue)
+        if (spec.combination == combination && spec.seam == SdfOpSeam::Hard) return spec.op;
+    assert(false && "every combination has a hard operation");
+    return op;
+}
+
+} // namespace rmsc
