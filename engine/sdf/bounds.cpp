@@ -546,9 +546,22 @@ float unionGrowth(SdfOp op, SmoothBlend blend, float t, float k) {
         // <= t when min(a, b) <= t or (k - a)^2 + (k - b)^2 >= (k - t)^2 with a, b < k, whose
         // largest min(a, b) is at a = b: k - (k - t) / sqrt 2. For t >= k: min(a, b) <= t.
         return t < k ? (1.0f - kSqrtHalf) * k + kSqrtHalf * t : t;
-    default: // union, xor: min(a, b) <= t (xor = max(min(a, b), -max(a, b)))
+    case SdfOp::Union:
+    case SdfOp::Xor: // min(a, b) <= t (xor = max(min(a, b), -max(a, b)))
+        return t;
+    // Not unions: groupBoundsAt bounds them by their first child or their intersection. Listed
+    // rather than left to a default, so a new operation does not compile without its rule.
+    case SdfOp::Subtraction:
+    case SdfOp::Intersection:
+    case SdfOp::SmoothSubtraction:
+    case SdfOp::SmoothIntersection:
+    case SdfOp::ChamferSubtraction:
+    case SdfOp::ChamferIntersection:
+    case SdfOp::RoundSubtraction:
+    case SdfOp::RoundIntersection:
         return t;
     }
+    return t;
 }
 
 // The children of a group at level t (a length of the group's frame).
