@@ -71,6 +71,9 @@ TEST(GridPass, LinesAxesAndOcclusionWhereThePlaneHasThem) {
         const float t = -camera.position.y / d.y;
         return glm::vec2(camera.position.x + t * d.x, camera.position.z + t * d.z);
     };
+    // The bounds below sit just under what llvmpipe gives (the axes, half a pixel off their
+    // centres at half coverage: 0.222 added, 0.144 over the other colour; unit lines at least
+    // 0.066; between lines exactly nothing); the shader's own numbers give the same.
     const float pixel =
         glm::length(planePoint(size / 2 + 1, size / 2) - planePoint(size / 2, size / 2));
     int onBall = 0, red = 0, blue = 0, unitLines = 0, clear = 0;
@@ -89,19 +92,19 @@ TEST(GridPass, LinesAxesAndOcclusionWhereThePlaneHasThem) {
                 glm::abs(glm::fract(p - 0.5f) - 0.5f); // to the nearest unit line
             if (std::abs(p.y) < 0.55f * pixel && std::abs(p.x) > 3.0f * pixel) {
                 ++red; // on the x axis (z = 0)
-                EXPECT_GT(added.x, 0.05f) << x << "," << row;
-                EXPECT_GT(added.x, added.z + 0.05f) << x << "," << row;
+                EXPECT_GT(added.x, 0.2f) << x << "," << row;
+                EXPECT_GT(added.x, added.z + 0.12f) << x << "," << row;
             } else if (std::abs(p.x) < 0.55f * pixel && std::abs(p.y) > 3.0f * pixel) {
                 ++blue; // on the z axis (x = 0)
-                EXPECT_GT(added.z, 0.05f) << x << "," << row;
-                EXPECT_GT(added.z, added.x + 0.05f) << x << "," << row;
+                EXPECT_GT(added.z, 0.2f) << x << "," << row;
+                EXPECT_GT(added.z, added.x + 0.12f) << x << "," << row;
             } else if (toLine.x < 0.25f * pixel && toLine.y > 3.0f * pixel &&
                        std::abs(p.x) > 0.5f) {
                 ++unitLines; // on a line x = +-1, +-2
-                EXPECT_GT(added.y, 0.02f) << x << "," << row;
+                EXPECT_GT(added.y, 0.05f) << x << "," << row;
             } else if (toLine.x > 3.0f * pixel && toLine.y > 3.0f * pixel) {
                 ++clear; // between lines: untouched
-                EXPECT_NEAR(glm::length(added), 0.0f, 1e-4f) << x << "," << row;
+                EXPECT_EQ(added, glm::vec3(0.0f)) << x << "," << row;
             }
         }
     }
