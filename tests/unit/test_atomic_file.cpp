@@ -3,6 +3,8 @@
 // file and the folder as they were.
 #include "core/atomic_file.hpp"
 
+#include "temp_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -16,26 +18,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // A fresh, empty folder per test, removed afterwards.
-class AtomicFile : public ::testing::Test {
+class AtomicFile : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("rmsc-atomic-" + std::to_string(::getpid()) + "-" + test->name());
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
-    }
-    void TearDown() override { fs::remove_all(folder_); }
-
-    static std::string read(const fs::path& path) {
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        return text.str();
-    }
-    static void write(const fs::path& path, const std::string& text) {
-        std::ofstream(path, std::ios::binary) << text;
-    }
     std::vector<std::string> names() const {
         std::vector<std::string> out;
         for (const auto& entry : fs::directory_iterator(folder_))
@@ -43,8 +27,6 @@ class AtomicFile : public ::testing::Test {
         std::sort(out.begin(), out.end());
         return out;
     }
-
-    fs::path folder_;
 };
 
 } // namespace

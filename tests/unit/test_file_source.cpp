@@ -3,6 +3,8 @@
 // read (and without blocking), link loops and overlong names are told apart from missing files.
 #include "core/file_source.hpp"
 
+#include "temp_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -14,22 +16,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class FileSourceTest : public ::testing::Test {
+class FileSourceTest : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        folder_ = fs::temp_directory_path() / ("rmsc-files-" + std::to_string(::getpid()));
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
-    }
-    void TearDown() override { fs::remove_all(folder_); }
-
     std::string refusal(const fs::path& path, std::uintmax_t maxBytes = 1 << 20) {
         std::string error;
         const std::optional<std::string> bytes = diskFileSource(maxBytes).read(path, error);
         EXPECT_FALSE(bytes.has_value()) << path;
         return error;
     }
-    fs::path folder_;
 };
 
 } // namespace

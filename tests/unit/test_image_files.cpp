@@ -4,6 +4,8 @@
 // no temporary file is left; otherwise the file reads back exactly.
 #include "core/image_io.hpp"
 
+#include "temp_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -20,27 +22,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class ImageFiles : public ::testing::Test {
+class ImageFiles : public test::TempFolderTest {
   protected:
-    void SetUp() override {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() /
-                  ("rmsc-images-" + std::to_string(::getpid()) + "-" + test->name());
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
-    }
-    void TearDown() override { fs::remove_all(folder_); }
-
-    static std::string read(const fs::path& path) {
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        return text.str();
-    }
     std::size_t filesInFolder() const {
         return std::size_t(std::distance(fs::directory_iterator(folder_), {}));
     }
-    fs::path folder_;
 };
 
 // Noise does not compress: its PNG is far larger than the limit below.
