@@ -10,7 +10,7 @@
 
 namespace rmsc::limits {
 
-// ---- Scene files (engine/scene/scene_json.cpp, json_parse.cpp) ----
+// ---- Scene files (engine/scene/scene_json.cpp, sdf_json.cpp, json_parse.cpp) ----
 constexpr std::uint64_t kSceneFileBytes = 64u << 20; // scene JSON text
 constexpr int kSceneJsonDepth = 256;                 // nesting of JSON arrays and objects
 constexpr int kSdfNodes = 100000;                    // nodes in the SDF tree (groups and shapes)
