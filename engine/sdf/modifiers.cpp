@@ -12,6 +12,7 @@
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace rmsc {
 namespace {
@@ -420,7 +421,7 @@ constexpr const char* kIq =
     "Quilez, Distance functions (https://iquilezles.org/articles/distfunctions/)";
 
 // In SdfModifierType order.
-const ModifierSpec kCatalogue[] = {
+constexpr ModifierSpec kCatalogue[] = {
     {.type = SdfModifierType::Repeat,
      .name = "repeat",
      .stage = ModifierStage::Point,
@@ -527,6 +528,28 @@ const ModifierSpec kCatalogue[] = {
 };
 
 constexpr std::size_t kModifierCount = std::size(kCatalogue);
+
+// The instruction kind of row `i`: its place among the rows of its stage (modifierKind).
+constexpr std::uint32_t kindOfRow(std::size_t i) {
+    std::uint32_t kind = 0;
+    for (std::size_t j = 0; j < i; ++j)
+        kind += kCatalogue[j].stage == kCatalogue[i].stage;
+    return kind;
+}
+
+// Each row's formula is the one of sdf/sdf_functions.hpp whose SdfPointModifierKind or
+// SdfDistanceModifierKind is the row's instruction kind, so those enums list each stage's rows
+// in catalogue order: a row moved without its enum value (or the other way round) fails here.
+template <std::size_t... I>
+constexpr bool rowsUseTheFormulasOfTheirKinds(std::index_sequence<I...>) {
+    return ((kCatalogue[I].stage == ModifierStage::Point
+                 ? kCatalogue[I].movePoint == &movePointBy<SdfPointModifierKind(kindOfRow(I))>
+                 : kCatalogue[I].changeDistance ==
+                       &changeDistanceBy<SdfDistanceModifierKind(kindOfRow(I))>)&&...);
+}
+static_assert(rowsUseTheFormulasOfTheirKinds(std::make_index_sequence<kModifierCount>()),
+              "SdfPointModifierKind and SdfDistanceModifierKind (sdf/program.hpp) must list each "
+              "stage's modifier rows in catalogue order");
 
 // kind -> row index, per stage.
 struct KindTables {

@@ -62,7 +62,7 @@ enum class SdfOpcode : std::uint32_t {
 // PointModifier and DistanceModifier parameters: as the modifier's catalogue row packs them
 // (ModifierSpec::pack in engine/sdf/modifiers.cpp), lengths of distance modifiers already in the
 // units of the value on the stack. The instruction kinds, each stage's rows in catalogue order
-// (modifierKind); the keys of the formulas in sdf/sdf_functions.hpp.
+// (modifierKind; checked in modifiers.cpp); the keys of the formulas in sdf/sdf_functions.hpp.
 enum class SdfPointModifierKind : std::uint32_t {
     Repeat,
     Mirror,
