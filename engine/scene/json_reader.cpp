@@ -205,11 +205,15 @@ std::optional<float> readNumber(const JsonReader& reader, const Json& value,
                                   ", which is too large to represent");
         return std::nullopt;
     }
-    if (!range.contains(v)) {
+    // The float it is kept as must lie in the range: "0.001" is the float nearest 0.001, which
+    // lies above 0.001 (a range's end written as a float, such as 0.001f, is that float), and a
+    // number that rounds to 0 is 0 for a range that excludes it.
+    const float kept = float(v);
+    if (!range.contains(double(kept))) {
         reader.error(pointer, "expected " + range.describe() + ", got " + numberText(value));
         return std::nullopt;
     }
-    return float(v);
+    return kept;
 }
 
 std::optional<int> readInteger(const JsonReader& reader, const Json& value,

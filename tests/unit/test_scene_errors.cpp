@@ -52,6 +52,23 @@ TEST(SceneErrors, Vec3ParameterComponentOutOfRange) {
                    "expected an array of 3 numbers, got a number");
 }
 
+// A range is checked on the float a number is kept as. The float nearest 0.001 lies just above
+// 0.001, so a range ending at 0.001f (the gyroid's period, the death star's cut distance) took
+// the float but refused the text "0.001" that the docs, the schema and the writer give for it;
+// and a number that rounds to 0 is 0, which a range excluding 0 refuses.
+TEST(SceneErrors, RangesHoldForTheFloatANumberIsKeptAs) {
+    for (const char* sdf : {R"({"shape": "gyroid", "period": 0.001})",
+                            R"({"shape": "death_star", "cut_distance": 0.001})"}) {
+        Diagnostics d;
+        EXPECT_TRUE(parseScene(withSdf(sdf), "ends.json", d)) << sdf << "\n" << d.format();
+    }
+    expectOneError(withSdf(R"({"shape": "gyroid", "period": 0.00099999})"), "/sdf/period",
+                   "expected a number in [0.001, 10000], got 0.00099999");
+    expectOneError(withSdf(R"({"op": "smooth_union", "smoothness": 1e-46,
+        "children": [{"shape": "sphere"}]})"),
+                   "/sdf/smoothness", "expected a number > 0, got 1e-46");
+}
+
 TEST(SceneErrors, UnknownShapeListsKnownShapesNearestFirst) {
     expectOneError(withSdf(R"({"shape": "spere"})"), "/sdf/shape",
                    "unknown shape \"spere\"; known shapes: \"sphere\", ");
