@@ -448,7 +448,7 @@ void readGroup(SceneReader& r, const Json& object, const std::string& pointer, i
     if (takesSmoothness(node.op)) {
         if (smoothness) {
             readNumberField(r.json, object, pointer, "smoothness", &node.smoothness,
-                            NumberRange::above(0.0));
+                            numberRange(smoothnessParam()));
         } else {
             r.json.error(pointer, "op \"" + opName +
                                       "\" needs \"smoothness\" (a number > 0, in world units)");

@@ -402,7 +402,7 @@ std::vector<ObjectDef> objectDefs() {
          {{"op", "smooth_union"}, {"smoothness", 0.1}, {"children", Json::array()}},
          plus(nodeKeys(),
               {{"op", namesOf(operationNames(), "how the children combine")},
-               {"smoothness", described(number(NumberRange::above(0.0)),
+               {"smoothness", described(number(numberRange(smoothnessParam())),
                                         "metres; required by the smooth_, chamfer_ and round_ "
                                         "ops")},
                {"blend", namesOf(blendNames(), "the smooth-minimum curve of the smooth_ ops")},
