@@ -3,6 +3,7 @@
 #include "json_reader.hpp"
 
 #include "core/number_text.hpp"
+#include "core/srgb.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -268,11 +269,6 @@ std::optional<std::string> readString(const JsonReader& reader, const Json& valu
         return std::nullopt;
     }
     return value.get<std::string>();
-}
-
-float srgbToLinear(float encoded) {
-    const double c = encoded;
-    return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
 }
 
 namespace {
