@@ -421,8 +421,11 @@ void readShape(SceneReader& r, const Json& object, const std::string& pointer, S
             shapes.emplace_back(candidate.name);
         for (const ProfileSolidSpec& solid : profileSolidCatalogue())
             shapes.emplace_back(solid.name);
-        r.json.error(shapePointer, "unknown shape \"" + *name + "\"; known shapes: " +
-                                       quotedList(sortedByDistance(*name, shapes)));
+        std::string message = "unknown shape \"" + *name + "\"";
+        if (const auto match = closeMatch(*name, shapes))
+            message += "; did you mean \"" + *match + "\"?";
+        r.json.error(shapePointer, message + " (known shapes: " +
+                                       quotedList(sortedByDistance(*name, shapes)) + ")");
     }
     // Parameter names of an unknown shape cannot be checked.
     if (spec) warnUnknownKeys(r.json, object, pointer, known);

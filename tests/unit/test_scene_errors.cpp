@@ -69,9 +69,18 @@ TEST(SceneErrors, RangesHoldForTheFloatANumberIsKeptAs) {
                    "/sdf/smoothness", "expected a number > 0, got 1e-46");
 }
 
-TEST(SceneErrors, UnknownShapeListsKnownShapesNearestFirst) {
+TEST(SceneErrors, UnknownShapeSuggestsTheNearestAndListsKnownShapesNearestFirst) {
     expectOneError(withSdf(R"({"shape": "spere"})"), "/sdf/shape",
-                   "unknown shape \"spere\"; known shapes: \"sphere\", ");
+                   "unknown shape \"spere\"; did you mean \"sphere\"? (known shapes: "
+                   "\"sphere\", ");
+    // The profile solids are shapes too.
+    expectOneError(withSdf(R"({"shape": "revolutoin"})"), "/sdf/shape",
+                   "; did you mean \"revolution\"?");
+    // No suggestion for a name that is no typo of any.
+    const Diagnostics d = errorsOf(withSdf(R"({"shape": "blob"})"));
+    ASSERT_EQ(d.errorCount(), 1) << d.format();
+    EXPECT_EQ(d.items[0].message.find("did you mean"), std::string::npos) << d.format();
+    EXPECT_NE(d.items[0].message.find("(known shapes: "), std::string::npos) << d.format();
 }
 
 TEST(SceneErrors, UnknownOpListsValidOps) {
