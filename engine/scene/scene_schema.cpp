@@ -170,7 +170,9 @@ std::vector<Key> nodeKeys() {
         {"name", string()},
         {"material", described(string(), "the name of a material in \"materials\"")},
         {"modifiers", {{"type", "array"}, {"maxItems", 16}, {"items", ref("modifier")}}},
-        {"cut", described(boolean(), "subtracts this node from its earlier siblings")},
+        {"cut",
+         described(boolean(), "subtracts this node from the combination of its siblings that "
+                              "are not cut, wherever it stands among them (before or after)")},
         {"shell", {{"oneOf", Json::array({boolean(), ref("shell")})}}},
     };
     for (Key& key : transformKeys())
