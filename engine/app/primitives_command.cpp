@@ -1,10 +1,14 @@
-// rmsc primitives: prints the primitive catalogue (names, parameters, exact or bound).
+// rmsc primitives: prints the primitive catalogue (names, parameters, exact or bound), then the
+// profile shapes (extrusion, revolution) and the 2D profiles they take.
 #include "commands.hpp"
 
 #include "sdf/catalogue_docs.hpp"
 #include "sdf/primitives.hpp"
+#include "sdf/profiles.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace rmsc::app {
 namespace {
@@ -12,6 +16,34 @@ namespace {
 const OptionSpec kOptions[] = {
     {"--markdown", nullptr, nullptr, "print the table used in docs/scene-format.md"},
 };
+
+// "(0, 10000]", "[0, 10000]"; "" when unbounded.
+std::string rangeText(const ParamRange& range) {
+    if (!std::isfinite(range.min) || !std::isfinite(range.max)) return "";
+    char text[64];
+    std::snprintf(text, sizeof text, "%s%g, %g%s", range.minExclusive ? "(" : "[", range.min,
+                  range.max, range.maxExclusive ? ")" : "]");
+    return text;
+}
+
+// A profile's or a profile shape's key: its default (or "required") and range.
+void printParam(const SdfParamSpec& p) {
+    std::string value = "required";
+    if (!p.required) {
+        const int count = p.type == ParamType::Vec2 ? 2 : 1;
+        value.clear();
+        for (int c = 0; c < count; ++c) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%s%g", c ? ", " : "", double(p.value[c]));
+            value += text;
+        }
+        if (count > 1) value = "[" + value + "]";
+    }
+    const std::string range = rangeText(p.range);
+    std::printf("    %-14s %-16s %s%s%s\n", std::string(p.key).c_str(), value.c_str(),
+                range.empty() ? "" : "range ", range.c_str(),
+                ("  " + std::string(p.description)).c_str());
+}
 
 } // namespace
 
@@ -21,7 +53,8 @@ const CommandSpec kPrimitivesSpec = {
     "list the SDF primitives and their parameters",
     "rmsc primitives [--markdown]",
     "Lists every SDF primitive a scene can use, with its parameters (default and valid range)\n"
-    "and whether its distance is exact or a bound.",
+    "and whether its distance is exact or a bound, then the shapes made of a 2D profile\n"
+    "(extrusion, revolution) and the profiles they take.",
     kOptions,
     0};
 
@@ -45,6 +78,23 @@ int runPrimitives(const ParsedArgs& args) {
                         value.c_str(), double(p.minValue), double(p.maxValue),
                         std::string(p.description).c_str());
         }
+    }
+    std::string profiles;
+    for (const ProfileSpec& profile : profileCatalogue())
+        profiles += (profiles.empty() ? "" : ", ") + std::string(profile.name);
+    for (const ProfileSolidSpec& solid : profileSolidCatalogue()) {
+        std::printf("%s (profile shape): %s\n", std::string(solid.name).c_str(),
+                    std::string(solid.description).c_str());
+        std::printf("    %-14s %-16s a profile object, \"type\" one of: %s (below)\n", "profile",
+                    "required", profiles.c_str());
+        printParam(solid.param.spec);
+    }
+    std::printf("\nProfiles (the \"profile\" of an extrusion or a revolution):\n");
+    for (const ProfileSpec& profile : profileCatalogue()) {
+        std::printf("%s: %s\n", std::string(profile.name).c_str(),
+                    std::string(profile.description).c_str());
+        for (const ProfileParam& param : profile.params)
+            printParam(param.spec);
     }
     return kExitOk;
 }

@@ -2,6 +2,7 @@
 #include "editor/document.hpp"
 
 #include "core/atomic_file.hpp"
+#include "editor/scene_check.hpp"
 #include "editor/scene_edits.hpp"
 #include "scene/scene_json.hpp"
 
@@ -117,7 +118,14 @@ bool Document::saveAs(const std::filesystem::path& path, std::string& error) {
         }
     }
     toWrite.file = path;
-    if (!saveTextFileAtomically(path, sceneToJson(toWrite), true, error)) return false;
+    const std::string text = sceneToJson(toWrite);
+    Diagnostics problems;
+    if (!checkSceneText(text, path, problems)) {
+        error = "the scene is not valid, so nothing was written (" + path.string() +
+                " is unchanged):\n" + firstErrors(problems);
+        return false;
+    }
+    if (!saveTextFileAtomically(path, text, true, error)) return false;
     scene_.file = path;
     for (std::size_t i = 0; i < scene_.meshes.size(); ++i)
         scene_.meshes[i].file = toWrite.meshes[i].file;

@@ -2,6 +2,7 @@
 #include "editor/recovery.hpp"
 
 #include "core/atomic_file.hpp"
+#include "editor/scene_check.hpp"
 #include "scene/scene_json.hpp"
 
 namespace rmsc::editor {
@@ -15,8 +16,15 @@ std::filesystem::path recoveryPath(const std::filesystem::path& sceneFile) {
 }
 
 bool writeRecovery(const Document& document, std::string& error) {
-    return saveTextFileAtomically(recoveryPath(document.file()), sceneToJson(document.scene()),
-                                  false, error);
+    const std::filesystem::path path = recoveryPath(document.file());
+    const std::string text = sceneToJson(document.scene());
+    Diagnostics problems;
+    if (!checkSceneText(text, path, problems)) {
+        error = "the scene is not valid, so the recovery file was not written:\n" +
+                firstErrors(problems);
+        return false;
+    }
+    return saveTextFileAtomically(path, text, false, error);
 }
 
 std::optional<std::filesystem::path> findRecovery(const std::filesystem::path& sceneFile) {

@@ -3,6 +3,7 @@
 #include "json_reader.hpp"
 
 #include "core/number_text.hpp"
+#include "core/srgb.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -205,11 +206,15 @@ std::optional<float> readNumber(const JsonReader& reader, const Json& value,
                                   ", which is too large to represent");
         return std::nullopt;
     }
-    if (!range.contains(v)) {
+    // The float it is kept as must lie in the range: "0.001" is the float nearest 0.001, which
+    // lies above 0.001 (a range's end written as a float, such as 0.001f, is that float), and a
+    // number that rounds to 0 is 0 for a range that excludes it.
+    const float kept = float(v);
+    if (!range.contains(double(kept))) {
         reader.error(pointer, "expected " + range.describe() + ", got " + numberText(value));
         return std::nullopt;
     }
-    return float(v);
+    return kept;
 }
 
 std::optional<int> readInteger(const JsonReader& reader, const Json& value,
@@ -264,11 +269,6 @@ std::optional<std::string> readString(const JsonReader& reader, const Json& valu
         return std::nullopt;
     }
     return value.get<std::string>();
-}
-
-float srgbToLinear(float encoded) {
-    const double c = encoded;
-    return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
 }
 
 namespace {

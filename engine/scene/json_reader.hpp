@@ -105,8 +105,6 @@ std::optional<std::string> readString(const JsonReader& reader, const Json& valu
 // A linear colour [r, g, b] with components >= 0, or "#rrggbb" in sRGB (converted to linear).
 std::optional<glm::vec3> readColor(const JsonReader& reader, const Json& value,
                                    const std::string& pointer);
-// The sRGB electro-optical transfer function: an sRGB-encoded value in [0, 1] to linear.
-float srgbToLinear(float encoded);
 
 // Field forms: read object[key] into *out if present. Absent leaves *out as it is (the default)
 // and returns true; present but invalid reports an error and returns false.

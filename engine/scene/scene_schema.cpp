@@ -170,7 +170,9 @@ std::vector<Key> nodeKeys() {
         {"name", string()},
         {"material", described(string(), "the name of a material in \"materials\"")},
         {"modifiers", {{"type", "array"}, {"maxItems", 16}, {"items", ref("modifier")}}},
-        {"cut", described(boolean(), "subtracts this node from its earlier siblings")},
+        {"cut",
+         described(boolean(), "subtracts this node from the combination of its siblings that "
+                              "are not cut, wherever it stands among them (before or after)")},
         {"shell", {{"oneOf", Json::array({boolean(), ref("shell")})}}},
     };
     for (Key& key : transformKeys())
@@ -402,7 +404,7 @@ std::vector<ObjectDef> objectDefs() {
          {{"op", "smooth_union"}, {"smoothness", 0.1}, {"children", Json::array()}},
          plus(nodeKeys(),
               {{"op", namesOf(operationNames(), "how the children combine")},
-               {"smoothness", described(number(NumberRange::above(0.0)),
+               {"smoothness", described(number(numberRange(smoothnessParam())),
                                         "metres; required by the smooth_, chamfer_ and round_ "
                                         "ops")},
                {"blend", namesOf(blendNames(), "the smooth-minimum curve of the smooth_ ops")},

@@ -214,8 +214,11 @@ void readShape(SceneReader& r, const Json& object, const std::string& pointer, S
             shapes.emplace_back(candidate.name);
         for (const ProfileSolidSpec& solid : profileSolidCatalogue())
             shapes.emplace_back(solid.name);
-        r.json.error(shapePointer, "unknown shape \"" + *name + "\"; known shapes: " +
-                                       quotedList(sortedByDistance(*name, shapes)));
+        std::string message = "unknown shape \"" + *name + "\"";
+        if (const auto match = closeMatch(*name, shapes))
+            message += "; did you mean \"" + *match + "\"?";
+        r.json.error(shapePointer, message + " (known shapes: " +
+                                       quotedList(sortedByDistance(*name, shapes)) + ")");
     }
     // Parameter names of an unknown shape cannot be checked.
     if (spec) warnUnknownKeys(r.json, object, pointer, known);
@@ -241,7 +244,7 @@ void readGroup(SceneReader& r, const Json& object, const std::string& pointer, i
     if (takesSmoothness(node.op)) {
         if (smoothness) {
             readNumberField(r.json, object, pointer, "smoothness", &node.smoothness,
-                            NumberRange::above(0.0));
+                            numberRange(smoothnessParam()));
         } else {
             r.json.error(pointer, "op \"" + opName +
                                       "\" needs \"smoothness\" (a number > 0, in world units)");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <limits>
 
 namespace rmsc {
 namespace {
@@ -50,6 +51,14 @@ const BlendSpec kBlends[] = {
     {SmoothBlend::Circular, "circular", "a circular arc: dips by `k`(1 - 1/√2), rounder"},
 };
 
+constexpr SdfParamSpec kSmoothness = {
+    .key = "smoothness",
+    .type = ParamType::Number,
+    .required = true,
+    .range = {0.0, std::numeric_limits<double>::infinity(), true, false},
+    .description = "the width of the seam, in world units: the smooth minimum's `k`, the "
+                   "chamfer's size, the rounding radius"};
+
 } // namespace
 
 std::span<const OperationSpec> operationCatalogue() {
@@ -87,6 +96,10 @@ std::vector<std::string> blendNames() {
 
 bool takesSmoothness(SdfOp op) {
     return operationSpec(op).seam != SdfOpSeam::Hard;
+}
+
+const SdfParamSpec& smoothnessParam() {
+    return kSmoothness;
 }
 
 bool takesBlend(SdfOp op) {

@@ -33,6 +33,7 @@ struct InspectorState {
     // object's own).
     bool worldCoordinates = false;
     TextureFileFields textureFiles;
+    std::string modifierRefusal; // why the last modifier edit was undone ("" = it was not)
 };
 
 void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSettings& view,
@@ -46,7 +47,8 @@ void drawMeshInspector(editor::Document& document, int mesh, bool& worldCoordina
 void drawLightInspector(editor::Document& document, int light, ViewerCommands& commands);
 
 // Parts of an SDF node's inspector; each returns true when it changed the node.
-bool editModifiers(SdfNode& node, float size); // lengths drag in steps that follow `size`
+// Lengths drag in steps that follow `size`; `refusal` says why the last edit was undone.
+bool editModifiers(SdfNode& node, float size, std::string& refusal);
 bool editShell(SdfNode& node, const std::filesystem::path& sceneFolder);
 
 // Materials: the choice (-1 is "inherit" for SDF nodes, "the glTF's own" for meshes) with the

@@ -29,8 +29,7 @@ void drawLightInspector(editor::Document& document, int index, ViewerCommands& c
             glm::vec3(std::sin(a) * std::cos(e), -std::sin(e), std::cos(a) * std::cos(e));
         document.markChanged("Light direction");
     }
-    if (ImGui::ColorEdit3("colour", &light.color.x, ImGuiColorEditFlags_Float))
-        document.markChanged("Light colour");
+    if (editColor("colour", light.color)) document.markChanged("Light colour");
     if (ImGui::DragFloat("intensity", &light.intensity, 0.02f, 0.0f, 1000.0f, "%.2f",
                          ImGuiSliderFlags_AlwaysClamp))
         document.markChanged("Light intensity");

@@ -1,6 +1,8 @@
 // The inspector's material choice and fields (see inspector.hpp).
 #include "inspector.hpp"
 
+#include "panel_widgets.hpp"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -11,11 +13,11 @@ namespace {
 
 bool editMaterial(Material& m) {
     bool changed = false;
-    changed |= ImGui::ColorEdit3("base colour", &m.baseColor.x, ImGuiColorEditFlags_Float);
+    changed |= editColor("base colour", m.baseColor);
     changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f);
     changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f);
-    changed |= ImGui::ColorEdit3("emissive", &m.emissive.x,
-                                 ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    changed |=
+        editColor("emissive", m.emissive, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     return changed;
 }
 

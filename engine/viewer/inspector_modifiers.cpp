@@ -1,7 +1,12 @@
 // The inspector's modifiers of an SDF node, in the order they apply (docs/scene-format.md,
-// "Modifiers"): each with the fields of its type and a remove button, then a menu to add one.
+// "Modifiers"): each with a remove button and one field per parameter of its catalogue row
+// (sdf/modifiers.hpp), then a menu to add one. A field's kind follows the parameter's type,
+// its range is the one the reader accepts (editor/param_fields.hpp) and its help the row's
+// description; an edit that the row's own check refuses (taper: |amount| x radius below 1) is
+// undone, with the reason shown.
 #include "inspector.hpp"
 
+#include "editor/param_fields.hpp"
 #include "panel_widgets.hpp"
 #include "sdf/modifiers.hpp"
 
@@ -10,93 +15,146 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace rmsc::app {
+namespace {
 
-bool editModifiers(SdfNode& node, float size) {
+constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+
+// "half_extents" -> "half extents".
+std::string labelOf(std::string_view key) {
+    std::string label(key);
+    std::replace(label.begin(), label.end(), '_', ' ');
+    return label;
+}
+
+// A drag step that follows the value and the object's size.
+float dragStep(const float* values, int count, float size) {
+    float magnitude = 0.0f;
+    for (int c = 0; c < count; ++c)
+        magnitude = std::max(magnitude, std::abs(values[c]));
+    return stepFor(std::max(magnitude, 0.1f * size));
+}
+
+// Three checkboxes, at least one of them on (an empty "axes" is refused by the reader).
+bool editAxes(glm::bvec3& axes) {
+    const glm::bvec3 before = axes;
+    bool changed = false;
+    for (int c = 0; c < 3; ++c) {
+        if (c) ImGui::SameLine();
+        bool on = axes[c];
+        if (ImGui::Checkbox(std::string(1, "xyz"[c]).c_str(), &on)) {
+            axes[c] = on;
+            changed = true;
+        }
+    }
+    if (!glm::any(axes)) axes = before;
+    return changed && axes != before;
+}
+
+// The field of one catalogue parameter of `m`.
+bool editParam(const ModifierParam& param, SdfModifier& m, float size) {
+    const SdfParamSpec& spec = param.spec;
+    const std::string label = labelOf(spec.key);
+    const bool changed = std::visit(
+        [&](auto member) -> bool {
+            auto& value = m.*member;
+            using T = std::decay_t<decltype(value)>;
+            if constexpr (std::is_same_v<T, float>) {
+                const editor::FloatFieldRange r = editor::floatFieldRange(spec.range);
+                return ImGui::DragFloat(label.c_str(), &value, dragStep(&value, 1, size), r.min,
+                                        r.max, "%.4f", kClamp);
+            } else if constexpr (std::is_same_v<T, glm::vec3>) {
+                const editor::FloatFieldRange r = editor::floatFieldRange(spec.range);
+                return ImGui::DragFloat3(label.c_str(), &value.x, dragStep(&value.x, 3, size),
+                                         r.min, r.max, "%.4f", kClamp);
+            } else if constexpr (std::is_same_v<T, int>) {
+                if (spec.type == ParamType::Axis)
+                    return ImGui::Combo(label.c_str(), &value, "x\0y\0z\0");
+                const editor::IntFieldRange r = editor::intFieldRange(spec.range);
+                return ImGui::DragInt(label.c_str(), &value, 0.1f, r.min, r.max, "%d", kClamp);
+            } else if constexpr (std::is_same_v<T, glm::ivec3>) {
+                const editor::IntFieldRange r = editor::intFieldRange(spec.range);
+                return ImGui::DragInt3(label.c_str(), &value.x, 0.1f, r.min, r.max, "%d", kClamp);
+            } else if constexpr (std::is_same_v<T, bool>) {
+                return ImGui::Checkbox(label.c_str(), &value);
+            } else {
+                static_assert(std::is_same_v<T, glm::bvec3>);
+                return editAxes(value);
+            }
+        },
+        param.field);
+    helpTooltip(spec.description);
+    return changed;
+}
+
+// What the row's check finds wrong with `m` beyond each parameter's range ("" for nothing).
+std::string problemOf(const SdfModifier& m) {
+    const ModifierSpec& spec = modifierSpec(m.type);
+    if (!spec.check) return "";
+    std::vector<ParamProblem> problems;
+    spec.check(m, ~0u, problems);
+    return problems.empty() ? "" : std::string(problems[0].key) + ": " + problems[0].message;
+}
+
+// Each number of `m` moved into its field's range.
+void clampToRanges(SdfModifier& m) {
+    for (const ModifierParam& param : modifierSpec(m.type).params) {
+        const editor::FloatFieldRange f = editor::floatFieldRange(param.spec.range);
+        const editor::IntFieldRange i = editor::intFieldRange(param.spec.range);
+        std::visit(
+            [&](auto member) {
+                auto& value = m.*member;
+                using T = std::decay_t<decltype(value)>;
+                if constexpr (std::is_same_v<T, float> || std::is_same_v<T, glm::vec3>)
+                    value = glm::clamp(value, f.min, f.max);
+                else if constexpr (std::is_same_v<T, glm::ivec3>)
+                    value = glm::clamp(value, i.min, i.max);
+                else if constexpr (std::is_same_v<T, int>)
+                    if (param.spec.type != ParamType::Axis) value = std::clamp(value, i.min, i.max);
+            },
+            param.field);
+    }
+}
+
+} // namespace
+
+bool editModifiers(SdfNode& node, float size, std::string& refusal) {
     bool changed = false;
     ImGui::TextDisabled("Modifiers");
-    const float step = stepFor(size);
     for (std::size_t i = 0; i < node.modifiers.size(); ++i) {
         SdfModifier& m = node.modifiers[i];
+        const ModifierSpec& spec = modifierSpec(m.type);
         ImGui::PushID(int(i));
-        ImGui::Text("%zu. %s", i + 1, std::string(modifierSpec(m.type).name).c_str());
+        ImGui::Text("%zu. %s", i + 1, std::string(spec.name).c_str());
+        helpTooltip(spec.description);
         ImGui::SameLine();
         if (ImGui::SmallButton("remove")) {
             node.modifiers.erase(node.modifiers.begin() + std::ptrdiff_t(i));
             ImGui::PopID();
             return true;
         }
-        switch (m.type) {
-        case SdfModifierType::Repeat:
-            changed |= ImGui::DragFloat3("period", &m.vector.x, step, 0.0f, 1e4f, "%.3f",
-                                         ImGuiSliderFlags_AlwaysClamp);
-            helpTooltip("Cell size per axis; 0 leaves the axis unrepeated.");
-            changed |= ImGui::DragInt3("count", &m.counts.x, 0.1f, 0, 1000, "%d",
-                                       ImGuiSliderFlags_AlwaysClamp);
-            helpTooltip("Copies per axis; 0 repeats without end.");
-            changed |= ImGui::Checkbox("neighbours", &m.neighbours);
-            break;
-        case SdfModifierType::Mirror:
-            changed |= ImGui::Checkbox("x", &m.axes.x);
-            ImGui::SameLine();
-            changed |= ImGui::Checkbox("y", &m.axes.y);
-            ImGui::SameLine();
-            changed |= ImGui::Checkbox("z", &m.axes.z);
-            break;
-        case SdfModifierType::Polar:
-            changed |= ImGui::DragInt("copies", &m.count, 0.1f, 1, 1000, "%d",
-                                      ImGuiSliderFlags_AlwaysClamp);
-            changed |= ImGui::Combo("axis", &m.axis, "x\0y\0z\0");
-            break;
-        case SdfModifierType::Elongate:
-            changed |= ImGui::DragFloat3("half extents", &m.vector.x, step, 0.0f, 1e4f, "%.3f",
-                                         ImGuiSliderFlags_AlwaysClamp);
-            break;
-        case SdfModifierType::Twist:
-        case SdfModifierType::Bend:
-            changed |= ImGui::DragFloat("degrees per unit", &m.amount, 0.5f, -3600.0f, 3600.0f,
-                                        "%.1f", ImGuiSliderFlags_AlwaysClamp);
-            changed |= ImGui::DragFloat("radius", &m.radius, step, 0.0f, 1e4f, "%.3f",
-                                        ImGuiSliderFlags_AlwaysClamp);
-            helpTooltip("How far from the axis the content reaches (sets the step correction).");
-            break;
-        case SdfModifierType::Taper: {
-            // |amount| x radius stays below 1: the scale must not reach 0 (the reader's check).
-            const float most = 0.99f / std::max(m.radius, 1e-4f);
-            changed |= ImGui::DragFloat("scale per unit", &m.amount, 0.01f / std::max(size, 1e-3f),
-                                        -std::min(most, 100.0f), std::min(most, 100.0f), "%.3f",
-                                        ImGuiSliderFlags_AlwaysClamp);
-            changed |= ImGui::DragFloat("radius", &m.radius, step, 1e-4f,
-                                        std::min(1e4f, 0.99f / std::max(std::abs(m.amount), 1e-4f)),
-                                        "%.3f", ImGuiSliderFlags_AlwaysClamp);
-            helpTooltip("How far the content reaches: from the y axis, and the height beyond "
-                        "which the scale stays constant (sets the step correction).");
-            break;
-        }
-        case SdfModifierType::Round:
-            changed |= ImGui::DragFloat("radius", &m.radius, step * 0.25f, 0.0f, 1e4f, "%.4f",
-                                        ImGuiSliderFlags_AlwaysClamp);
-            break;
-        case SdfModifierType::Onion:
-            changed |= ImGui::DragFloat("thickness", &m.thickness, step * 0.25f, 1e-4f, 1e4f,
-                                        "%.4f", ImGuiSliderFlags_AlwaysClamp);
-            break;
-        case SdfModifierType::Displace:
-            changed |= ImGui::DragFloat("amplitude", &m.amount, step * 0.1f, 0.0f, 1e3f, "%.4f",
-                                        ImGuiSliderFlags_AlwaysClamp);
-            changed |= ImGui::DragFloat("frequency", &m.frequency, 0.05f, 1e-3f, 1e3f, "%.3f",
-                                        ImGuiSliderFlags_AlwaysClamp);
-            break;
+        for (const ModifierParam& param : spec.params) {
+            const SdfModifier before = m;
+            if (!editParam(param, m, size)) continue;
+            if (std::string problem = problemOf(m); !problem.empty()) {
+                m = before;
+                refusal = "not applied: " + problem;
+            } else {
+                refusal.clear();
+                changed = true;
+            }
         }
         ImGui::PopID();
     }
+    if (!refusal.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", refusal.c_str());
     if (ImGui::BeginCombo("add modifier", "...")) {
         for (const ModifierSpec& spec : modifierCatalogue()) {
             if (!ImGui::Selectable(std::string(spec.name).c_str())) continue;
-            SdfModifier m;
-            m.type = spec.type;
-            // Defaults that show the effect at the object's size.
+            SdfModifier m = defaultModifier(spec.type);
+            // Values that show the effect at the object's size.
             m.vector = m.type == SdfModifierType::Repeat ? glm::vec3(size * 3.0f, 0.0f, 0.0f)
                                                          : glm::vec3(size * 0.5f, 0.0f, 0.0f);
             m.axes = glm::bvec3(true, false, false);
@@ -107,6 +165,7 @@ bool editModifiers(SdfNode& node, float size) {
             m.radius = m.type == SdfModifierType::Round ? size * 0.05f : size;
             m.thickness = size * 0.05f;
             m.frequency = 4.0f / std::max(size, 1e-3f);
+            clampToRanges(m);
             node.modifiers.push_back(m);
             changed = true;
         }

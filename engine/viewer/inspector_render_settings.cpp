@@ -2,6 +2,8 @@
 // environment (background, ambient) and exposure (see inspector.hpp).
 #include "inspector.hpp"
 
+#include "panel_widgets.hpp"
+
 #include <imgui.h>
 
 namespace rmsc::app {
@@ -16,8 +18,8 @@ void drawRenderSettingsInspector(editor::Document& document) {
     changed |=
         ImGui::DragFloat("surface epsilon", &r.surfaceEpsilon, 0.00005f, 0.000001f, 0.1f, "%.6f",
                          ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-    changed |= ImGui::ColorEdit3("background", &r.background.x, ImGuiColorEditFlags_Float);
-    changed |= ImGui::ColorEdit3("ambient", &r.ambient.x, ImGuiColorEditFlags_Float);
+    changed |= editColor("background", r.background);
+    changed |= editColor("ambient", r.ambient);
     changed |= ImGui::DragFloat("exposure", &r.exposure, 0.01f, 0.0f, 100.0f, "%.2f",
                                 ImGuiSliderFlags_AlwaysClamp);
     if (changed) document.markChanged("Render settings");

@@ -3,6 +3,7 @@
 // (see inspector.hpp).
 #include "inspector.hpp"
 
+#include "editor/param_fields.hpp"
 #include "editor/scene_edits.hpp"
 #include "panel_widgets.hpp"
 #include "sdf/operations.hpp"
@@ -24,19 +25,20 @@ void drawGroupFields(SdfNode& node, float size, editor::Document& document) {
         for (const OperationSpec& op : operationCatalogue()) {
             if (ImGui::Selectable(operationLabel(op.op).c_str(), node.op == op.op)) {
                 node.op = op.op;
+                const editor::FloatFieldRange range = editor::smoothnessFieldRange();
                 if (takesSmoothness(op.op) && node.smoothness <= 0.0f)
-                    node.smoothness = size * 0.1f;
+                    node.smoothness = std::clamp(size * 0.1f, range.min, range.max);
                 document.markChanged("Operation");
             }
         }
         ImGui::EndCombo();
     }
+    const editor::FloatFieldRange range = editor::smoothnessFieldRange();
     if (takesSmoothness(node.op) &&
-        ImGui::DragFloat("smoothness", &node.smoothness, stepFor(size) * 0.5f, 0.0f, size * 4.0f,
+        ImGui::DragFloat("smoothness", &node.smoothness, stepFor(size) * 0.5f, range.min, range.max,
                          "%.4f", ImGuiSliderFlags_AlwaysClamp))
         document.markChanged("Smoothness");
-    helpTooltip("Blend distance of the smooth operation, in world units; the drag "
-                "step follows the group's size.");
+    helpTooltip(smoothnessParam().description);
 }
 
 // Makes the shape `other`; parameters of the same name keep their values.
@@ -79,11 +81,12 @@ void drawShapeFields(SdfNode& node, editor::Document& document) {
         for (int c = 0; c < p.components; ++c)
             magnitude = std::max(magnitude, std::abs(value[c]));
         const float step = stepFor(std::max(magnitude, 0.1f));
-        const bool edited =
-            p.components == 3 ? ImGui::DragFloat3(name.c_str(), value, step, p.minValue, p.maxValue,
-                                                  "%.3f", ImGuiSliderFlags_AlwaysClamp)
-                              : ImGui::DragFloat(name.c_str(), value, step, p.minValue, p.maxValue,
-                                                 "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        const editor::FloatFieldRange range = editor::primitiveFieldRange(p);
+        const bool edited = p.components == 3
+                                ? ImGui::DragFloat3(name.c_str(), value, step, range.min, range.max,
+                                                    "%.3f", ImGuiSliderFlags_AlwaysClamp)
+                                : ImGui::DragFloat(name.c_str(), value, step, range.min, range.max,
+                                                   "%.3f", ImGuiSliderFlags_AlwaysClamp);
         if (edited) document.markChanged("Edit " + name);
         helpTooltip(p.description);
     }
@@ -117,7 +120,7 @@ void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& pa
     ImGui::TextDisabled("Material");
     if (chooseMaterial(scene, node->material, "(inherit)")) document.markChanged("Material");
     ImGui::Separator();
-    if (editModifiers(*node, size)) document.markChanged("Modifiers");
+    if (editModifiers(*node, size, state.modifierRefusal)) document.markChanged("Modifiers");
     ImGui::Separator();
     if (editShell(*node, scene.file.parent_path())) document.markChanged("Shell");
     ImGui::Separator();

@@ -1,6 +1,8 @@
 // Widgets the panels share (see panel_widgets.hpp).
 #include "panel_widgets.hpp"
 
+#include "core/srgb.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -35,6 +37,13 @@ bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float
                           ImGuiSliderFlags_AlwaysClamp))
         changed = true;
     return changed;
+}
+
+bool editColor(const char* label, glm::vec3& linear, int flags) {
+    glm::vec3 shown = linearToSrgb(linear);
+    if (!ImGui::ColorEdit3(label, &shown.x, flags)) return false;
+    linear = srgbToLinear(shown);
+    return true;
 }
 
 void drawDuplicateDeleteButtons(ViewerCommands& commands) {

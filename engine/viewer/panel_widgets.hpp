@@ -1,5 +1,5 @@
 // Small widgets the panels share: hover help, drag steps that follow an object's size, the
-// transform fields, and the buttons that duplicate or delete the selection.
+// transform fields, colours in sRGB, and the buttons that duplicate or delete the selection.
 #pragma once
 
 #include "scene/scene.hpp"
@@ -18,6 +18,10 @@ float stepFor(float size);
 // Position, rotation (Euler degrees) and scale; `world` shows the position in world space
 // (through `parentWorld`). Returns true when anything changed.
 bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float size);
+// A linear colour shown and edited in sRGB (core/srgb.hpp), so the picker's numbers and hex
+// code are those a scene file's "#rrggbb" gives; `flags` are ImGuiColorEditFlags. Returns true
+// when it changed.
+bool editColor(const char* label, glm::vec3& linear, int flags = 0);
 // Duplicate and Delete, side by side.
 void drawDuplicateDeleteButtons(ViewerCommands& commands);
 

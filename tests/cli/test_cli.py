@@ -108,6 +108,11 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("validate samples", ["validate"] + [os.path.join(SAMPLES, "scenes", s) for s in
                                                sorted(os.listdir(os.path.join(SAMPLES, "scenes")))], 0)
     expect("primitives", ["primitives"], 0, stdout_has=["sphere", "round_box", "half_extents"])
+    # The shapes made of a profile, and the profiles they take, are listed too.
+    expect("primitives lists the profile shapes", ["primitives"], 0,
+           stdout_has=["\nextrusion (profile shape): ", "\nrevolution (profile shape): ",
+                       "    depth ", "    offset ", "\ncircle: ", "\nrounded_rectangle: ",
+                       "\npolygon: ", "    half_size "])
 
     # Bad usage: exit 2.
     expect("bad size", ["render", "-o", out, "--size", "0x10"], 2, stderr_has=["--size"])
@@ -130,6 +135,31 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("malformed json", ["render", bad, "-o", out], 1, stderr_has=[bad, "line 2"])
     bad = write(tmp, "shape.json", scene(sdf={"shape": "blob"}))
     expect("unknown shape", ["validate", bad], 1, stderr_has=[bad, "/sdf", "blob"])
+    bad = write(tmp, "typo_shape.json", scene(sdf={"shape": "capped_cilinder"}))
+    expect("unknown shape: did you mean", ["validate", bad], 1,
+           stderr_has=[bad + ": /sdf/shape: unknown shape \"capped_cilinder\"; did you mean \"capped_cylinder\"?"])
+    bad = write(tmp, "typo_profile_shape.json", scene(sdf={"shape": "extrusoin"}))
+    expect("unknown profile shape: did you mean", ["validate", bad], 1,
+           stderr_has=["/sdf/shape: unknown shape \"extrusoin\"; did you mean \"extrusion\"?"])
+
+    # --strict: warnings fail as errors do. A misspelt key is a warning (and is ignored, so the
+    # neighbour check stays off): exit 0 without --strict, 1 with it; a clean scene passes both.
+    misspelt = write(tmp, "neighbors.json", scene(sdf={"shape": "sphere", "modifiers": [
+        {"type": "repeat", "period": [2, 0, 0], "neighbors": True}]}))
+    expect("misspelt key only warns", ["validate", misspelt], 0,
+           stderr_has=["/sdf/modifiers/0/neighbors: warning: unknown key \"neighbors\"; "
+                       "did you mean \"neighbours\"?"], stdout_has=[misspelt + ": ok"])
+    expect("--strict refuses a warning", ["validate", "--strict", misspelt], 1,
+           stderr_has=["/sdf/modifiers/0/neighbors: warning: unknown key \"neighbors\""],
+           stdout_has=[misspelt + ": 1 warning (errors with --strict)"])
+    clean = write(tmp, "neighbours.json", scene(sdf={"shape": "sphere", "modifiers": [
+        {"type": "repeat", "period": [2, 0, 0], "neighbours": True}]}))
+    expect("--strict passes a clean scene", ["validate", "--strict", clean], 0,
+           stdout_has=[clean + ": ok"])
+    expect("--strict with an error", ["validate", "--strict", misspelt, bad], 1,
+           stdout_has=[misspelt + ": 1 warning", bad + ": 1 error"])
+    expect("--strict on the samples", ["validate", "--strict"] + [
+        os.path.join(SAMPLES, "scenes", s) for s in sorted(os.listdir(os.path.join(SAMPLES, "scenes")))], 0)
     bad = write(tmp, "op.json", scene(sdf={"op": "melt", "children": [{"shape": "sphere"}]}))
     expect("unknown operation", ["validate", bad], 1, stderr_has=["/sdf/op", "melt"])
     bad = write(tmp, "type.json", scene(camera={"fov": "wide"}))

@@ -2,7 +2,7 @@
 // reorder SDF nodes; reorder meshes and lights), object-id mapping for picking and outlines,
 // selection, undo/redo (including a multi-frame drag as one step), the dirty flag, save/load
 // round trips, atomic saves with a backup, a failed save that keeps the old file and the edits,
-// and the file watcher.
+// a save refused (nothing written) for a scene that would not load, and the file watcher.
 #include "editor/adaptive_scale.hpp"
 #include "editor/document.hpp"
 #include "editor/file_watcher.hpp"
@@ -406,6 +406,67 @@ TEST_F(EditorFiles, FailedSaveKeepsTheOldFileAndTheEdits) {
     EXPECT_FALSE(doc.saveAs(folder / "missing" / "scene.json", error));
     EXPECT_FALSE(error.empty());
     EXPECT_EQ(readFile(path), before);
+}
+
+// Typing smoothness 0 into a smooth group wrote "smoothness": 0, which rmsc refuses to load. A
+// save reads its own text back first: an invalid scene writes nothing, and the error says where.
+TEST_F(EditorFiles, AnInvalidSceneIsNotSavedAndTheErrorNamesItsPointer) {
+    Scene scene = emptyScene();
+    SdfNode root = makeGroup(SdfOp::Union);
+    SdfNode smooth = makeGroup(SdfOp::SmoothUnion);
+    smooth.children = {makeShape(PrimitiveId::Sphere), makeShape(PrimitiveId::Box)};
+    root.children = {smooth};
+    scene.sdf = root;
+    const fs::path path = folder / "scene.json";
+    Document doc(scene);
+    std::string error;
+    ASSERT_TRUE(doc.saveAs(path, error)) << error;
+    const std::string before = readFile(path);
+
+    doc.apply("Smoothness", [](Scene& s, Selection&) { s.sdf->children[0].smoothness = 0.0f; });
+    EXPECT_FALSE(doc.save(error));
+    EXPECT_NE(error.find("/sdf/children/0/smoothness: expected a number > 0, got 0"),
+              std::string::npos)
+        << error;
+    EXPECT_EQ(readFile(path), before) << "the old file is untouched";
+    EXPECT_FALSE(fs::exists(path.string() + ".bak")) << "nothing was replaced";
+    EXPECT_TRUE(doc.dirty());
+    EXPECT_FLOAT_EQ(doc.scene().sdf->children[0].smoothness, 0.0f) << "the edit is kept";
+
+    // Save As refuses it as well, and makes no file.
+    const fs::path other = folder / "other.json";
+    error.clear();
+    EXPECT_FALSE(doc.saveAs(other, error));
+    EXPECT_NE(error.find("/sdf/children/0/smoothness"), std::string::npos) << error;
+    EXPECT_FALSE(fs::exists(other));
+    EXPECT_EQ(doc.file(), path);
+
+    // Once valid again, it saves.
+    doc.apply("Smoothness", [](Scene& s, Selection&) { s.sdf->children[0].smoothness = 0.2f; });
+    ASSERT_TRUE(doc.save(error)) << error;
+    EXPECT_FALSE(doc.dirty());
+    Diagnostics d;
+    ASSERT_TRUE(loadSceneForEditing(path, d)) << d.format();
+}
+
+// The tree must also compile, as rmsc validate compiles it: a group whose every child is cut
+// reads, but does not compile.
+TEST_F(EditorFiles, ASceneWhoseTreeDoesNotCompileIsNotSaved) {
+    Scene scene = sampleScene();
+    SdfNode allCut = makeGroup(SdfOp::Union);
+    allCut.children = {makeShape(PrimitiveId::Sphere)};
+    allCut.children[0].cut = true;
+    scene.sdf->children.push_back(allCut);
+    Diagnostics read;
+    ASSERT_TRUE(parseScene(sceneToJson(scene), "scene.json", read)) << read.format();
+    Document doc(scene);
+    std::string error;
+    const fs::path path = folder / "scene.json";
+    EXPECT_FALSE(doc.saveAs(path, error));
+    EXPECT_NE(error.find("/sdf/children/3: every child of the group is marked \"cut\""),
+              std::string::npos)
+        << error;
+    EXPECT_FALSE(fs::exists(path));
 }
 
 TEST_F(EditorFiles, WatcherSeesExternalEditsButNotItsOwnSync) {

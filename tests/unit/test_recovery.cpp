@@ -1,6 +1,8 @@
 // Crash recovery files of the editor (editor/recovery.hpp): written from a document with
-// unsaved edits, offered only while newer than the scene file, loading back the edited scene.
+// unsaved edits, offered only while newer than the scene file, loading back the edited scene;
+// not written for a scene that would not load.
 #include "editor/recovery.hpp"
+#include "editor/scene_edits.hpp"
 #include "scene/scene_json.hpp"
 
 #include <gtest/gtest.h>
@@ -72,4 +74,32 @@ TEST(Recovery, AnUnwritableFolderIsReportedNotThrown) {
     EXPECT_FALSE(error.empty());
     EXPECT_FALSE(findRecovery(document.file()));
     std::filesystem::remove_all(dir);
+}
+
+// The recovery file follows the rule of a save: an invalid scene is not written (the recovery
+// file of the last valid edits stays), and the error says where the scene is invalid.
+TEST(Recovery, AnInvalidSceneIsNotWritten) {
+    namespace fs = std::filesystem;
+    const fs::path dir = freshFolder("invalid");
+    Scene scene = emptyScene();
+    SdfNode root = makeGroup(SdfOp::SmoothUnion);
+    root.children = {makeShape(PrimitiveId::Sphere), makeShape(PrimitiveId::Box)};
+    scene.sdf = root;
+    Document document(scene, dir / "scene.json");
+    std::string error;
+    document.apply("Smoothness", [](Scene& s, Selection&) { s.sdf->smoothness = 0.5f; });
+    ASSERT_TRUE(writeRecovery(document, error)) << error;
+    const std::string valid = [&] {
+        std::ifstream in(recoveryPath(document.file()));
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+
+    document.apply("Smoothness", [](Scene& s, Selection&) { s.sdf->smoothness = 0.0f; });
+    EXPECT_FALSE(writeRecovery(document, error));
+    EXPECT_NE(error.find("/sdf/smoothness: expected a number > 0, got 0"), std::string::npos)
+        << error;
+    std::ifstream in(recoveryPath(document.file()));
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), valid)
+        << "the last valid recovery file stays";
+    fs::remove_all(dir);
 }

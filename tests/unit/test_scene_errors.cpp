@@ -52,9 +52,35 @@ TEST(SceneErrors, Vec3ParameterComponentOutOfRange) {
                    "expected an array of 3 numbers, got a number");
 }
 
-TEST(SceneErrors, UnknownShapeListsKnownShapesNearestFirst) {
+// A range is checked on the float a number is kept as. The float nearest 0.001 lies just above
+// 0.001, so a range ending at 0.001f (the gyroid's period, the death star's cut distance) took
+// the float but refused the text "0.001" that the docs, the schema and the writer give for it;
+// and a number that rounds to 0 is 0, which a range excluding 0 refuses.
+TEST(SceneErrors, RangesHoldForTheFloatANumberIsKeptAs) {
+    for (const char* sdf : {R"({"shape": "gyroid", "period": 0.001})",
+                            R"({"shape": "death_star", "cut_distance": 0.001})"}) {
+        Diagnostics d;
+        EXPECT_TRUE(parseScene(withSdf(sdf), "ends.json", d)) << sdf << "\n" << d.format();
+    }
+    expectOneError(withSdf(R"({"shape": "gyroid", "period": 0.00099999})"), "/sdf/period",
+                   "expected a number in [0.001, 10000], got 0.00099999");
+    expectOneError(withSdf(R"({"op": "smooth_union", "smoothness": 1e-46,
+        "children": [{"shape": "sphere"}]})"),
+                   "/sdf/smoothness", "expected a number > 0, got 1e-46");
+}
+
+TEST(SceneErrors, UnknownShapeSuggestsTheNearestAndListsKnownShapesNearestFirst) {
     expectOneError(withSdf(R"({"shape": "spere"})"), "/sdf/shape",
-                   "unknown shape \"spere\"; known shapes: \"sphere\", ");
+                   "unknown shape \"spere\"; did you mean \"sphere\"? (known shapes: "
+                   "\"sphere\", ");
+    // The profile solids are shapes too.
+    expectOneError(withSdf(R"({"shape": "revolutoin"})"), "/sdf/shape",
+                   "; did you mean \"revolution\"?");
+    // No suggestion for a name that is no typo of any.
+    const Diagnostics d = errorsOf(withSdf(R"({"shape": "blob"})"));
+    ASSERT_EQ(d.errorCount(), 1) << d.format();
+    EXPECT_EQ(d.items[0].message.find("did you mean"), std::string::npos) << d.format();
+    EXPECT_NE(d.items[0].message.find("(known shapes: "), std::string::npos) << d.format();
 }
 
 TEST(SceneErrors, UnknownOpListsValidOps) {

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace rmsc;
@@ -129,4 +130,30 @@ TEST(SceneSchema, EveryCatalogueModifierWithItsRangesDefaultsAndRequiredKeys) {
         }
         EXPECT_EQ(def["required"], ordered_json(required));
     }
+}
+
+// docs/scene-format.md says it documents every key: each key the schema names (every
+// "properties" member, at any depth) appears there in backquotes, as the tables and the text
+// name keys, or as a key of a JSON example ("density": ...).
+TEST(SceneSchema, EveryKeyIsDocumentedInTheFormatDocs) {
+    const std::string docs = readFile(std::string(RMSC_TEST_SOURCE_DIR) + "/docs/scene-format.md");
+    ASSERT_FALSE(docs.empty());
+    const ordered_json schema = ordered_json::parse(generateSceneSchema().text);
+    std::set<std::string> keys;
+    std::vector<const ordered_json*> stack = {&schema};
+    while (!stack.empty()) {
+        const ordered_json* node = stack.back();
+        stack.pop_back();
+        if (node->is_object() && node->contains("properties") && (*node)["properties"].is_object())
+            for (const auto& [key, value] : (*node)["properties"].items())
+                keys.insert(key);
+        if (node->is_structured())
+            for (const auto& child : *node)
+                stack.push_back(&child);
+    }
+    EXPECT_GT(keys.size(), 100u);
+    for (const std::string& key : keys)
+        EXPECT_TRUE(docs.find("`" + key + "`") != std::string::npos ||
+                    docs.find("\"" + key + "\":") != std::string::npos)
+            << "the schema's key \"" << key << "\" is not documented in docs/scene-format.md";
 }

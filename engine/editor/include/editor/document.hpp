@@ -54,8 +54,10 @@ class Document {
     // Increments whenever the scene changes (edit, undo, redo, load): renderers compare it.
     std::uint64_t revision() const { return revision_; }
 
-    // Writes sceneToJson atomically, keeping the previous file as FILE.bak. On failure returns
-    // false with `error` saying why; the scene, its edits and the old file are kept.
+    // Writes sceneToJson atomically, keeping the previous file as FILE.bak. The text is checked
+    // first as `rmsc validate` would check it (editor/scene_check.hpp): an invalid scene is not
+    // written, and `error` names its first errors by JSON pointer. On failure returns false with
+    // `error` saying why; the scene, its edits and the old file are kept.
     bool save(std::string& error);
     bool saveAs(const std::filesystem::path& path, std::string& error);
 

@@ -15,8 +15,9 @@ namespace rmsc::editor {
 // Where the edits of `sceneFile` ("" for a scene never saved) are kept.
 std::filesystem::path recoveryPath(const std::filesystem::path& sceneFile);
 
-// Writes the document's scene to recoveryPath(document.file()) atomically. False with `error`
-// saying why when it cannot be written.
+// Writes the document's scene to recoveryPath(document.file()) atomically, once it passes the
+// check of a save (editor/scene_check.hpp). False with `error` saying why when it is not valid
+// (nothing is written; an older recovery file stays) or cannot be written.
 bool writeRecovery(const Document& document, std::string& error);
 
 // The recovery file of `sceneFile` if there is one worth offering: it exists and is newer than

@@ -6,6 +6,7 @@
 // engine/sdf/sdf_functions.cpp (sdf/sdf_functions.hpp).
 #pragma once
 
+#include "sdf/param_spec.hpp"
 #include "sdf/sdf_tree.hpp"
 
 #include <span>
@@ -56,6 +57,8 @@ std::vector<std::string> blendNames();
 
 // The seam needs "smoothness" (> 0): the smooth, chamfer and round operations.
 bool takesSmoothness(SdfOp op);
+// The key "smoothness" of those groups: its range, for the reader, the schema and the inspector.
+const SdfParamSpec& smoothnessParam();
 // "blend" chooses the seam's curve: the smooth operations.
 bool takesBlend(SdfOp op);
 // The name for messages: "smooth union".
