@@ -1,6 +1,9 @@
 // Structural scene edits for the editor (see scene_edits.hpp).
 #include "editor/scene_edits.hpp"
 
+#include "core/limits.hpp"
+#include "editor/light_edits.hpp"
+#include "editor/profile_edits.hpp"
 #include "sdf/operations.hpp"
 
 #include <algorithm>
@@ -39,6 +42,8 @@ float maxComponent(glm::vec3 v) {
 // Radius of a sphere around a node in its own space, from its parameters (shapes) or its
 // children (groups). Infinite shapes (planes) count as size 1 so framing stays sensible.
 float localRadius(const SdfNode& node) {
+    if (!node.isGroup && node.profile)
+        return std::clamp(profileSolidRadius(*node.profile), 0.05f, 10.0f);
     if (!node.isGroup) {
         const PrimitiveSpec& spec = primitiveSpec(node.primitive);
         float r = 0.0f;
@@ -248,10 +253,9 @@ int addMesh(Scene& scene, const std::filesystem::path& file) {
     return int(scene.meshes.size()) - 1;
 }
 
-int addLight(Scene& scene) {
-    Light light;
-    light.name = "light " + std::to_string(scene.lights.size() + 1);
-    scene.lights.push_back(light);
+int addLight(Scene& scene, LightType type, glm::vec3 position) {
+    if (int(scene.lights.size()) >= limits::kLights) return -1;
+    scene.lights.push_back(makeLight(type, position, int(scene.lights.size()) + 1));
     return int(scene.lights.size()) - 1;
 }
 
@@ -396,11 +400,14 @@ std::optional<Bounds> selectionBounds(const Scene& scene, const Selection& selec
         const Transform& t = scene.meshes[std::size_t(selection.index)].transform;
         return Bounds{t.position, std::max(0.5f, maxComponent(t.scale))};
     }
+    if (selection.kind == SelectionKind::Light)
+        return Bounds{scene.lights[std::size_t(selection.index)].position, 0.5f};
     return std::nullopt;
 }
 
 std::string displayName(const SdfNode& node) {
     if (!node.name.empty()) return node.name;
+    if (!node.isGroup && node.profile) return profileShapeName(*node.profile);
     if (!node.isGroup) return std::string(primitiveSpec(node.primitive).name);
     return "group";
 }

@@ -4,6 +4,8 @@
 #include "lighting_json.hpp"
 
 #include "core/limits.hpp"
+#include "param_json.hpp"
+#include "scene/light_spec.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
@@ -11,7 +13,13 @@
 namespace rmsc {
 namespace {
 
-const std::vector<std::string> kLightTypes = {"directional", "point", "spot"};
+std::vector<std::string> lightTypeNames() {
+    std::vector<std::string> names;
+    for (const LightType type : kLightTypes)
+        names.emplace_back(lightTypeName(type));
+    return names;
+}
+
 const std::vector<std::string> kDirectionalKeys = {
     "type", "name", "direction", "color", "intensity", "shadows", "shadow_softness"};
 const std::vector<std::string> kPointKeys = {"type",      "name",  "position", "color",
@@ -27,7 +35,6 @@ const std::vector<std::string> kEnvironmentKeys = {"sky", "intensity", "fog"};
 const std::vector<std::string> kSkyTypes = {"constant", "gradient", "image"};
 const std::vector<std::string> kFogKeys = {"color", "density"};
 
-constexpr float kMaxSpotAngle = 90.0f;
 constexpr int kDefaultAoSamples = 5;
 
 // Reads object[key] as a boolean if present (absent leaves *out).
@@ -53,18 +60,6 @@ void readDirection(const JsonReader& json, const Json& object, const std::string
     } else {
         direction = normalizedForStorage(direction);
     }
-}
-
-const char* lightTypeName(LightType type) {
-    switch (type) {
-    case LightType::Point:
-        return "point";
-    case LightType::Spot:
-        return "spot";
-    case LightType::Directional:
-        break;
-    }
-    return "directional";
 }
 
 // Reads the "sky" object of the environment.
@@ -127,42 +122,38 @@ void readLight(const JsonReader& json, const Json& object, const std::string& po
     if (const Json* type = findMember(object, "type")) {
         const std::string typePointer = childPointer(pointer, "type");
         if (const auto name = readString(json, *type, typePointer)) {
-            if (*name == "directional") {
-                light.type = LightType::Directional;
-            } else if (*name == "point") {
-                light.type = LightType::Point;
-                keys = &kPointKeys;
-            } else if (*name == "spot") {
-                light.type = LightType::Spot;
-                keys = &kSpotKeys;
+            if (const std::optional<LightType> known = findLightType(*name)) {
+                light.type = *known;
+                if (light.type == LightType::Point) keys = &kPointKeys;
+                if (light.type == LightType::Spot) keys = &kSpotKeys;
             } else {
                 json.error(typePointer, "unknown light type \"" + *name +
-                                            "\"; known types: " + quotedList(kLightTypes));
+                                            "\"; known types: " + quotedList(lightTypeNames()));
             }
         }
     } else {
-        json.error(pointer, "missing \"type\"; known types: " + quotedList(kLightTypes));
+        json.error(pointer, "missing \"type\"; known types: " + quotedList(lightTypeNames()));
     }
     warnUnknownKeys(json, object, pointer, *keys);
     readStringField(json, object, pointer, "name", &light.name);
-    if (light.type != LightType::Point) readDirection(json, object, pointer, light.direction);
-    if (light.type != LightType::Directional) {
-        readVec3Field(json, object, pointer, "position", &light.position);
-        readNumberField(json, object, pointer, "range", &light.range, NumberRange::above(0.0));
-    }
+    if (hasDirection(light.type)) readDirection(json, object, pointer, light.direction);
+    if (hasPosition(light.type)) readVec3Field(json, object, pointer, "position", &light.position);
+    if (hasRange(light.type))
+        readNumberField(json, object, pointer, "range", &light.range,
+                        numberRange(kLightRangeRange));
     readColorField(json, object, pointer, "color", &light.color);
     readNumberField(json, object, pointer, "intensity", &light.intensity,
-                    NumberRange::atLeast(0.0));
+                    numberRange(kLightIntensityRange));
     readBoolField(json, object, pointer, "shadows", &light.castShadows);
     readNumberField(json, object, pointer, "shadow_softness", &light.shadowSoftness,
-                    NumberRange::closed(0.001, 1.0));
-    if (light.type == LightType::Spot) {
+                    numberRange(kLightShadowSoftnessRange));
+    if (hasCone(light.type)) {
         const bool innerOk =
             readNumberField(json, object, pointer, "inner_angle", &light.innerAngleDegrees,
-                            NumberRange::closed(0.0, kMaxSpotAngle));
+                            numberRange(kSpotInnerAngleRange));
         const bool outerOk =
             readNumberField(json, object, pointer, "outer_angle", &light.outerAngleDegrees,
-                            NumberRange::openClosed(0.0, kMaxSpotAngle));
+                            numberRange(kSpotOuterAngleRange));
         if (innerOk && outerOk && !(light.outerAngleDegrees > light.innerAngleDegrees)) {
             json.error(childPointer(pointer, "outer_angle"),
                        "expected \"outer_angle\" > \"inner_angle\" (" +
@@ -242,15 +233,14 @@ void readEnvironment(const JsonReader& json, const Json& object,
 
 Json lightToJson(const Light& light) {
     Json out = Json::object();
-    out["type"] = lightTypeName(light.type);
+    out["type"] = std::string(lightTypeName(light.type));
     if (!light.name.empty()) out["name"] = light.name;
-    if (light.type != LightType::Directional) out["position"] = vec3ToJson(light.position);
-    if (light.type != LightType::Point) out["direction"] = vec3ToJson(light.direction);
+    if (hasPosition(light.type)) out["position"] = vec3ToJson(light.position);
+    if (hasDirection(light.type)) out["direction"] = vec3ToJson(light.direction);
     out["color"] = vec3ToJson(light.color);
     out["intensity"] = floatToJson(light.intensity);
-    if (light.type != LightType::Directional && light.range > 0.0f)
-        out["range"] = floatToJson(light.range);
-    if (light.type == LightType::Spot) {
+    if (hasRange(light.type) && light.range > 0.0f) out["range"] = floatToJson(light.range);
+    if (hasCone(light.type)) {
         out["inner_angle"] = floatToJson(light.innerAngleDegrees);
         out["outer_angle"] = floatToJson(light.outerAngleDegrees);
     }

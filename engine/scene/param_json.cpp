@@ -39,9 +39,12 @@ std::optional<int> readAxisName(const JsonReader& reader, const Json& value,
 
 } // namespace
 
+NumberRange numberRange(const ParamRange& range) {
+    return {range.min, range.max, range.minExclusive, range.maxExclusive};
+}
+
 NumberRange numberRange(const SdfParamSpec& spec) {
-    NumberRange range{spec.range.min, spec.range.max, spec.range.minExclusive,
-                      spec.range.maxExclusive};
+    NumberRange range = numberRange(spec.range);
     if (!spec.noun.empty()) range.noun = spec.noun.data(); // string literals: NUL-terminated
     return range;
 }

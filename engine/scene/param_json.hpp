@@ -15,6 +15,8 @@ namespace rmsc {
 
 // The reader's NumberRange for a spec's range, with the spec's noun.
 NumberRange numberRange(const SdfParamSpec& spec);
+// The reader's NumberRange for a range ("a number" in messages).
+NumberRange numberRange(const ParamRange& range);
 
 // Reads `spec.key` of `object` (at `pointer`) into `out`. Absent: an error when the parameter is
 // required, else `out` is left as it is (the default). Returns false on any error. The type of

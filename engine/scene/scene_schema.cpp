@@ -12,6 +12,7 @@
 #include "core/limits.hpp"
 #include "json_reader.hpp"
 #include "param_json.hpp"
+#include "scene/light_spec.hpp"
 #include "scene/scene_json.hpp"
 #include "sdf/modifiers.hpp"
 #include "sdf/operations.hpp"
@@ -214,13 +215,13 @@ std::vector<ObjectDef> objectDefs() {
         {"type", string()},
         {"name", string()},
         {"color", color()},
-        {"intensity", number(NumberRange::atLeast(0.0))},
+        {"intensity", number(numberRange(kLightIntensityRange))},
         {"shadows", described(boolean(), "whether the light casts shadows")},
-        {"shadow_softness", number(NumberRange::closed(0.001, 1.0))},
+        {"shadow_softness", number(numberRange(kLightShadowSoftnessRange))},
     };
     const Key direction = {"direction", described(numbers(3), "the direction light travels")};
     const Key position = {"position", numbers(3)};
-    const Key range = {"range", described(number(NumberRange::above(0.0)), "metres")};
+    const Key range = {"range", described(number(numberRange(kLightRangeRange)), "metres")};
     const Json sdfShape = sceneWith("sdf", {{"shape", "sphere"}});
     const Json extrusion = sceneWith("sdf", {{"shape", "extrusion"}});
     const Json environment = sceneWith("environment", Json::object());
@@ -343,8 +344,8 @@ std::vector<ObjectDef> objectDefs() {
          plus(lightCommon, {position,
                             direction,
                             range,
-                            {"inner_angle", number(NumberRange::closed(0.0, 90.0))},
-                            {"outer_angle", described(number(NumberRange::openClosed(0.0, 90.0)),
+                            {"inner_angle", number(numberRange(kSpotInnerAngleRange))},
+                            {"outer_angle", described(number(numberRange(kSpotOuterAngleRange)),
                                                       "degrees, greater than inner_angle")}}),
          {"type"},
          "a light shining from a point in a cone"},
@@ -363,7 +364,7 @@ std::vector<ObjectDef> objectDefs() {
          "/environment",
          Json::object(),
          {{"sky", ref("sky")},
-          {"intensity", number(NumberRange::atLeast(0.0))},
+          {"intensity", number(numberRange(kLightIntensityRange))},
           {"fog", ref("fog")}},
          {},
          "sky and fog"},

@@ -1,7 +1,11 @@
 // Shared document edits (see document_edits.hpp).
 #include "document_edits.hpp"
 
+#include "core/limits.hpp"
+#include "editor/profile_edits.hpp"
 #include "editor/scene_edits.hpp"
+#include "scene/light_spec.hpp"
+#include "sdf/profiles.hpp"
 
 #include <string>
 
@@ -22,10 +26,24 @@ void addGroup(editor::Document& document, SdfOp op) {
     });
 }
 
-void addLight(editor::Document& document) {
-    document.apply("Add light", [](Scene& scene, Selection& selection) {
-        selection = Selection::light(editor::addLight(scene));
-    });
+void addProfileShape(editor::Document& document, SdfProfileSolid solid) {
+    document.apply("Add " + std::string(profileSolidSpec(solid).name),
+                   [&](Scene& scene, Selection& selection) {
+                       selection = Selection::sdf(editor::insertSdfNode(
+                           scene, selection, editor::makeProfileShape(solid)));
+                   });
+}
+
+void addLight(editor::Document& document, LightType type, glm::vec3 position) {
+    if (!canAddLight(document)) return;
+    document.apply("Add " + std::string(lightTypeName(type)) + " light",
+                   [&](Scene& scene, Selection& selection) {
+                       selection = Selection::light(editor::addLight(scene, type, position));
+                   });
+}
+
+bool canAddLight(const editor::Document& document) {
+    return int(document.scene().lights.size()) < limits::kLights;
 }
 
 void duplicateSelection(editor::Document& document) {

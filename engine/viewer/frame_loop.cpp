@@ -219,6 +219,9 @@ ViewInput Viewer::viewInput() const {
     shown.scene = &document.scene();
     shown.revision = document.revision();
     shown.selected = editor::objectIdRange(document.scene(), document.selection);
+    if (document.selection.kind == editor::SelectionKind::Light)
+        shown.selectedLight = document.selection.index;
+    shown.showLights = view_.showLights;
     shown.mode = view_.mode;
     return shown;
 }

@@ -1,7 +1,7 @@
 // Move, rotate and scale gestures on the selection (see gesture_controls.hpp).
 #include "gesture_controls.hpp"
 
-#include "editor/scene_edits.hpp"
+#include "editor/gesture_target.hpp"
 #include "imgui_platform.hpp"
 #include "render/frame.hpp"
 
@@ -9,17 +9,6 @@
 
 namespace rmsc::app {
 namespace {
-
-// The selected object's transform (an SDF node's is relative to its parent group), or nullptr.
-Transform* selectedTransform(Scene& scene, const editor::Selection& selection) {
-    if (selection.kind == editor::SelectionKind::Sdf) {
-        SdfNode* node = editor::findSdfNode(scene, selection.sdfPath);
-        return node ? &node->transform : nullptr;
-    }
-    if (selection.kind == editor::SelectionKind::Mesh && editor::selectionValid(scene, selection))
-        return &scene.meshes[std::size_t(selection.index)].transform;
-    return nullptr;
-}
 
 std::string gestureLabel(const editor::TransformGesture& g) {
     const char* verb = g.kind == editor::GestureKind::Move     ? "Move"
@@ -44,17 +33,16 @@ void startGesture(ViewportGesture& gesture, const InputState& input, EditorSessi
         kind = editor::GestureKind::Scale;
     else
         return;
-    const editor::Selection& selection = session.document.selection;
-    const Transform* transform = selectedTransform(session.document.editScene(), selection);
-    if (!transform) return; // nothing movable selected (S then flies back as usual)
+    const std::optional<editor::GestureTarget> target =
+        editor::gestureTarget(session.document.scene(), session.document.selection, kind);
+    if (!target) return; // nothing this gesture changes is selected (S then flies back as usual)
     session.document.commit();
     editor::TransformGesture& g = gesture.math;
     g = {};
     g.kind = kind;
     g.space = worldAxes ? editor::AxisSpace::World : editor::AxisSpace::Local;
-    g.start = *transform;
-    if (selection.kind == editor::SelectionKind::Sdf)
-        g.parentWorld = editor::sdfParentWorldMatrix(session.document.scene(), selection.sdfPath);
+    g.start = target->start;
+    g.parentWorld = target->parentWorld;
     const FrameCamera frame =
         makeFrameCamera(session.viewCamera(), int(viewport.width), int(viewport.height));
     g.view.viewProjection = frame.viewProjection;
@@ -70,7 +58,7 @@ void updateGesture(ViewportGesture& gesture, const InputState& input, editor::Do
                    const Rect& viewport) {
     if (!gesture.active) return;
     const editor::Selection& selection = document.selection;
-    if (!selectedTransform(document.editScene(), selection)) {
+    if (!editor::gestureTarget(document.scene(), selection, gesture.math.kind)) {
         gesture.active = false;
         return;
     }
@@ -90,7 +78,8 @@ void updateGesture(ViewportGesture& gesture, const InputState& input, editor::Do
     if (mouse != gesture.lastMouse || gesture.needsApply) {
         gesture.lastMouse = mouse;
         gesture.needsApply = false;
-        *selectedTransform(document.editScene(), selection) = editor::gestureTransform(g, mouse);
+        editor::setGestureTransform(document.editScene(), selection,
+                                    editor::gestureTransform(g, mouse));
         document.markChanged(gestureLabel(g));
     }
     if (input.pressed(GLFW_KEY_ENTER) || input.clicked[0]) {

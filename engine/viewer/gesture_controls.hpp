@@ -1,6 +1,7 @@
-// Moving (G), rotating (R) and scaling (S) the selected shape, group or mesh with the mouse, like
-// Blender: X / Y / Z constrain to an axis (again: free), a click or Enter keeps the result as
-// one undo step, Esc or the right button cancels. The math is editor/transform_gesture.hpp.
+// Moving (G), rotating (R) and scaling (S) the selected shape, group or mesh, and moving and
+// turning the selected light, with the mouse, like Blender: X / Y / Z constrain to an axis (again:
+// free), a click or Enter keeps the result as one undo step, Esc or the right button cancels. The
+// math is editor/transform_gesture.hpp.
 #pragma once
 
 #include "editor/transform_gesture.hpp"

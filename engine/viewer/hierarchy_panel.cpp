@@ -3,8 +3,11 @@
 #include "hierarchy_panel.hpp"
 
 #include "document_edits.hpp"
+#include "editor/light_edits.hpp"
 #include "editor/scene_edits.hpp"
+#include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 
 #include <imgui.h>
 
@@ -34,6 +37,10 @@ void drawAddButtons(editor::Document& document, ViewerCommands& commands) {
     if (ImGui::BeginPopup("add shape")) {
         for (const PrimitiveSpec& spec : primitiveCatalogue())
             if (ImGui::Selectable(std::string(spec.name).c_str())) addShape(document, spec);
+        ImGui::Separator();
+        for (const ProfileSolidSpec& solid : profileSolidCatalogue())
+            if (ImGui::Selectable(std::string(solid.name).c_str()))
+                addProfileShape(document, solid.solid);
         ImGui::EndPopup();
     }
     ImGui::SameLine();
@@ -44,7 +51,14 @@ void drawAddButtons(editor::Document& document, ViewerCommands& commands) {
         ImGui::EndPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("+ Light")) addLight(document);
+    if (ImGui::Button("+ Light")) ImGui::OpenPopup("add light");
+    if (ImGui::BeginPopup("add light")) {
+        for (const LightType type : kLightTypes)
+            if (ImGui::Selectable(std::string(lightTypeName(type)).c_str(), false,
+                                  canAddLight(document) ? 0 : ImGuiSelectableFlags_Disabled))
+                commands.push_back(addLightCommand(type));
+        ImGui::EndPopup();
+    }
     ImGui::SameLine();
     if (ImGui::Button("+ Mesh")) commands.push_back(ViewerCommand::AddMesh);
 }
@@ -55,6 +69,17 @@ struct PendingMove {
     int index = -1;
 };
 
+// A node's row: "[operation] name" for groups, "name (solid of profile)" for profile solids
+// ("revolution (circle)" while the name is the solid's).
+std::string nodeLabel(const SdfNode& node) {
+    if (node.isGroup) return "[" + operationLabel(node.op) + "] " + editor::displayName(node);
+    std::string label = editor::displayName(node);
+    if (!node.profile) return label;
+    const std::string solid(profileSolidSpec(node.profile->solid).name);
+    const std::string profile(profileSpec(node.profile->type).name);
+    return label + (label == solid ? " (" + profile + ")" : " (" + solid + " of " + profile + ")");
+}
+
 // One node of the SDF tree at `path`, and its children when it is an open group.
 void drawSdfNode(const SdfNode& node, std::vector<int>& path, Selection& selection,
                  std::optional<PendingMove>& move) {
@@ -63,9 +88,7 @@ void drawSdfNode(const SdfNode& node, std::vector<int>& path, Selection& selecti
                                ImGuiTreeNodeFlags_OpenOnDoubleClick;
     if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
     if (selection == Selection::sdf(path)) flags |= ImGuiTreeNodeFlags_Selected;
-    const std::string label =
-        (node.isGroup ? "[" + operationLabel(node.op) + "] " : std::string()) +
-        editor::displayName(node) + "##" + pathId(path);
+    const std::string label = nodeLabel(node) + "##" + pathId(path);
     const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selection = Selection::sdf(path);
     if (!path.empty() && ImGui::BeginDragDropSource()) {
@@ -151,8 +174,8 @@ void drawMeshAndLightLists(editor::Document& document) {
     ImGui::Spacing();
     ImGui::TextDisabled("Lights");
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
-        drawListItem(scene.lights[i].name.empty() ? "light " + std::to_string(i + 1)
-                                                  : scene.lights[i].name,
+        drawListItem("[" + std::string(lightTypeName(scene.lights[i].type)) + "] " +
+                         editor::lightLabel(scene.lights[i], int(i)),
                      SelectionKind::Light, int(i), kLightPayload, document.selection, reorder);
     if (reorder && reorder->from != reorder->to) {
         const PendingReorder r = *reorder;
@@ -174,6 +197,7 @@ void drawHierarchyHelp() {
     ImGui::TextDisabled("Drag nodes onto a group to reparent,\nonto a shape to place before it;\n"
                         "drag a mesh or light onto another\nto put it in its place.\n"
                         "Click in the view to select;\nG moves, R rotates, S scales\n"
+                        "(lights: G moves, R turns)\n"
                         "(X/Y/Z: axis), F frames.\n"
                         "Right mouse + WASD flies;\nAlt + drag orbits.");
 }

@@ -50,6 +50,8 @@ void drawLightInspector(editor::Document& document, int light, ViewerCommands& c
 // Lengths drag in steps that follow `size`; `refusal` says why the last edit was undone.
 bool editModifiers(SdfNode& node, float size, std::string& refusal);
 bool editShell(SdfNode& node, const std::filesystem::path& sceneFolder);
+// A profile solid's profile and its own key (depth, offset); drags follow `size`.
+bool editProfile(SdfProfile& profile, float size);
 
 // Materials: the choice (-1 is "inherit" for SDF nodes, "the glTF's own" for meshes) with the
 // chosen material's fields; returns true on change. And the chosen material's texture files.

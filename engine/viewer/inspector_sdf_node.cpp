@@ -4,9 +4,11 @@
 #include "inspector.hpp"
 
 #include "editor/param_fields.hpp"
+#include "editor/profile_edits.hpp"
 #include "editor/scene_edits.hpp"
 #include "panel_widgets.hpp"
 #include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -56,20 +58,56 @@ void changeShape(SdfNode& node, const PrimitiveSpec& spec, const PrimitiveSpec& 
     node.params = params;
 }
 
-// The shape's type (every primitive of the catalogue) and its parameters.
-void drawShapeFields(SdfNode& node, editor::Document& document) {
+// Makes the node the profile solid `solid`: a profile it has keeps its values, a name that was
+// its shape's becomes the solid's.
+void changeToSolid(SdfNode& node, SdfProfileSolid solid) {
+    const std::string shapeName = node.profile ? editor::profileShapeName(*node.profile)
+                                               : std::string(primitiveSpec(node.primitive).name);
+    SdfNode made = editor::makeProfileShape(solid);
+    if (node.profile) {
+        made.profile = *node.profile;
+        made.profile->solid = solid;
+    }
+    node.profile = made.profile;
+    if (node.name == shapeName) node.name = made.name;
+}
+
+// The shape's type (every primitive of the catalogue and every profile solid) and its
+// parameters, or its profile.
+void drawShapeFields(SdfNode& node, editor::Document& document, float size) {
     ImGui::TextDisabled("Shape");
     const PrimitiveSpec& spec = primitiveSpec(node.primitive);
-    if (ImGui::BeginCombo("shape", std::string(spec.name).c_str())) {
+    const std::string current =
+        node.profile ? editor::profileShapeName(*node.profile) : std::string(spec.name);
+    if (ImGui::BeginCombo("shape", current.c_str())) {
         for (const PrimitiveSpec& other : primitiveCatalogue()) {
-            if (ImGui::Selectable(std::string(other.name).c_str(), other.id == spec.id) &&
-                other.id != spec.id) {
+            const bool isCurrent = !node.profile && other.id == spec.id;
+            if (ImGui::Selectable(std::string(other.name).c_str(), isCurrent) && !isCurrent) {
+                if (node.profile) {
+                    if (node.name == editor::profileShapeName(*node.profile))
+                        node.name = std::string(spec.name);
+                    node.profile.reset();
+                }
                 changeShape(node, spec, other);
                 document.markChanged("Shape type");
             }
             helpTooltip(other.description);
         }
+        ImGui::Separator();
+        for (const ProfileSolidSpec& solid : profileSolidCatalogue()) {
+            const bool isCurrent = node.profile && node.profile->solid == solid.solid;
+            if (ImGui::Selectable(std::string(solid.name).c_str(), isCurrent) && !isCurrent) {
+                changeToSolid(node, solid.solid);
+                document.markChanged("Shape type");
+            }
+            helpTooltip(solid.description);
+        }
         ImGui::EndCombo();
+    }
+    if (node.profile) {
+        helpTooltip(profileSolidSpec(node.profile->solid).description);
+        if (editProfile(*node.profile, size)) document.markChanged("Edit profile");
+        return;
     }
     helpTooltip(spec.description);
     const PrimitiveSpec& now = primitiveSpec(node.primitive);
@@ -115,7 +153,7 @@ void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& pa
     if (node->isGroup)
         drawGroupFields(*node, size, document);
     else
-        drawShapeFields(*node, document);
+        drawShapeFields(*node, document, size);
     ImGui::Separator();
     ImGui::TextDisabled("Material");
     if (chooseMaterial(scene, node->material, "(inherit)")) document.markChanged("Material");

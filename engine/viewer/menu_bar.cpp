@@ -3,7 +3,9 @@
 
 #include "document_edits.hpp"
 #include "panel_widgets.hpp"
+#include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
+#include "sdf/profiles.hpp"
 
 #include <imgui.h>
 
@@ -53,6 +55,12 @@ void drawAddMenu(editor::Document& document, ViewerCommands& commands) {
             if (ImGui::MenuItem(std::string(spec.name).c_str())) addShape(document, spec);
             helpTooltip(spec.description);
         }
+        ImGui::Separator();
+        for (const ProfileSolidSpec& solid : profileSolidCatalogue()) {
+            if (ImGui::MenuItem(std::string(solid.name).c_str()))
+                addProfileShape(document, solid.solid);
+            helpTooltip(solid.description);
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Group")) {
@@ -60,7 +68,13 @@ void drawAddMenu(editor::Document& document, ViewerCommands& commands) {
             if (ImGui::MenuItem(operationLabel(op.op).c_str())) addGroup(document, op.op);
         ImGui::EndMenu();
     }
-    if (ImGui::MenuItem("Directional light")) addLight(document);
+    if (ImGui::BeginMenu("Light")) {
+        for (const LightType type : kLightTypes)
+            if (ImGui::MenuItem(std::string(lightTypeName(type)).c_str(), nullptr, false,
+                                canAddLight(document)))
+                commands.push_back(addLightCommand(type));
+        ImGui::EndMenu();
+    }
     if (ImGui::MenuItem("glTF mesh from a file...")) commands.push_back(ViewerCommand::AddMesh);
     ImGui::EndMenu();
 }
@@ -72,6 +86,7 @@ void drawViewMenu(ViewSettings& view) {
         if (ImGui::MenuItem(names[i], nullptr, int(view.mode) == i)) view.mode = ViewMode(i);
     ImGui::Separator();
     ImGui::MenuItem("Overlay", nullptr, &view.showOverlay);
+    ImGui::MenuItem("Light markers", nullptr, &view.showLights);
     ImGui::MenuItem("Adaptive resolution", nullptr, &view.adaptive.enabled);
     ImGui::SetNextItemWidth(120);
     ImGui::DragFloat("target ms", &view.adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f, "%.0f ms");

@@ -34,10 +34,13 @@ bool ViewRenderer::useShaders(ShaderFiles files, std::string& error) {
     if (newRenderer && gpuScene_ && !newRenderer->prepare(*gpuScene_, error)) newRenderer.reset();
     std::optional<DisplayPass> newDisplay;
     if (newRenderer) newDisplay = DisplayPass::create(files, error);
-    if (!newRenderer || !newDisplay) return false;
+    std::optional<LightGizmoPass> newGizmos;
+    if (newDisplay) newGizmos = LightGizmoPass::create(files, error);
+    if (!newRenderer || !newDisplay || !newGizmos) return false;
     renderer_ = std::move(newRenderer);
     renderer_->setGroundGrid(true);
     display_ = std::move(newDisplay);
+    gizmos_ = std::move(newGizmos);
     shaderFiles_ = std::move(files);
     startWarmer();
     lastRenderedRevision_ = 0; // render again
@@ -139,6 +142,11 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
     in.width = vw;
     in.height = vh;
     display_->draw(in);
+    if (view.showLights && !view.scene->lights.empty()) {
+        const FrameCamera frame = makeFrameCamera(view.camera, vw, vh);
+        gizmos_->draw({0, viewport.x, viewport.y, vw, vh}, frame.viewProjection, view.scene->lights,
+                      view.selectedLight);
+    }
 }
 
 std::optional<Pixels<std::uint8_t>> ViewRenderer::capture(const ViewInput& view, int width,

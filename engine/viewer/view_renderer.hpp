@@ -13,6 +13,7 @@
 #include "editor/scene_edits.hpp"
 #include "editor/selection.hpp"
 #include "panel_layout.hpp"
+#include "render/light_gizmo_pass.hpp"
 #include "render/renderer.hpp"
 #include "render/shader_warmer.hpp"
 #include "window.hpp"
@@ -30,6 +31,8 @@ struct ViewInput {
     const Scene* scene = nullptr; // the document's
     std::uint64_t revision = 0;   // the document's: a new one renders again
     editor::IdRange selected;     // object ids to outline
+    int selectedLight = -1;       // the light drawn in the selection colour
+    bool showLights = true;       // draw the lights' markers over the view
     ViewMode mode = ViewMode::Color;
 };
 
@@ -70,7 +73,8 @@ class ViewRenderer {
                       int frameNumber, std::string& sceneError);
 
     // Clears the window and draws the view into `viewport`, rendering again when the view
-    // changed (at the scale `adaptive` chooses) and showing the last render when it did not.
+    // changed (at the scale `adaptive` chooses) and showing the last render when it did not;
+    // the lights' markers are drawn over it every time.
     void render(const ViewInput& view, const ViewportPixels& viewport,
                 editor::AdaptiveScale& adaptive);
     // The view at `width` x `height` pixels and full resolution: the last render when it is
@@ -93,6 +97,7 @@ class ViewRenderer {
     ShaderFiles shaderFiles_;
     std::optional<Renderer> renderer_;
     std::optional<DisplayPass> display_;
+    std::optional<LightGizmoPass> gizmos_;
     std::optional<GpuScene> gpuScene_;      // what is drawn
     std::optional<PreparedScene> prepared_; // last scene that compiled (the newest), its SDF
                                             // without the bounding hierarchy (generated code's)

@@ -1,6 +1,6 @@
 // How the view is shown: what it shows (colour, normals, depth, object ids, march steps), the
-// overlay, and the adaptive resolution (its settings and its state, editor/adaptive_scale.hpp).
-// The View menu and the inspector's Render tab edit them.
+// overlay, the lights' markers, and the adaptive resolution (its settings and its state,
+// editor/adaptive_scale.hpp). The View menu and the inspector's Render tab edit them.
 #pragma once
 
 #include "display_pass.hpp"
@@ -11,6 +11,7 @@ namespace rmsc::app {
 struct ViewSettings {
     ViewMode mode = ViewMode::Color;
     bool showOverlay = true;
+    bool showLights = true; // the light gizmos (render/light_gizmo_pass.hpp)
     editor::AdaptiveScale adaptive;
 };
 

@@ -7,6 +7,18 @@
 
 namespace rmsc::app {
 
+ViewerCommand addLightCommand(LightType type) {
+    switch (type) {
+    case LightType::Point:
+        return ViewerCommand::AddPointLight;
+    case LightType::Spot:
+        return ViewerCommand::AddSpotLight;
+    case LightType::Directional:
+        break;
+    }
+    return ViewerCommand::AddDirectionalLight;
+}
+
 void Viewer::carryOut(ViewerCommands& commands) {
     editor::Document& document = session_.document;
     for (const ViewerCommand command : commands) {
@@ -44,6 +56,18 @@ void Viewer::carryOut(ViewerCommands& commands) {
         case ViewerCommand::AddMesh:
             dialogs_.askForPath(PathPurpose::AddMesh, "");
             break;
+        case ViewerCommand::AddDirectionalLight:
+        case ViewerCommand::AddPointLight:
+        case ViewerCommand::AddSpotLight: {
+            const LightType type = command == ViewerCommand::AddPointLight ? LightType::Point
+                                   : command == ViewerCommand::AddSpotLight
+                                       ? LightType::Spot
+                                       : LightType::Directional;
+            // Where the view looks: its focus point straight ahead.
+            const editor::FlyCamera& camera = session_.camera;
+            addLight(document, type, camera.position + camera.forward() * camera.focusDistance);
+            break;
+        }
         case ViewerCommand::Screenshot:
             screenshotToDefaultFile();
             break;

@@ -4,6 +4,8 @@
 // part runs (Viewer::carryOut, viewer_commands.cpp).
 #pragma once
 
+#include "scene/scene.hpp"
+
 #include <vector>
 
 namespace rmsc::app {
@@ -23,8 +25,15 @@ enum class ViewerCommand {
     FrameSelection, // the camera looks at the selection (or the whole SDF)
     SaveCamera,     // the view becomes the scene's camera
     ResetCamera,    // the view from the scene's camera
+    // A light of each type, at the point the view looks at (its focus straight ahead).
+    AddDirectionalLight,
+    AddPointLight,
+    AddSpotLight,
 };
 
 using ViewerCommands = std::vector<ViewerCommand>;
+
+// The command that adds a light of `type`.
+ViewerCommand addLightCommand(LightType type);
 
 } // namespace rmsc::app

@@ -1,6 +1,8 @@
-// Click to select, by a CPU ray cast through the clicked pixel (see viewport_pick.hpp).
+// Click to select: a light's marker near the click, else a CPU ray cast through the clicked
+// pixel (see viewport_pick.hpp).
 #include "viewport_pick.hpp"
 
+#include "editor/light_edits.hpp"
 #include "editor/picking.hpp"
 #include "editor/scene_edits.hpp"
 #include "render/frame.hpp"
@@ -32,6 +34,18 @@ editor::Selection pickAt(const PreparedScene& prepared, const Scene& scene, cons
     return hit ? editor::selectionForObjectId(scene, hit->objectId) : editor::Selection::none();
 }
 
+// The light whose marker is within a few pixels of window pixel `point`, or -1.
+int lightAt(const Scene& scene, const Camera& camera, const Rect& viewport, glm::vec2 point) {
+    const int w = std::max(1, int(viewport.width)), h = std::max(1, int(viewport.height));
+    const FrameCamera frame = makeFrameCamera(camera, w, h);
+    editor::GestureView view;
+    view.viewProjection = frame.viewProjection;
+    view.viewportSize = glm::vec2(float(w), float(h));
+    view.forward = frame.forward;
+    return editor::pickLight(scene, view, point - glm::vec2(viewport.x, viewport.y),
+                             kLightPickRadius);
+}
+
 } // namespace
 
 void handleViewportClick(const InputState& input, const Rect& viewport, bool gestureActive,
@@ -39,9 +53,12 @@ void handleViewportClick(const InputState& input, const Rect& viewport, bool ges
     const ImGuiIO& io = ImGui::GetIO();
     if (gestureActive || !input.clicked[0] || input.alt()) return;
     if (!viewport.contains(input.mouse) || io.WantCaptureMouse) return;
-    if (prepared)
-        session.document.selection = pickAt(*prepared, session.document.scene(),
-                                            session.viewCamera(), viewport, input.mouse);
+    const Scene& scene = session.document.scene();
+    if (const int light = lightAt(scene, session.viewCamera(), viewport, input.mouse); light >= 0)
+        session.document.selection = editor::Selection::light(light);
+    else if (prepared)
+        session.document.selection =
+            pickAt(*prepared, scene, session.viewCamera(), viewport, input.mouse);
 }
 
 } // namespace rmsc::app

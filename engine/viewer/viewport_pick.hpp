@@ -1,5 +1,6 @@
-// Selecting by clicking in the view: a ray from the eye through the clicked point, cast on the
-// CPU (editor/picking.hpp) at the newest scene that compiled; the nearest object it meets is
+// Selecting by clicking in the view: a light whose marker (render/light_gizmo_pass.hpp) is near
+// the click, else a ray from the eye through the clicked point, cast on the CPU
+// (editor/picking.hpp) at the newest scene that compiled; the nearest object it meets is
 // selected, empty space clears the selection.
 #pragma once
 
@@ -7,8 +8,12 @@
 #include "input_state.hpp"
 #include "panel_layout.hpp"
 #include "prepare/prepared_scene.hpp"
+#include "render/light_gizmo_pass.hpp"
 
 namespace rmsc::app {
+
+// How near (pixels) a click must be to a light's marker to select the light.
+constexpr float kLightPickRadius = 1.5f * kLightMarkerRadiusPixels;
 
 // A left click (without Alt, outside the panels, while no gesture runs) in `viewport` selects
 // what it hits in `prepared` (nothing happens while no scene has compiled).

@@ -7,6 +7,10 @@ from the viewer's log that once the ball is selected the view is drawn with the 
 for the ball, that none of the edits to the ball compiles a shader, and that a duplicate of the
 ball (a structural edit) is drawn in its own frame by the interpreter, built in the background,
 and then by the baked map of the new structure.
+A second run on a fresh copy of the scene makes things with the Add menu: a point light (moved
+with G), a spot and a directional light, then selects the point light by clicking its marker
+and moves it again, adds a revolution and a chamfer union group, and saves; the test checks
+the saved file and that the window shows the lights' markers.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -63,6 +67,90 @@ def differing_pixels(a, b, threshold=24):
             if max(abs(p - q) for p, q in zip(pa, pb)) > threshold:
                 out.append((x, y))
     return out
+
+
+def marker_pixels(shot, centre, radius=14):
+    """Pixels within `radius` of window pixel `centre` in a window shot in a marker's colours:
+    near white (a light of white light) or the selection's orange (neither is the view's grey
+    ground, its dark background or the red ball)."""
+    width, height, channels, rows = shot
+    count = 0
+    for y in range(max(0, centre[1] - radius), min(height, centre[1] + radius + 1)):
+        for x in range(max(0, centre[0] - radius), min(width, centre[0] + radius + 1)):
+            r, g, b = rows[y][x * channels:x * channels + 3]
+            if min(r, g, b) > 200 or (r > 220 and 110 < g < 190 and b < 100):
+                count += 1
+    return count
+
+
+def create_run(rmsc, source, tmp, xvfb_run, check):
+    """The second run (tests/e2e/viewer_create_script.txt): lights, a revolution, a group."""
+    folder = os.path.join(tmp, "create")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_create_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script", script,
+               "--size", "640x360", "--embedded-shaders"]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
+    print(run.stderr[-2000:])
+    check("second run: viewer exits 0", run.returncode == 0, run.returncode)
+    keep = os.environ.get("RMSC_E2E_KEEP")  # a folder to copy the run's files to, for a look
+    if keep:
+        shutil.copytree(folder, keep, dirs_exist_ok=True)
+
+    saved = json.load(open(scene))
+    lights = saved.get("lights", [])
+    check("one light of each type added after the scene's own",
+          [l.get("type") for l in lights] == ["directional", "point", "spot", "directional"],
+          [l.get("type") for l in lights])
+    if len(lights) == 4:
+        point, spot, sun = lights[1], lights[2], lights[3]
+        # Added at the view's focus, the ball's centre (0, 0, 0), then moved in the plane facing
+        # the camera: 60 pixels right and 40 up, then (selected again by a click on its marker)
+        # 40 more up. One pixel is 2 * 4 m * tan(20 degrees) / 341 pixels = 8.5 mm there.
+        pixel = 2 * math.hypot(0.3, 4) * math.tan(math.radians(20)) / 341
+        position = point.get("position", [0, 0, 0])
+        check("the point light moved right with G", abs(position[0] - 60 * pixel) < 0.1, position)
+        check("and up twice (the click on its marker selected it again)",
+              abs(position[1] - 80 * pixel) < 0.1, position)
+        check("and stayed in the plane facing the camera", abs(position[2]) < 0.1, position)
+        check("the point light is named after its type", point.get("name", "").startswith("point light"),
+              point)
+        check("the spot light stands at the view's focus and shines straight down",
+              all(abs(a) < 1e-3 for a in spot.get("position", [1, 1, 1])) and
+              spot.get("direction") == [0, -1, 0], spot)
+        check("the spot light has its cone", spot.get("outer_angle") == 45 and "inner_angle" in spot, spot)
+        check("the directional light has a direction and no position",
+              "direction" in sun and "position" not in sun, sun)
+    children = saved["sdf"]["children"]
+    shapes = [c.get("shape") for c in children]
+    revolution = next((c for c in children if c.get("shape") == "revolution"), None)
+    check("a revolution was added", revolution is not None, shapes)
+    if revolution:
+        check("of the catalogue's circle, set 1 out from the axis",
+              revolution.get("profile") == {"type": "circle", "radius": 0.5} and
+              revolution.get("offset") == 1, revolution)
+    group = next((c for c in children if c.get("op") == "chamfer_union"), None)
+    check("a chamfer union group was added, with its smoothness", group is not None and
+          group.get("smoothness", 0) > 0, children)
+
+    shots = {}
+    for name in ("lights", "moved-again", "made"):
+        path = os.path.join(folder, name + ".png")
+        check(f"second run: window shot {name} written", os.path.exists(path))
+        if os.path.exists(path):
+            shots[name] = read_png(path)
+    if "lights" in shots and "moved-again" in shots:
+        # The point light's marker where it was put, then where it went.
+        check("the moved point light's marker is drawn", marker_pixels(shots["lights"], (357, 150)) > 10,
+              marker_pixels(shots["lights"], (357, 150)))
+        check("and drawn where it went next", marker_pixels(shots["moved-again"], (357, 110)) > 10,
+              marker_pixels(shots["moved-again"], (357, 110)))
+        check("and no longer where it was", marker_pixels(shots["moved-again"], (357, 150), 6) == 0,
+              marker_pixels(shots["moved-again"], (357, 150), 6))
 
 
 def main():
@@ -150,6 +238,7 @@ def main():
                 check("the change reaches right of the centre (moved +X)", mean_x > width * 0.5, mean_x)
             check("redo gives the edited image again", len(differing_pixels(shots["after"], shots["redone"])) < 20)
             check("flying changed the view", len(differing_pixels(shots["before"], shots["undone"])) > 200)
+        create_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

@@ -49,7 +49,10 @@ std::optional<std::vector<int>> moveSdfNode(Scene& scene, const std::vector<int>
 
 // Meshes and lights.
 int addMesh(Scene& scene, const std::filesystem::path& file); // index of the new instance
-int addLight(Scene& scene);
+// Appends editor/light_edits.hpp's makeLight(type, position); returns its index, or -1 (nothing
+// added) when the scene already has limits::kLights lights.
+int addLight(Scene& scene, LightType type = LightType::Directional,
+             glm::vec3 position = Light{}.position);
 bool deleteMesh(Scene& scene, int index);
 bool deleteLight(Scene& scene, int index);
 int duplicateMesh(Scene& scene, int index);
@@ -75,14 +78,15 @@ struct IdRange {
 IdRange objectIdRange(const Scene& scene, const Selection& selection);
 
 // A sphere around the selected object in world space (rough: from the parameters' sizes and
-// the transform scales), for framing and orbiting.
+// the transform scales; a light's marker for lights), for framing and orbiting.
 struct Bounds {
     glm::vec3 center{0.0f};
     float radius = 1.0f;
 };
 std::optional<Bounds> selectionBounds(const Scene& scene, const Selection& selection);
 
-// A name for display: the node's name, or its shape / operation.
+// A name for display: the node's name, or its shape (a profile solid's "extrusion",
+// "revolution") / operation.
 std::string displayName(const SdfNode& node);
 
 } // namespace rmsc::editor
