@@ -216,6 +216,23 @@ with tempfile.TemporaryDirectory() as tmp:
                stderr_has=["many_lights.gltf", "16 (the limit)"])
     check("glTF with 17 lights: no image", not os.path.exists(os.path.join(tmp, "lights.png")))
 
+    # An output that is a symbolic link: the image goes to the file it points to, and the link
+    # stays a link (it was replaced by a regular file, and the target kept the old image).
+    links = os.path.join(tmp, "links")
+    os.makedirs(links)
+    real = write(links, "real.png", "previous image")
+    os.symlink("real.png", os.path.join(links, "link.png"))
+    expect("render -o link.png", ["render", "-o", os.path.join(links, "link.png"), "--size", "16x9"], 0)
+    check("render -o link.png: the link stays a link", os.path.islink(os.path.join(links, "link.png")))
+    with open(real, "rb") as f:
+        check("render -o link.png: the target gets the image",
+              f.read(8) == b"\x89PNG\r\n\x1a\n" and png_header(real)[:2] == (16, 9))
+    check("render -o link.png: nothing else", sorted(os.listdir(links)) == ["link.png", "real.png"],
+          str(sorted(os.listdir(links))))
+    os.symlink(os.path.join("gone", "x.png"), os.path.join(links, "dangling.png"))
+    expect("render -o dangling link into a missing folder", ["render", "-o", os.path.join(
+        links, "dangling.png"), "--size", "16x9"], 3, stderr_has=["dangling.png", "does not exist"])
+
     # No GL 4.5 context: a clear message and exit 3.
     expect("no GL context", ["render", "-o", os.path.join(tmp, "nogl.png"), "--size", "8x8"], 3,
            stderr_has=["no OpenGL", "EGL", "OSMesa"], env={"MESA_GL_VERSION_OVERRIDE": "3.3"})
