@@ -216,6 +216,39 @@ with tempfile.TemporaryDirectory() as tmp:
                stderr_has=["many_lights.gltf", "16 (the limit)"])
     check("glTF with 17 lights: no image", not os.path.exists(os.path.join(tmp, "lights.png")))
 
+    # glTF buffer and image URIs must stay inside the glTF file's folder once symbolic links are
+    # resolved (a link inside the folder reached any file, and validate said "ok"). A link that
+    # stays inside still works.
+    import shutil
+    outside = os.path.join(tmp, "outside")
+    os.makedirs(outside)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.bin"), outside)
+    escape = os.path.join(tmp, "escape")
+    os.makedirs(escape)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.gltf"), escape)
+    os.symlink(os.path.join(outside, "cube_external.bin"), os.path.join(escape, "cube_external.bin"))
+    escaping = os.path.join(escape, "cube_external.gltf")
+    for command in (["validate", escaping], ["render", escaping, "-o", os.path.join(tmp, "esc.png")]):
+        expect(f"buffer link out of the glTF folder ({command[0]})", command, 1,
+               stderr_has=[escaping, "/buffers/0/uri", "cube_external.bin", "outside " + os.path.realpath(escape),
+                           "must stay inside that folder"])
+    escape_scene = write(escape, "scene.json", scene(meshes=[{"file": "cube_external.gltf"}]))
+    expect("buffer link out of the glTF folder (scene)", ["validate", escape_scene], 1,
+           stderr_has=[escape_scene, "/meshes/0/file", "/buffers/0/uri", "outside " + os.path.realpath(escape)])
+    images = os.path.join(tmp, "linked_images")
+    os.makedirs(images)
+    shutil.copy(os.path.join(SAMPLES, "assets", "textured_cube.gltf"), images)
+    os.symlink(os.path.join(SAMPLES, "assets", "textures"), os.path.join(images, "textures"))
+    expect("image folder linked out of the glTF folder", ["validate", os.path.join(
+        images, "textured_cube.gltf")], 1, stderr_has=["/images/0/uri", "outside " + os.path.realpath(images)])
+    inside = os.path.join(tmp, "inside_link")
+    os.makedirs(os.path.join(inside, "data"))
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.gltf"), inside)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.bin"), os.path.join(inside, "data"))
+    os.symlink(os.path.join("data", "cube_external.bin"), os.path.join(inside, "cube_external.bin"))
+    expect("buffer link inside the glTF folder", ["validate", os.path.join(
+        inside, "cube_external.gltf")], 0, stdout_has=["cube_external.gltf: ok"])
+
     # An output that is a symbolic link: the image goes to the file it points to, and the link
     # stays a link (it was replaced by a regular file, and the target kept the old image).
     links = os.path.join(tmp, "links")
