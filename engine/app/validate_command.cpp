@@ -7,15 +7,21 @@
 #include <cstdio>
 
 namespace rmsc::app {
+namespace {
+
+const OptionSpec kOptions[] = {kSandboxOption};
+
+} // namespace
+
 const CommandSpec kValidateSpec = {
     "validate",
     "SCENE...",
     "load and check scenes, report every problem",
-    "rmsc validate SCENE...",
+    "rmsc validate SCENE... [--sandbox DIR]",
     "Loads each SCENE (.json scene or .gltf/.glb model), the glTF files it names, and compiles\n"
     "its SDF tree, without a GL context. Prints every problem as FILE: JSON-POINTER: MESSAGE\n"
     "and exits non-zero if any scene has an error (warnings alone exit 0).",
-    {},
+    kOptions,
     1 << 20};
 
 int runValidate(const ParsedArgs& args) {

@@ -249,6 +249,59 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("buffer link inside the glTF folder", ["validate", os.path.join(
         inside, "cube_external.gltf")], 0, stdout_has=["cube_external.gltf: ok"])
 
+    # --sandbox DIR: every file a scene reads (the scene, meshes, textures, sky, shell proxies,
+    # glTF buffers and images) must resolve inside DIR; the error names the file, the key that
+    # referenced it and the rule. Outputs are not confined.
+    box = os.path.join(tmp, "box")
+    os.makedirs(box)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube.gltf"), box)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube.gltf"), outside)
+    shutil.copy(os.path.join(SAMPLES, "assets", "textures", "tiles_color.png"), box)
+    shutil.copy(os.path.join(SAMPLES, "assets", "textures", "tiles_color.png"), outside)
+    good = write(box, "good.json", scene(
+        meshes=[{"file": "cube.gltf"}],
+        materials={"m": {"base_color_texture": "tiles_color.png"}},
+        environment={"sky": {"type": "image", "file": "tiles_color.png"}},
+        sdf={"shape": "sphere", "material": "m", "position": [2, 0, 0],
+             "shell": {"proxy": "mesh", "mesh": "cube.gltf"}}))
+    expect("sandbox: a scene inside validates", ["validate", "--sandbox", box, good], 0,
+           stdout_has=[good + ": ok"])
+    expect("sandbox: a scene inside renders", ["render", good, "--sandbox", box, "-o",
+                                               os.path.join(tmp, "sandboxed.png"), "--size", "32x18"], 0)
+    out_tex = os.path.join(outside, "tiles_color.png")
+    for label, sections, pointer, named in [
+            ("mesh", dict(meshes=[{"file": "../outside/cube.gltf"}]), "/meshes/0/file",
+             "../outside/cube.gltf"),
+            ("texture", dict(materials={"m": {"base_color_texture": out_tex}},
+                             sdf={"shape": "sphere", "material": "m"}),
+             "/materials/m/base_color_texture", out_tex),
+            ("sky", dict(environment={"sky": {"type": "image", "file": out_tex}}),
+             "/environment/sky/file", out_tex),
+            ("shell proxy", dict(sdf={"shape": "sphere", "shell": {
+                "proxy": "mesh", "mesh": "../outside/cube.gltf"}}), "/sdf/shell/mesh",
+             "../outside/cube.gltf")]:
+        bad = write(box, label.replace(" ", "_") + ".json", scene(**sections))
+        for command in (["validate", bad, "--sandbox", box],
+                        ["render", bad, "--sandbox", box, "-o", os.path.join(tmp, "box.png")]):
+            expect(f"sandbox: {label} outside ({command[0]})", command, 1,
+                   stderr_has=[bad, pointer, named, "outside " + os.path.realpath(box),
+                               "--sandbox folder"])
+        expect(f"sandbox: {label} outside is fine without --sandbox", ["validate", bad], 0)
+    os.symlink(os.path.join(outside, "cube.gltf"), os.path.join(box, "linked.gltf"))
+    linked = write(box, "linked.json", scene(meshes=[{"file": "linked.gltf"}]))
+    expect("sandbox: a link out of the sandbox", ["validate", "--sandbox", box, linked], 1,
+           stderr_has=[linked, "/meshes/0/file", "linked.gltf", os.path.realpath(outside)])
+    expect("sandbox: the scene itself outside", ["validate", "--sandbox", box, escape_scene], 1,
+           stderr_has=[escape_scene, "cannot read scene file", "--sandbox folder"])
+    expect("sandbox: bench", ["bench", linked, "--sandbox", box, "--size", "16x16", "--frames", "1",
+                              "--warmup", "0"], 1, stderr_has=["/meshes/0/file", "--sandbox folder"])
+    expect("sandbox: not a folder", ["validate", "--sandbox", good, good], 2,
+           stderr_has=["rmsc validate: --sandbox", good])
+    expect("sandbox: missing folder", ["render", "--sandbox", os.path.join(tmp, "nobox"), "-o",
+                                       os.path.join(tmp, "x.png")], 2, stderr_has=["--sandbox", "nobox"])
+    for command in ["render", "validate", "bench", "view"]:
+        expect(f"{command} --help lists --sandbox", [command, "--help"], 0, stdout_has=["--sandbox DIR"])
+
     # An output that is a symbolic link: the image goes to the file it points to, and the link
     # stays a link (it was replaced by a regular file, and the target kept the old image).
     links = os.path.join(tmp, "links")
