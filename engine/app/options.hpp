@@ -46,8 +46,7 @@ std::string formatHelp(const CommandSpec& spec);
 // --sandbox DIR, listed by every command that reads scenes (render, validate, bench, view).
 inline constexpr OptionSpec kSandboxOption = {
     "--sandbox", nullptr, "DIR",
-    "every file read for the scene (the scene, meshes, textures, sky, proxies, glTF buffers and "
-    "images) must resolve inside DIR; outputs are not confined"};
+    "every file read for the scene must resolve inside DIR (outputs are not confined)"};
 // Applies --sandbox, when given, to every disk read of the process (setDiskReadSandbox), before
 // the command reads anything. Prints the problem and returns false when DIR is not a folder.
 bool applySandboxOption(const CommandSpec& spec, const ParsedArgs& args);
