@@ -32,6 +32,7 @@ const OptionSpec kOptions[] = {
      "scene: shells through their proxies; fullscreen: all in the fullscreen pass; both "
      "(default when the scene has shells): each in turn"},
     {"--json", nullptr, nullptr, "print one JSON object instead of text"},
+    kSandboxOption,
 };
 
 } // namespace
@@ -41,7 +42,7 @@ const CommandSpec kBenchSpec = {
     "[SCENE]",
     "time frames of a scene (median, min, max per pass)",
     "rmsc bench [SCENE] [--size WxH] [--frames N] [--warmup N] [--sdf-strategy NAME|all] "
-    "[--shells scene|fullscreen|both] [--json]",
+    "[--shells scene|fullscreen|both] [--json] [--sandbox DIR]",
     "Renders SCENE (default: the built-in demo) repeatedly and reports, over the timed frames,\n"
     "the median, minimum and maximum of the wall time per frame (glFinish after each) and of\n"
     "each pass's GPU time (timer queries), the time to compile the scene's shaders and the\n"

@@ -47,6 +47,7 @@ int runSubcommand(const Subcommand& command, std::span<const std::string> args) 
         std::fputs(formatHelp(command.spec).c_str(), stdout);
         return kExitOk;
     }
+    if (!applySandboxOption(command.spec, *parsed)) return kExitUsage;
     return command.run(*parsed);
 }
 

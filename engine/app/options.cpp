@@ -1,9 +1,12 @@
 // Command-line parsing and help text.
 #include "options.hpp"
 
+#include "core/file_source.hpp"
 #include "core/limits.hpp"
 
 #include <charconv>
+#include <cstdio>
+#include <filesystem>
 
 namespace rmsc::app {
 
@@ -74,6 +77,21 @@ std::string formatHelp(const CommandSpec& spec) {
     }
     out += "  -h, --help                show this help\n";
     return out;
+}
+
+bool applySandboxOption(const CommandSpec& spec, const ParsedArgs& args) {
+    if (!args.has(kSandboxOption.name)) return true;
+    const std::string folder = args.get(kSandboxOption.name, "");
+    std::error_code ec;
+    const auto status = std::filesystem::status(folder, ec);
+    if (folder.empty() || !std::filesystem::is_directory(status)) {
+        std::fprintf(stderr, "rmsc %s: --sandbox: expected a folder, got '%s' (%s)\n", spec.name,
+                     folder.c_str(),
+                     std::filesystem::exists(status) ? "not a folder" : "not found");
+        return false;
+    }
+    setDiskReadSandbox(folder);
+    return true;
 }
 
 bool parsePositiveInt(const std::string& text, int max, int& value) {

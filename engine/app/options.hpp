@@ -43,6 +43,14 @@ std::optional<ParsedArgs> parseArgs(const CommandSpec& spec, std::span<const std
 
 std::string formatHelp(const CommandSpec& spec);
 
+// --sandbox DIR, listed by every command that reads scenes (render, validate, bench, view).
+inline constexpr OptionSpec kSandboxOption = {
+    "--sandbox", nullptr, "DIR",
+    "every file read for the scene must resolve inside DIR (outputs are not confined)"};
+// Applies --sandbox, when given, to every disk read of the process (setDiskReadSandbox), before
+// the command reads anything. Prints the problem and returns false when DIR is not a folder.
+bool applySandboxOption(const CommandSpec& spec, const ParsedArgs& args);
+
 // Parses "640x360"; sizes from 1 to limits::kImageSize per side.
 bool parseSize(const std::string& text, int& width, int& height);
 // What --size takes, for messages.

@@ -21,6 +21,7 @@ const OptionSpec kOptions[] = {
      "fullscreen pass"},
     {"--aov", nullptr, "NAME",
      "color | depth | normal | id | steps (default color); depth is linear view depth"},
+    kSandboxOption,
 };
 
 } // namespace
@@ -29,7 +30,7 @@ const CommandSpec kRenderSpec = {
     "render",
     "[SCENE] -o OUT.png",
     "render a scene (or a .gltf/.glb, or the built-in demo) to PNG",
-    "rmsc render [SCENE] -o OUT.png [--size WxH] [--backend B] [--aov A]",
+    "rmsc render [SCENE] -o OUT.png [--size WxH] [--backend B] [--aov A] [--sandbox DIR]",
     "Renders SCENE (a .json scene, or a .gltf/.glb model opened with a default light and a\n"
     "framing camera; without SCENE, the built-in demo) headless and writes one image.\n"
     "AOVs: depth = 16-bit grey PNG, round(65535*(z-near)/(far-near)), 65535 where nothing was\n"

@@ -12,6 +12,7 @@ namespace rmsc::app {
 namespace {
 
 const OptionSpec kOptions[] = {
+    kSandboxOption,
     {"--strict", nullptr, nullptr,
      "treat warnings (such as an unknown, misspelt key) as errors: a scene with any fails"},
 };
@@ -33,7 +34,7 @@ const CommandSpec kValidateSpec = {
     "validate",
     "SCENE...",
     "load and check scenes, report every problem",
-    "rmsc validate [--strict] SCENE...",
+    "rmsc validate [--strict] SCENE... [--sandbox DIR]",
     "Loads each SCENE (.json scene or .gltf/.glb model), the glTF files it names, and compiles\n"
     "its SDF tree, without a GL context. Prints every problem as FILE: JSON-POINTER: MESSAGE\n"
     "and exits non-zero if any scene has an error (warnings alone exit 0, or fail as errors\n"

@@ -17,6 +17,7 @@ const OptionSpec kOptions[] = {
      "replay input events from FILE instead of the keyboard and mouse (for tests)"},
     {"--embedded-shaders", nullptr, nullptr,
      "use the shaders built into the binary; do not watch the source shaders folder"},
+    kSandboxOption,
 };
 
 } // namespace
@@ -25,7 +26,7 @@ const CommandSpec kViewSpec = {
     "view",
     "[SCENE]",
     "open the viewer and scene editor in a window",
-    "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--script FILE]",
+    "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--script FILE] [--sandbox DIR]",
     "Opens SCENE (a .json scene, or a .gltf/.glb model; without SCENE, the built-in demo) in a\n"
     "window with an editor: fly with right mouse + W/A/S/D, Q/E roll, Space / Left Shift up and\n"
     "down, the wheel sets the speed, Shift is fast; Alt + drag orbits the selection, F frames it.\n"

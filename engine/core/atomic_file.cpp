@@ -1,11 +1,13 @@
 // Atomic file replacement (see atomic_file.hpp): temporary file, fsync, rename, then fsync of
 // the folder so the rename itself is durable (POSIX rename(2) is atomic within a file system).
+// A save through a symbolic link replaces the file the link leads to, not the link.
 #include "core/atomic_file.hpp"
 
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <fcntl.h>
+#include <optional>
 #include <system_error>
 #include <unistd.h>
 
@@ -97,7 +99,33 @@ bool writeAll(const std::filesystem::path& path, std::string_view text, std::str
     return true;
 }
 
+// Links followed before a save gives up (Linux's own limit for one path lookup).
+constexpr int kMaxLinkHops = 40;
+
 } // namespace
+
+std::optional<std::filesystem::path> saveTarget(const std::filesystem::path& path,
+                                                std::string& error) {
+    namespace fs = std::filesystem;
+    fs::path current = path;
+    for (int hop = 0; hop <= kMaxLinkHops; ++hop) {
+        std::error_code ec;
+        const fs::file_status status = fs::symlink_status(current, ec);
+        if (ec || !fs::is_symlink(status)) return current; // a file, a new name, or a folder
+        const fs::path next = fs::read_symlink(current, ec);
+        if (ec) {
+            error = "cannot save " + path.string() + ": cannot read the symbolic link " +
+                    current.string() + ": " + ec.message();
+            return std::nullopt;
+        }
+        // A relative link is relative to the folder holding it. Not normalized: ".." after a
+        // linked folder means what the system makes of it.
+        current = next.is_absolute() ? next : current.parent_path() / next;
+    }
+    error = "cannot save " + path.string() + ": more than " + std::to_string(kMaxLinkHops) +
+            " symbolic links in a row (a link loop?)";
+    return std::nullopt;
+}
 
 std::filesystem::path backupPath(const std::filesystem::path& path) {
     std::filesystem::path backup = path;
@@ -110,13 +138,22 @@ bool replaceFileAtomically(
     const std::function<bool(const std::filesystem::path& tmp)>& writeTemporary) {
     error.clear();
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
+    const std::optional<std::filesystem::path> resolved = saveTarget(path, error);
+    if (!resolved) return false;
+    const std::filesystem::path& target = *resolved;
+    if (std::filesystem::is_directory(target, ec)) {
         error = "cannot save " + path.string() + ": it is a folder";
         return false;
     }
-    removeStaleTemporaries(path);
+    if (target != path && target.has_parent_path() &&
+        !std::filesystem::is_directory(target.parent_path(), ec)) {
+        error = "cannot save " + path.string() + ": it is a symbolic link to " + target.string() +
+                ", whose folder does not exist";
+        return false;
+    }
+    removeStaleTemporaries(target);
     std::filesystem::path tmp;
-    if (!createTemporary(path, tmp, error)) return false;
+    if (!createTemporary(target, tmp, error)) return false;
     const auto fail = [&](std::string why) {
         std::error_code ignored;
         std::filesystem::remove(tmp, ignored);
@@ -129,33 +166,33 @@ bool replaceFileAtomically(
     if (!syncFile(tmp, why)) return fail(why);
     // mkstemp creates files readable by the owner only; give the saved file the permissions
     // an ordinary new file would get, or those of the file it replaces.
-    const auto existing = std::filesystem::status(path, ec);
+    const auto existing = std::filesystem::status(target, ec);
     const std::filesystem::perms perms =
         !ec && std::filesystem::exists(existing)
             ? existing.permissions()
             : std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
                   std::filesystem::perms::group_read | std::filesystem::perms::others_read;
     std::filesystem::permissions(tmp, perms, ec);
-    if (keepBackup && std::filesystem::exists(path, ec)) {
+    if (keepBackup && std::filesystem::exists(target, ec)) {
         // A hard link keeps the old file's bytes under the backup name without copying; a copy
         // is the fallback for file systems without links.
-        const std::filesystem::path backup = backupPath(path);
+        const std::filesystem::path backup = backupPath(target);
         std::filesystem::remove(backup, ec);
-        std::filesystem::create_hard_link(path, backup, ec);
+        std::filesystem::create_hard_link(target, backup, ec);
         if (ec) {
             ec.clear();
-            std::filesystem::copy_file(path, backup,
+            std::filesystem::copy_file(target, backup,
                                        std::filesystem::copy_options::overwrite_existing, ec);
         }
         if (ec)
             return fail("cannot keep the previous file as " + backup.string() + ": " +
                         ec.message());
     }
-    if (::rename(tmp.c_str(), path.c_str()) != 0) {
-        return fail("cannot replace " + path.string() + " with " + tmp.string() + ": " +
+    if (::rename(tmp.c_str(), target.c_str()) != 0) {
+        return fail("cannot replace " + target.string() + " with " + tmp.string() + ": " +
                     systemError(errno));
     }
-    syncFolder(path.parent_path());
+    syncFolder(target.parent_path());
     return true;
 }
 

@@ -1,4 +1,5 @@
-// FileSource implementations: the disk and the files embedded in the binary.
+// FileSource implementations: the disk and the files embedded in the binary, and confinement of
+// disk reads to folders (symbolic links resolved).
 #include "core/file_source.hpp"
 
 #include "core/embedded.hpp"
@@ -6,6 +7,7 @@
 #include <cerrno>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -32,12 +34,60 @@ std::string openError(int error) {
     }
 }
 
+// A folder reads must stay inside (resolved), and the rule that says so, for messages.
+struct Confinement {
+    std::filesystem::path folder;
+    const char* rule;
+};
+
+constexpr const char* kSandboxRule =
+    " (the --sandbox folder: every file a scene reads must be inside it)";
+constexpr const char* kFolderRule =
+    " (the folder of the file that names it: its URIs must stay inside that folder)";
+
+// `path` made absolute, with every symbolic link of its existing part resolved.
+std::optional<std::filesystem::path> resolvedPath(const std::filesystem::path& path,
+                                                  std::string& why) {
+    std::error_code ec;
+    std::filesystem::path out = std::filesystem::absolute(path.empty() ? "." : path, ec);
+    if (!ec) out = std::filesystem::weakly_canonical(out, ec);
+    if (ec) {
+        why = openError(ec.value());
+        return std::nullopt;
+    }
+    return out;
+}
+
+// Whether the absolute, resolved `target` is `folder` or below it (compared by components).
+bool isInside(const std::filesystem::path& folder, const std::filesystem::path& target) {
+    auto at = target.begin();
+    for (const std::filesystem::path& part : folder) {
+        if (part.empty()) continue; // a trailing separator
+        if (at == target.end() || *at != part) return false;
+        ++at;
+    }
+    return true;
+}
+
+// The file an open descriptor refers to, where the system says (/proc on Linux).
+std::optional<std::filesystem::path> openedFile(int fd) {
+    std::error_code ec;
+    std::filesystem::path path =
+        std::filesystem::read_symlink("/proc/self/fd/" + std::to_string(fd), ec);
+    if (ec || !path.is_absolute()) return std::nullopt;
+    return path;
+}
+
 // Reads all of a regular file of at most maxBytes. The file is opened without blocking (a FIFO
 // would otherwise block the open forever) and checked on the open descriptor, so what is read
 // is what was checked: devices, FIFOs and sockets are refused before a byte is read, and a file
-// that grows while being read is refused at maxBytes.
+// that grows while being read is refused at maxBytes. The opened file must lie inside every
+// folder of `confinements` (checked where the system tells which file was opened: a link
+// changed between the caller's check and the open is caught here).
 std::optional<std::string> readRegularFile(const std::filesystem::path& path,
-                                           std::uintmax_t maxBytes, std::string& error) {
+                                           std::uintmax_t maxBytes,
+                                           const std::vector<Confinement>& confinements,
+                                           std::string& error) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0) {
         error = openError(errno);
@@ -59,6 +109,17 @@ std::optional<std::string> readRegularFile(const std::filesystem::path& path,
     if (!S_ISREG(info.st_mode)) {
         error = "is not a regular file (a device, FIFO or socket), expected a file";
         return std::nullopt;
+    }
+    if (!confinements.empty()) {
+        if (const std::optional<std::filesystem::path> opened = openedFile(fd)) {
+            for (const Confinement& c : confinements) {
+                if (!isInside(c.folder, *opened)) {
+                    error = "resolves to " + opened->string() + ", outside " + c.folder.string() +
+                            c.rule;
+                    return std::nullopt;
+                }
+            }
+        }
     }
     if (std::uintmax_t(info.st_size) > maxBytes) {
         error = "file is " + std::to_string(info.st_size) + " bytes, more than the limit of " +
@@ -91,13 +152,84 @@ std::optional<std::string> readRegularFile(const std::filesystem::path& path,
     return bytes;
 }
 
+// Reads `path` if it resolves inside every folder of `confinements`, checked before opening
+// it (so nothing outside is even opened) and on the opened file.
+std::optional<std::string> readConfined(const std::filesystem::path& path, std::uintmax_t maxBytes,
+                                        const std::vector<Confinement>& confinements,
+                                        std::string& error) {
+    if (confinements.empty()) return readRegularFile(path, maxBytes, confinements, error);
+    const std::optional<std::filesystem::path> target = resolvedPath(path, error);
+    if (!target) return std::nullopt;
+    for (const Confinement& c : confinements) {
+        if (!isInside(c.folder, *target)) {
+            error = "resolves to " + target->string() + ", outside " + c.folder.string() + c.rule;
+            return std::nullopt;
+        }
+    }
+    return readRegularFile(*target, maxBytes, confinements, error);
+}
+
+std::filesystem::path& sandboxFolder() {
+    static std::filesystem::path folder;
+    return folder;
+}
+
 } // namespace
 
-FileSource diskFileSource(std::uintmax_t maxBytes) {
-    return {[maxBytes](const std::filesystem::path& path,
-                       std::string& error) -> std::optional<std::string> {
-        return readRegularFile(path, maxBytes, error);
-    }};
+void setDiskReadSandbox(const std::filesystem::path& folder) {
+    std::error_code ec;
+    std::filesystem::path resolved;
+    if (!folder.empty()) resolved = std::filesystem::canonical(folder, ec);
+    if (ec) resolved = std::filesystem::absolute(folder, ec).lexically_normal();
+    sandboxFolder() = resolved;
+}
+
+const std::filesystem::path& diskReadSandbox() {
+    return sandboxFolder();
+}
+
+std::optional<std::string> readInsideFolder(const FileSource& source,
+                                            const std::filesystem::path& folder,
+                                            const std::filesystem::path& relative,
+                                            std::string& error) {
+    if (source.readInside) return source.readInside(folder, relative, error);
+    return source.read(folder / relative, error);
+}
+
+std::optional<std::filesystem::path> resolveInside(const std::filesystem::path& folder,
+                                                   const std::filesystem::path& path,
+                                                   std::string& why) {
+    const std::optional<std::filesystem::path> base = resolvedPath(folder, why);
+    if (!base) return std::nullopt;
+    std::optional<std::filesystem::path> target = resolvedPath(path, why);
+    if (target && !isInside(*base, *target)) {
+        why = "resolves to " + target->string() + ", outside " + base->string();
+        return std::nullopt;
+    }
+    return target;
+}
+
+FileSource diskFileSource(std::uintmax_t maxBytes, const std::filesystem::path& sandbox) {
+    std::vector<Confinement> confinements;
+    if (!sandbox.empty()) {
+        std::string ignored;
+        confinements.push_back({resolvedPath(sandbox, ignored).value_or(sandbox), kSandboxRule});
+    }
+    FileSource source;
+    source.read = [maxBytes, confinements](const std::filesystem::path& path,
+                                           std::string& error) -> std::optional<std::string> {
+        return readConfined(path, maxBytes, confinements, error);
+    };
+    source.readInside = [maxBytes, confinements](const std::filesystem::path& folder,
+                                                 const std::filesystem::path& relative,
+                                                 std::string& error) -> std::optional<std::string> {
+        const std::optional<std::filesystem::path> resolved = resolvedPath(folder, error);
+        if (!resolved) return std::nullopt;
+        std::vector<Confinement> inside = confinements;
+        inside.insert(inside.begin(), {*resolved, kFolderRule});
+        return readConfined(*resolved / relative, maxBytes, inside, error);
+    };
+    return source;
 }
 
 FileSource embeddedFileSource() {

@@ -5,6 +5,7 @@
 #include "editor/scene_check.hpp"
 #include "editor/scene_edits.hpp"
 #include "scene/scene_json.hpp"
+#include "scene/scene_paths.hpp"
 
 #include <limits>
 
@@ -108,15 +109,8 @@ bool Document::saveAs(const std::filesystem::path& path, std::string& error) {
     commit();
     namespace fs = std::filesystem;
     Scene toWrite = scene_;
-    // Mesh paths are written relative to the scene file's folder.
-    const fs::path folder = fs::absolute(path).parent_path();
-    for (MeshInstance& mesh : toWrite.meshes) {
-        std::error_code ec;
-        if (!mesh.path.empty() && fs::exists(mesh.path, ec)) {
-            const fs::path relative = fs::proximate(fs::absolute(mesh.path), folder, ec);
-            if (!ec) mesh.file = relative.generic_string();
-        }
-    }
+    // Every path (meshes, textures, sky, proxies) is written relative to the new file's folder.
+    rebaseScenePaths(toWrite, fs::absolute(path).parent_path());
     toWrite.file = path;
     const std::string text = sceneToJson(toWrite);
     Diagnostics problems;
@@ -126,9 +120,7 @@ bool Document::saveAs(const std::filesystem::path& path, std::string& error) {
         return false;
     }
     if (!saveTextFileAtomically(path, text, true, error)) return false;
-    scene_.file = path;
-    for (std::size_t i = 0; i < scene_.meshes.size(); ++i)
-        scene_.meshes[i].file = toWrite.meshes[i].file;
+    scene_ = std::move(toWrite);
     committed_ = scene_;
     file_ = path;
     savedPosition_ = position_;

@@ -141,9 +141,10 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
         Diagnostics meshDiagnostics;
         std::optional<MeshAsset> asset = loadGltf(instance.path, files, meshDiagnostics);
         for (Diagnostic& d : meshDiagnostics.items) {
-            // "scene.json: /meshes/0: model.gltf: /accessors/2: ..." names both places.
+            // "scene.json: /meshes/0/file ("model.gltf"): model.gltf: /accessors/2: ..." names
+            // both places.
             diagnostics.items.push_back({d.severity, sceneFile,
-                                         instance.pointer + " (\"" + instance.file + "\")",
+                                         instance.pointer + "/file (\"" + instance.file + "\")",
                                          d.format()});
         }
         if (!asset) {

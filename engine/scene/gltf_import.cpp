@@ -68,7 +68,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
     std::string why;
     const auto relative = confinedPath(path, why);
     if (relative) {
-        const auto bytes = context.files->read(context.folder / *relative, why);
+        const auto bytes = readInsideFolder(*context.files, context.folder, *relative, why);
         if (bytes) {
             out->assign(bytes->begin(), bytes->end());
             return true;
@@ -162,7 +162,7 @@ bool loadExternalImages(tinygltf::Model& model, LoadContext& context) {
             decoded ? gltf::resolveInFolder(*decoded, why) : std::optional<std::filesystem::path>();
         if (!decoded) why = "malformed percent escape in URI";
         std::optional<std::string> bytes;
-        if (relative) bytes = context.files->read(context.folder / *relative, why);
+        if (relative) bytes = readInsideFolder(*context.files, context.folder, *relative, why);
         Image rgba;
         if (!bytes) {
             context.report->error(pointer, "cannot read image \"" + image.uri + "\": " + why);

@@ -71,6 +71,16 @@ const std::vector<std::string>& materialTextureKeys() {
     return keys;
 }
 
+const std::vector<MaterialTexture Material::*>& materialTextureMembers() {
+    static const std::vector<MaterialTexture Material::*> members = [] {
+        std::vector<MaterialTexture Material::*> out;
+        for (const TextureField& field : kTextureFields)
+            out.push_back(field.member);
+        return out;
+    }();
+    return members;
+}
+
 void readMaterialTextures(const JsonReader& reader, const Json& object, const std::string& pointer,
                           const std::filesystem::path& sceneFolder, Material& material) {
     for (const TextureField& field : kTextureFields) {

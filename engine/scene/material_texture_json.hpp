@@ -15,6 +15,9 @@ namespace rmsc {
 // The material keys this file reads, for the unknown-key check of the material object.
 const std::vector<std::string>& materialTextureKeys();
 
+// The texture members of a Material, in the order of materialTextureKeys().
+const std::vector<MaterialTexture Material::*>& materialTextureMembers();
+
 // Reads every texture field of the material object at `pointer`; relative files are resolved
 // against `sceneFolder`. Problems are reported with their JSON pointers.
 void readMaterialTextures(const JsonReader& reader, const Json& object, const std::string& pointer,

@@ -20,7 +20,8 @@ std::optional<SkyImage> loadSkyImage(const std::filesystem::path& path, const Fi
         why = e.what();
     }
     if (!bytes) {
-        diagnostics.error(sceneFile, pointer, "cannot read the sky image: " + why);
+        diagnostics.error(sceneFile, pointer,
+                          "cannot read the sky image \"" + path.string() + "\": " + why);
         return std::nullopt;
     }
     if (bytes->empty() || bytes->size() > std::size_t(std::numeric_limits<int>::max())) {

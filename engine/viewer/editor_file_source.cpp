@@ -3,6 +3,7 @@
 
 #include <map>
 #include <memory>
+#include <utility>
 
 namespace rmsc::app {
 
@@ -22,6 +23,26 @@ FileSource editorFileSource() {
             error.clear();
         }
         cache->emplace(path, *bytes);
+        return bytes;
+    };
+    // glTF buffers and images: held to their folder by the disk source (links resolved), so
+    // they are cached apart from plain reads, which are not.
+    auto insideCache = std::make_shared<
+        std::map<std::pair<std::filesystem::path, std::filesystem::path>, std::string>>();
+    source.readInside = [insideCache, disk,
+                         embedded](const std::filesystem::path& folder,
+                                   const std::filesystem::path& relative,
+                                   std::string& error) -> std::optional<std::string> {
+        const auto key = std::make_pair(folder, relative);
+        if (auto it = insideCache->find(key); it != insideCache->end()) return it->second;
+        std::optional<std::string> bytes = readInsideFolder(*disk, folder, relative, error);
+        if (!bytes) {
+            std::string embeddedError;
+            bytes = readInsideFolder(*embedded, folder, relative, embeddedError);
+            if (!bytes) return std::nullopt;
+            error.clear();
+        }
+        insideCache->emplace(key, *bytes);
         return bytes;
     };
     return source;

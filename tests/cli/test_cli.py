@@ -246,6 +246,109 @@ with tempfile.TemporaryDirectory() as tmp:
                stderr_has=["many_lights.gltf", "16 (the limit)"])
     check("glTF with 17 lights: no image", not os.path.exists(os.path.join(tmp, "lights.png")))
 
+    # glTF buffer and image URIs must stay inside the glTF file's folder once symbolic links are
+    # resolved (a link inside the folder reached any file, and validate said "ok"). A link that
+    # stays inside still works.
+    import shutil
+    outside = os.path.join(tmp, "outside")
+    os.makedirs(outside)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.bin"), outside)
+    escape = os.path.join(tmp, "escape")
+    os.makedirs(escape)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.gltf"), escape)
+    os.symlink(os.path.join(outside, "cube_external.bin"), os.path.join(escape, "cube_external.bin"))
+    escaping = os.path.join(escape, "cube_external.gltf")
+    for command in (["validate", escaping], ["render", escaping, "-o", os.path.join(tmp, "esc.png")]):
+        expect(f"buffer link out of the glTF folder ({command[0]})", command, 1,
+               stderr_has=[escaping, "/buffers/0/uri", "cube_external.bin", "outside " + os.path.realpath(escape),
+                           "must stay inside that folder"])
+    escape_scene = write(escape, "scene.json", scene(meshes=[{"file": "cube_external.gltf"}]))
+    expect("buffer link out of the glTF folder (scene)", ["validate", escape_scene], 1,
+           stderr_has=[escape_scene, "/meshes/0/file", "/buffers/0/uri", "outside " + os.path.realpath(escape)])
+    images = os.path.join(tmp, "linked_images")
+    os.makedirs(images)
+    shutil.copy(os.path.join(SAMPLES, "assets", "textured_cube.gltf"), images)
+    os.symlink(os.path.join(SAMPLES, "assets", "textures"), os.path.join(images, "textures"))
+    expect("image folder linked out of the glTF folder", ["validate", os.path.join(
+        images, "textured_cube.gltf")], 1, stderr_has=["/images/0/uri", "outside " + os.path.realpath(images)])
+    inside = os.path.join(tmp, "inside_link")
+    os.makedirs(os.path.join(inside, "data"))
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.gltf"), inside)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube_external.bin"), os.path.join(inside, "data"))
+    os.symlink(os.path.join("data", "cube_external.bin"), os.path.join(inside, "cube_external.bin"))
+    expect("buffer link inside the glTF folder", ["validate", os.path.join(
+        inside, "cube_external.gltf")], 0, stdout_has=["cube_external.gltf: ok"])
+
+    # --sandbox DIR: every file a scene reads (the scene, meshes, textures, sky, shell proxies,
+    # glTF buffers and images) must resolve inside DIR; the error names the file, the key that
+    # referenced it and the rule. Outputs are not confined.
+    box = os.path.join(tmp, "box")
+    os.makedirs(box)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube.gltf"), box)
+    shutil.copy(os.path.join(SAMPLES, "assets", "cube.gltf"), outside)
+    shutil.copy(os.path.join(SAMPLES, "assets", "textures", "tiles_color.png"), box)
+    shutil.copy(os.path.join(SAMPLES, "assets", "textures", "tiles_color.png"), outside)
+    good = write(box, "good.json", scene(
+        meshes=[{"file": "cube.gltf"}],
+        materials={"m": {"base_color_texture": "tiles_color.png"}},
+        environment={"sky": {"type": "image", "file": "tiles_color.png"}},
+        sdf={"shape": "sphere", "material": "m", "position": [2, 0, 0],
+             "shell": {"proxy": "mesh", "mesh": "cube.gltf"}}))
+    expect("sandbox: a scene inside validates", ["validate", "--sandbox", box, good], 0,
+           stdout_has=[good + ": ok"])
+    expect("sandbox: a scene inside renders", ["render", good, "--sandbox", box, "-o",
+                                               os.path.join(tmp, "sandboxed.png"), "--size", "32x18"], 0)
+    out_tex = os.path.join(outside, "tiles_color.png")
+    for label, sections, pointer, named in [
+            ("mesh", dict(meshes=[{"file": "../outside/cube.gltf"}]), "/meshes/0/file",
+             "../outside/cube.gltf"),
+            ("texture", dict(materials={"m": {"base_color_texture": out_tex}},
+                             sdf={"shape": "sphere", "material": "m"}),
+             "/materials/m/base_color_texture", out_tex),
+            ("sky", dict(environment={"sky": {"type": "image", "file": out_tex}}),
+             "/environment/sky/file", out_tex),
+            ("shell proxy", dict(sdf={"shape": "sphere", "shell": {
+                "proxy": "mesh", "mesh": "../outside/cube.gltf"}}), "/sdf/shell/mesh",
+             "../outside/cube.gltf")]:
+        bad = write(box, label.replace(" ", "_") + ".json", scene(**sections))
+        for command in (["validate", bad, "--sandbox", box],
+                        ["render", bad, "--sandbox", box, "-o", os.path.join(tmp, "box.png")]):
+            expect(f"sandbox: {label} outside ({command[0]})", command, 1,
+                   stderr_has=[bad, pointer, named, "outside " + os.path.realpath(box),
+                               "--sandbox folder"])
+        expect(f"sandbox: {label} outside is fine without --sandbox", ["validate", bad], 0)
+    os.symlink(os.path.join(outside, "cube.gltf"), os.path.join(box, "linked.gltf"))
+    linked = write(box, "linked.json", scene(meshes=[{"file": "linked.gltf"}]))
+    expect("sandbox: a link out of the sandbox", ["validate", "--sandbox", box, linked], 1,
+           stderr_has=[linked, "/meshes/0/file", "linked.gltf", os.path.realpath(outside)])
+    expect("sandbox: the scene itself outside", ["validate", "--sandbox", box, escape_scene], 1,
+           stderr_has=[escape_scene, "cannot read scene file", "--sandbox folder"])
+    expect("sandbox: bench", ["bench", linked, "--sandbox", box, "--size", "16x16", "--frames", "1",
+                              "--warmup", "0"], 1, stderr_has=["/meshes/0/file", "--sandbox folder"])
+    expect("sandbox: not a folder", ["validate", "--sandbox", good, good], 2,
+           stderr_has=["rmsc validate: --sandbox", good])
+    expect("sandbox: missing folder", ["render", "--sandbox", os.path.join(tmp, "nobox"), "-o",
+                                       os.path.join(tmp, "x.png")], 2, stderr_has=["--sandbox", "nobox"])
+    for command in ["render", "validate", "bench", "view"]:
+        expect(f"{command} --help lists --sandbox", [command, "--help"], 0, stdout_has=["--sandbox DIR"])
+
+    # An output that is a symbolic link: the image goes to the file it points to, and the link
+    # stays a link (it was replaced by a regular file, and the target kept the old image).
+    links = os.path.join(tmp, "links")
+    os.makedirs(links)
+    real = write(links, "real.png", "previous image")
+    os.symlink("real.png", os.path.join(links, "link.png"))
+    expect("render -o link.png", ["render", "-o", os.path.join(links, "link.png"), "--size", "16x9"], 0)
+    check("render -o link.png: the link stays a link", os.path.islink(os.path.join(links, "link.png")))
+    with open(real, "rb") as f:
+        check("render -o link.png: the target gets the image",
+              f.read(8) == b"\x89PNG\r\n\x1a\n" and png_header(real)[:2] == (16, 9))
+    check("render -o link.png: nothing else", sorted(os.listdir(links)) == ["link.png", "real.png"],
+          str(sorted(os.listdir(links))))
+    os.symlink(os.path.join("gone", "x.png"), os.path.join(links, "dangling.png"))
+    expect("render -o dangling link into a missing folder", ["render", "-o", os.path.join(
+        links, "dangling.png"), "--size", "16x9"], 3, stderr_has=["dangling.png", "does not exist"])
+
     # No GL 4.5 context: a clear message and exit 3.
     expect("no GL context", ["render", "-o", os.path.join(tmp, "nogl.png"), "--size", "8x8"], 3,
            stderr_has=["no OpenGL", "EGL", "OSMesa"], env={"MESA_GL_VERSION_OVERRIDE": "3.3"})

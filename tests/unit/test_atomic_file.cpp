@@ -142,3 +142,66 @@ TEST_F(AtomicFile, StaleTemporariesOfEarlierSavesAreRemoved) {
     EXPECT_TRUE(fs::exists(similar));
     EXPECT_EQ(read(path), "new");
 }
+
+// Saving to a symbolic link writes the file it points to, as editors do: the link stays a link
+// to the same file, which gets the new content, and the backup is a real file beside it.
+TEST_F(AtomicFile, SaveThroughALinkReplacesItsTargetAndKeepsTheLink) {
+    write(folder_ / "real.json", "old");
+    fs::create_symlink("real.json", folder_ / "scene.json");
+    std::string error;
+    ASSERT_TRUE(saveTextFileAtomically(folder_ / "scene.json", "new", true, error)) << error;
+    ASSERT_TRUE(fs::is_symlink(fs::symlink_status(folder_ / "scene.json")));
+    EXPECT_EQ(fs::read_symlink(folder_ / "scene.json"), fs::path("real.json"));
+    EXPECT_EQ(read(folder_ / "real.json"), "new");
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(folder_ / "real.json.bak")));
+    EXPECT_EQ(read(folder_ / "real.json.bak"), "old");
+    EXPECT_EQ(names(), (std::vector<std::string>{"real.json", "real.json.bak", "scene.json"}));
+}
+
+// A chain of relative links across folders: each resolves against its own folder, and the
+// temporary file is made next to the final target (so the rename stays in one folder).
+TEST_F(AtomicFile, ChainOfLinksIsFollowedToTheEnd) {
+    fs::create_directories(folder_ / "a");
+    fs::create_directories(folder_ / "b");
+    write(folder_ / "b" / "image.png", "old image");
+    fs::create_symlink("image.png", folder_ / "b" / "latest.png");
+    fs::create_symlink("../b/latest.png", folder_ / "a" / "out.png");
+    std::string error;
+    fs::path temporary;
+    ASSERT_TRUE(replaceFileAtomically(folder_ / "a" / "out.png", false, error,
+                                      [&](const fs::path& tmp) {
+                                          temporary = tmp;
+                                          std::ofstream(tmp, std::ios::binary) << "new image";
+                                          return true;
+                                      }))
+        << error;
+    EXPECT_EQ(fs::canonical(temporary.parent_path()), fs::canonical(folder_ / "b"));
+    EXPECT_EQ(read(folder_ / "b" / "image.png"), "new image");
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder_ / "a" / "out.png")));
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder_ / "b" / "latest.png")));
+    EXPECT_EQ(fs::directory_iterator(folder_ / "a")->path().filename(), "out.png");
+}
+
+// A dangling link whose target's folder exists creates the target; one whose folder is missing
+// is refused and left alone; a loop of links is refused.
+TEST_F(AtomicFile, DanglingLinksAndLinkLoops) {
+    fs::create_symlink("made.json", folder_ / "dangling.json");
+    std::string error;
+    ASSERT_TRUE(saveTextFileAtomically(folder_ / "dangling.json", "new", true, error)) << error;
+    EXPECT_EQ(read(folder_ / "made.json"), "new");
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder_ / "dangling.json")));
+
+    fs::create_symlink("gone/x.json", folder_ / "nowhere.json");
+    EXPECT_FALSE(saveTextFileAtomically(folder_ / "nowhere.json", "new", true, error));
+    EXPECT_NE(error.find("nowhere.json"), std::string::npos) << error;
+    EXPECT_NE(error.find("whose folder does not exist"), std::string::npos) << error;
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder_ / "nowhere.json")));
+
+    fs::create_symlink("loop_b", folder_ / "loop_a");
+    fs::create_symlink("loop_a", folder_ / "loop_b");
+    EXPECT_FALSE(saveTextFileAtomically(folder_ / "loop_a", "new", true, error));
+    EXPECT_NE(error.find("a link loop?"), std::string::npos) << error;
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder_ / "loop_a")));
+    EXPECT_EQ(names(), (std::vector<std::string>{"dangling.json", "loop_a", "loop_b", "made.json",
+                                                 "nowhere.json"}));
+}

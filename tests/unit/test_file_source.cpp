@@ -63,3 +63,87 @@ TEST_F(FileSourceTest, RefusesFilesOverTheLimit) {
     std::string error;
     EXPECT_TRUE(diskFileSource(2000).read(folder_ / "big.bin", error)) << error;
 }
+
+// resolveInside follows every symbolic link, the folder's too, before comparing: a link inside
+// the folder that leads out of it is outside; one that stays inside, ".." that comes back and a
+// missing file inside are inside.
+TEST_F(FileSourceTest, ResolveInsideFollowsLinksBeforeComparing) {
+    const fs::path a = folder_ / "a";
+    fs::create_directories(a / "data");
+    fs::create_directories(folder_ / "outside");
+    std::ofstream(a / "data" / "x.bin") << "x";
+    std::ofstream(folder_ / "outside" / "secret") << "s";
+    fs::create_symlink("data/x.bin", a / "in.bin");
+    fs::create_symlink(folder_ / "outside" / "secret", a / "out.bin");
+    fs::create_symlink("../outside", a / "linked");
+    fs::create_symlink(a, folder_ / "a_link");
+    const fs::path real = fs::canonical(folder_);
+    std::string why;
+    EXPECT_EQ(resolveInside(a, a / "in.bin", why), real / "a" / "data" / "x.bin") << why;
+    EXPECT_EQ(resolveInside(a, a / "data" / ".." / "in.bin", why), real / "a" / "data" / "x.bin");
+    EXPECT_EQ(resolveInside(a, a / "missing" / "y.bin", why), real / "a" / "missing" / "y.bin");
+    // The folder itself reached through a link: what counts is where it really is.
+    EXPECT_EQ(resolveInside(folder_ / "a_link", a / "in.bin", why), real / "a" / "data" / "x.bin");
+
+    EXPECT_FALSE(resolveInside(a, a / "out.bin", why));
+    EXPECT_EQ(why, "resolves to " + (real / "outside" / "secret").string() + ", outside " +
+                       (real / "a").string());
+    EXPECT_FALSE(resolveInside(a, a / "linked" / "secret", why));
+    EXPECT_NE(why.find("outside " + (real / "a").string()), std::string::npos) << why;
+    EXPECT_FALSE(resolveInside(a, a / ".." / "outside" / "secret", why));
+    // A sibling whose name starts like the folder's is not inside it.
+    fs::create_directories(folder_ / "ab");
+    std::ofstream(folder_ / "ab" / "z") << "z";
+    EXPECT_FALSE(resolveInside(a, folder_ / "ab" / "z", why));
+}
+
+// The disk source holds readInside to the folder and, with a sandbox, every read to the
+// sandbox; the refusal says which rule. Links that stay inside still read.
+TEST_F(FileSourceTest, DiskReadsStayInsideTheirFolderAndTheSandbox) {
+    const fs::path box = folder_ / "box";
+    fs::create_directories(box / "model");
+    fs::create_directories(folder_ / "outside");
+    std::ofstream(box / "model" / "buffer.bin") << "inside";
+    std::ofstream(box / "scene.json") << "scene";
+    std::ofstream(folder_ / "outside" / "secret") << "secret";
+    fs::create_symlink(folder_ / "outside" / "secret", box / "model" / "escape.bin");
+    fs::create_symlink("buffer.bin", box / "model" / "alias.bin");
+    fs::create_symlink(box / "scene.json", box / "model" / "up.bin");
+    const std::string outside = (fs::canonical(folder_) / "outside" / "secret").string();
+
+    std::string error;
+    const FileSource free = diskFileSource();
+    EXPECT_EQ(free.read(box / "model" / "escape.bin", error), "secret"); // scene-level: anywhere
+    EXPECT_EQ(readInsideFolder(free, box / "model", "alias.bin", error), "inside") << error;
+    EXPECT_FALSE(readInsideFolder(free, box / "model", "escape.bin", error));
+    EXPECT_NE(error.find("resolves to " + outside + ", outside "), std::string::npos) << error;
+    EXPECT_NE(error.find("its URIs must stay inside that folder"), std::string::npos) << error;
+    EXPECT_FALSE(
+        readInsideFolder(free, box / "model", "up.bin", error)); // in the box, not the folder
+
+    const FileSource boxed = diskFileSource(1 << 20, box);
+    EXPECT_EQ(boxed.read(box / "scene.json", error), "scene") << error;
+    EXPECT_EQ(boxed.read(box / "model" / "up.bin", error), "scene") << error;
+    EXPECT_FALSE(boxed.read(box / "model" / "escape.bin", error));
+    EXPECT_NE(error.find("resolves to " + outside + ", outside " + fs::canonical(box).string()),
+              std::string::npos)
+        << error;
+    EXPECT_NE(error.find("the --sandbox folder"), std::string::npos) << error;
+    EXPECT_FALSE(boxed.read(box / ".." / "outside" / "secret", error));
+    EXPECT_NE(error.find("the --sandbox folder"), std::string::npos) << error;
+    EXPECT_EQ(readInsideFolder(boxed, box / "model", "alias.bin", error), "inside") << error;
+    // A missing file inside the sandbox is simply missing.
+    EXPECT_FALSE(boxed.read(box / "missing.json", error));
+    EXPECT_EQ(error, "file not found");
+}
+
+// Sources without links (in memory, embedded) read folder / relative: the lexical rule of
+// gltf::resolveInFolder is all they need.
+TEST(FileSourceInside, SourcesWithoutLinksReadTheJoinedPath) {
+    FileSource memory;
+    memory.read = [](const fs::path& path, std::string&) -> std::optional<std::string> {
+        return path.generic_string();
+    };
+    std::string error;
+    EXPECT_EQ(readInsideFolder(memory, "assets", "data/a.bin", error), "assets/data/a.bin");
+}
