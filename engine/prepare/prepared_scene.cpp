@@ -69,9 +69,10 @@ std::optional<PreparedShell> prepareShell(SdfShellProgram compiled, const FileSo
         Diagnostics meshDiagnostics;
         std::optional<MeshAsset> asset = loadGltf(settings.meshPath, files, meshDiagnostics);
         for (Diagnostic& d : meshDiagnostics.items)
-            diagnostics.items.push_back({d.severity, sceneFile,
-                                         settings.pointer + "/mesh (\"" + settings.meshFile + "\")",
-                                         d.format()});
+            diagnostics.add({d.severity, sceneFile,
+                             settings.pointer + "/mesh (\"" + settings.meshFile + "\")",
+                             d.format()});
+        diagnostics.addOmitted(meshDiagnostics.omittedErrors(), meshDiagnostics.omittedWarnings());
         if (!asset) return std::nullopt;
         mesh = assetProxyMesh(*asset);
         if (mesh->indices.empty()) {
@@ -142,10 +143,10 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
         std::optional<MeshAsset> asset = loadGltf(instance.path, files, meshDiagnostics);
         for (Diagnostic& d : meshDiagnostics.items) {
             // "scene.json: /meshes/0: model.gltf: /accessors/2: ..." names both places.
-            diagnostics.items.push_back({d.severity, sceneFile,
-                                         instance.pointer + " (\"" + instance.file + "\")",
-                                         d.format()});
+            diagnostics.add({d.severity, sceneFile,
+                             instance.pointer + " (\"" + instance.file + "\")", d.format()});
         }
+        diagnostics.addOmitted(meshDiagnostics.omittedErrors(), meshDiagnostics.omittedWarnings());
         if (!asset) {
             prepared.instanceAsset.push_back(-1);
             continue;

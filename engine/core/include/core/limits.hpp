@@ -58,4 +58,8 @@ constexpr int kGltfNodeDepth = 64;                 // node hierarchy depth
 constexpr std::uint64_t kGltfVertices = 16u << 20; // per accessor and per asset
 constexpr std::uint64_t kGltfIndices = 48u << 20;  // per accessor and per asset
 
+// ---- Diagnostics (core/diagnostics.cpp) ----
+// Problems kept and printed for one input; the rest are counted ("... and 5 more errors").
+constexpr int kDiagnosticsKept = 100;
+
 } // namespace rmsc::limits
