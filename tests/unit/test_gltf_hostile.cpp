@@ -1,7 +1,8 @@
 // glTF files built to cost time or memory out of proportion to their size, against the load
 // budget (vertices, indices, texels, buffer bytes; per file and per scene) that is checked
 // before anything is allocated: accessors without buffer views, images listed many times or
-// larger than their bytes, buffers listed several times, roots listed thousands of times.
+// larger than their bytes, buffers listed several times, roots listed thousands of times. Also
+// KHR_lights_punctual lights without a type.
 #include "core/limits.hpp"
 #include "scene/mesh_asset.hpp"
 
@@ -318,4 +319,29 @@ TEST(GltfHostile, ManyDistinctRootsAndInstancesLoad) {
     const auto asset = load(gltf, d);
     ASSERT_TRUE(asset) << d.format().substr(0, 1000);
     EXPECT_EQ(asset->primitives.size(), 200000u);
+}
+
+TEST(GltfHostile, LightsWithoutATypeAreRefusedAtTheirPointerWithTheOtherErrors) {
+    json gltf = triangle();
+    gltf["extensionsUsed"] = {"KHR_lights_punctual"};
+    gltf["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"intensity", 2}},
+        {{"type", "spot"}},
+        {{"type", "point"}, {"color", "red"}, {"range", "far"}},
+        {{"type", "sun"}}};
+    gltf["nodes"][0]["mesh"] = 5; // another error, which must not be hidden
+    Diagnostics d;
+    EXPECT_FALSE(load(gltf, d));
+    std::set<std::string> locations;
+    for (const Diagnostic& item : d.items)
+        if (item.severity == Severity::Error) locations.insert(item.location);
+    const std::string lights = "/extensions/KHR_lights_punctual/lights/";
+    EXPECT_EQ(locations,
+              (std::set<std::string>{lights + "0/type", lights + "1/spot", lights + "2/color",
+                                     lights + "2/range", lights + "3/type", "/nodes/0/mesh"}))
+        << d.format();
+    EXPECT_NE(d.format().find(lights + "0/type: expected \"directional\", \"point\" or \"spot\", "
+                                       "got nothing"),
+              std::string::npos)
+        << d.format();
 }
