@@ -1,6 +1,7 @@
 // Scene files built to cost time or output out of proportion to their size: objects with
 // hundreds of thousands of keys (linear to parse and check), as many duplicates, thousands of
-// errors (kept to the first 100, all counted), huge lists of names in messages.
+// errors (kept to the first 100, all counted), huge lists of names in messages, and camera
+// vectors whose float arithmetic overflows.
 #include "scene/scene_json.hpp"
 
 #include <gtest/gtest.h>
@@ -80,4 +81,40 @@ TEST(HostileScenes, TwoThousandUnknownMaterialsGiveBoundedMessages) {
         << d.items[0].message.substr(0, 300);
     EXPECT_EQ(d.items[0].message.find("\"mat1064\""), std::string::npos);
     EXPECT_LT(d.format().size(), 100000u);
+}
+
+TEST(HostileScenes, CameraVectorsThatOverflowFloatsAreNamed) {
+    Diagnostics view;
+    EXPECT_FALSE(
+        parseScene(sceneWith(R"("camera": {"position": [3e38, 0, 0], "target": [-3e38, 0, 0]})"),
+                   "c.json", view));
+    ASSERT_EQ(view.errors, 1) << view.format();
+    EXPECT_EQ(view.items[0].location, "/camera/target");
+    EXPECT_NE(view.items[0].message.find("too long for float arithmetic"), std::string::npos)
+        << view.items[0].message;
+
+    // 1e20 is a float, but its square is not: the view direction cannot be normalized.
+    Diagnostics far;
+    EXPECT_FALSE(parseScene(
+        sceneWith(R"("camera": {"position": [1e20, 0, 0], "target": [0, 0, 0]})"), "c.json", far));
+    ASSERT_EQ(far.errors, 1) << far.format();
+    EXPECT_EQ(far.items[0].location, "/camera/target");
+
+    Diagnostics up;
+    EXPECT_FALSE(parseScene(
+        sceneWith(
+            R"("camera": {"position": [0, 0, 5], "target": [0, 0, 0], "up": [3e38, 3e38, 0]})"),
+        "c.json", up));
+    ASSERT_EQ(up.errors, 1) << up.format();
+    EXPECT_EQ(up.items[0].location, "/camera/up");
+    EXPECT_NE(up.items[0].message.find("too long for float arithmetic"), std::string::npos)
+        << up.items[0].message;
+
+    // A parallel up vector is still called that.
+    Diagnostics parallel;
+    EXPECT_FALSE(parseScene(
+        sceneWith(R"("camera": {"position": [0, 5, 0], "target": [0, 0, 0], "up": [0, 1, 0]})"),
+        "c.json", parallel));
+    ASSERT_EQ(parallel.errors, 1);
+    EXPECT_NE(parallel.items[0].message.find("not parallel"), std::string::npos);
 }
