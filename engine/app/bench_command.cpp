@@ -128,14 +128,24 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 // ---- Options and plan ----
 
+constexpr int kMaxFrames = 100000; // of --frames and of --warmup
+
 // Reads the options; prints the problem and returns false on a bad value.
 bool readBenchOptions(const ParsedArgs& args, BenchOptions& options) {
-    const std::string warmupText = args.get("--warmup", "2");
-    if ((args.has("--frames") &&
-         !parsePositiveInt(args.get("--frames", ""), 100000, options.frames)) ||
-        !(warmupText == "0" || parsePositiveInt(warmupText, 100000, options.warmup))) {
-        std::fprintf(stderr, "rmsc bench: --frames and --warmup take whole numbers (warm-up may "
-                             "be 0)\n");
+    const std::string framesText = args.get("--frames", std::to_string(options.frames));
+    if (!parsePositiveInt(framesText, kMaxFrames, options.frames)) {
+        std::fprintf(stderr,
+                     "rmsc bench: --frames: expected a whole number of timed frames from 1 to %d "
+                     "(at least 1 frame is timed), got '%s'\n",
+                     kMaxFrames, framesText.c_str());
+        return false;
+    }
+    const std::string warmupText = args.get("--warmup", std::to_string(options.warmup));
+    if (!(warmupText == "0" || parsePositiveInt(warmupText, kMaxFrames, options.warmup))) {
+        std::fprintf(stderr,
+                     "rmsc bench: --warmup: expected a whole number of untimed frames from 0 to "
+                     "%d, got '%s'\n",
+                     kMaxFrames, warmupText.c_str());
         return false;
     }
     if (warmupText == "0") options.warmup = 0;

@@ -55,7 +55,8 @@ namespace {
 
 // The shell's clip box and proxy mesh (object space); errors at the shell's JSON pointer.
 std::optional<PreparedShell> prepareShell(SdfShellProgram compiled, const FileSource& files,
-                                          const std::string& sceneFile, Diagnostics& diagnostics) {
+                                          const std::string& sceneFile, GltfBudget& budget,
+                                          Diagnostics& diagnostics) {
     PreparedShell shell;
     shell.settings = *compiled.node->shell;
     const SdfShell& settings = shell.settings;
@@ -67,11 +68,13 @@ std::optional<PreparedShell> prepareShell(SdfShellProgram compiled, const FileSo
     glm::vec3 meshMin(0.0f), meshMax(0.0f);
     if (settings.proxy == ShellProxy::Mesh) {
         Diagnostics meshDiagnostics;
-        std::optional<MeshAsset> asset = loadGltf(settings.meshPath, files, meshDiagnostics);
+        std::optional<MeshAsset> asset =
+            loadGltf(settings.meshPath, files, meshDiagnostics, budget);
         for (Diagnostic& d : meshDiagnostics.items)
-            diagnostics.items.push_back({d.severity, sceneFile,
-                                         settings.pointer + "/mesh (\"" + settings.meshFile + "\")",
-                                         d.format()});
+            diagnostics.add({d.severity, sceneFile,
+                             settings.pointer + "/mesh (\"" + settings.meshFile + "\")",
+                             d.format()});
+        diagnostics.addOmitted(meshDiagnostics.omittedErrors(), meshDiagnostics.omittedWarnings());
         if (!asset) return std::nullopt;
         mesh = assetProxyMesh(*asset);
         if (mesh->indices.empty()) {
@@ -132,6 +135,7 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     const std::string sceneFile = scene.file.string();
 
     std::map<std::filesystem::path, int> assetByPath;
+    GltfBudget gltfBudget; // shared by the meshes and the shells' proxy meshes
     for (const MeshInstance& instance : scene.meshes) {
         auto found = assetByPath.find(instance.path);
         if (found != assetByPath.end()) {
@@ -139,14 +143,15 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
             continue;
         }
         Diagnostics meshDiagnostics;
-        std::optional<MeshAsset> asset = loadGltf(instance.path, files, meshDiagnostics);
+        std::optional<MeshAsset> asset =
+            loadGltf(instance.path, files, meshDiagnostics, gltfBudget);
         for (Diagnostic& d : meshDiagnostics.items) {
             // "scene.json: /meshes/0/file ("model.gltf"): model.gltf: /accessors/2: ..." names
             // both places.
-            diagnostics.items.push_back({d.severity, sceneFile,
-                                         instance.pointer + "/file (\"" + instance.file + "\")",
-                                         d.format()});
+            diagnostics.add({d.severity, sceneFile,
+                             instance.pointer + "/file (\"" + instance.file + "\")", d.format()});
         }
+        diagnostics.addOmitted(meshDiagnostics.omittedErrors(), meshDiagnostics.omittedWarnings());
         if (!asset) {
             prepared.instanceAsset.push_back(-1);
             continue;
@@ -172,7 +177,7 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
             prepared.sdf = std::move(compiled->main);
             for (SdfShellProgram& shell : compiled->shells) {
                 std::optional<PreparedShell> ready =
-                    prepareShell(std::move(shell), files, sceneFile, diagnostics);
+                    prepareShell(std::move(shell), files, sceneFile, gltfBudget, diagnostics);
                 if (ready) prepared.shells.push_back(std::move(*ready));
             }
         }

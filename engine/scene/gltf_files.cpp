@@ -4,8 +4,10 @@
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace rmsc::gltf {
@@ -228,27 +230,92 @@ int jsonNestingDepth(std::string_view text, int limit) {
     return deepest;
 }
 
-bool decodeImage(const unsigned char* bytes, std::size_t size, Image& out, std::string& why) {
+namespace {
+
+std::uint32_t readU32BigEndian(const unsigned char* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 |
+           std::uint32_t(p[3]);
+}
+
+// The size a PNG's IHDR chunk or a JPEG's frame header states, for images stb_image will not
+// describe (it refuses sizes whose pixels overflow its int arithmetic and then reports only
+// "unknown image type", having tried every other format). Nullopt when neither is found.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> statedSize(const unsigned char* bytes,
+                                                                  std::size_t size) {
+    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 24 && std::memcmp(bytes, kPng, 8) == 0 && std::memcmp(bytes + 12, "IHDR", 4) == 0)
+        return std::pair{readU32BigEndian(bytes + 16), readU32BigEndian(bytes + 20)};
+    if (size < 4 || bytes[0] != 0xff || bytes[1] != 0xd8) return std::nullopt;
+    // JPEG: segments after the start-of-image marker, up to a start-of-frame (SOF0 to SOF15
+    // but DHT, JPG and DAC), which holds precision, height and width.
+    std::size_t at = 2;
+    while (at + 4 <= size) {
+        if (bytes[at] != 0xff) return std::nullopt;
+        const unsigned char marker = bytes[at + 1];
+        if (marker == 0xff) { // fill byte
+            ++at;
+            continue;
+        }
+        if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) { // no length
+            at += 2;
+            continue;
+        }
+        const std::size_t length = std::size_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        if (length < 2) return std::nullopt;
+        if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 &&
+            marker != 0xcc) {
+            if (length < 7 || at + 9 > size) return std::nullopt;
+            const std::uint32_t height = std::uint32_t(bytes[at + 5]) << 8 | bytes[at + 6];
+            const std::uint32_t width = std::uint32_t(bytes[at + 7]) << 8 | bytes[at + 8];
+            return std::pair{width, height};
+        }
+        if (marker == 0xd9 || marker == 0xda) return std::nullopt; // end, or scan data
+        at += 2 + length;
+    }
+    return std::nullopt;
+}
+
+std::string sizeRefusal(std::uint64_t width, std::uint64_t height) {
+    return "image is " + std::to_string(width) + "x" + std::to_string(height) +
+           ", expected at most " + std::to_string(kMaxImageDimension) + " on each side";
+}
+
+} // namespace
+
+std::optional<ImageSize> readImageSize(const unsigned char* bytes, std::size_t size,
+                                       std::string& why) {
     if (bytes == nullptr || size == 0) {
         why = "image data is empty";
-        return false;
+        return std::nullopt;
     }
     if (size > std::size_t(std::numeric_limits<int>::max())) {
         why = "image data is larger than 2 GiB";
-        return false;
+        return std::nullopt;
     }
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels)) {
+        const auto stated = statedSize(bytes, size);
+        if (stated && (stated->first > std::uint32_t(kMaxImageDimension) ||
+                       stated->second > std::uint32_t(kMaxImageDimension))) {
+            why = sizeRefusal(stated->first, stated->second);
+            return std::nullopt;
+        }
         const char* reason = stbi_failure_reason();
         why = std::string("not a decodable image (") + (reason ? reason : "unknown format") +
               "), expected PNG or JPEG data";
-        return false;
+        return std::nullopt;
     }
     if (width <= 0 || height <= 0 || width > kMaxImageDimension || height > kMaxImageDimension) {
-        why = "image is " + std::to_string(width) + "x" + std::to_string(height) +
-              ", expected at most " + std::to_string(kMaxImageDimension) + " on each side";
-        return false;
+        why = sizeRefusal(std::uint64_t(std::max(width, 0)), std::uint64_t(std::max(height, 0)));
+        return std::nullopt;
     }
+    return ImageSize{width, height};
+}
+
+bool decodeImage(const unsigned char* bytes, std::size_t size, Image& out, std::string& why) {
+    const auto stated = readImageSize(bytes, size, why);
+    if (!stated) return false;
+    int width = stated->width, height = stated->height, channels = 0;
     stbi_set_flip_vertically_on_load_thread(0);
     unsigned char* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
     if (pixels == nullptr) {

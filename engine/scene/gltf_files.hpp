@@ -56,8 +56,18 @@ std::optional<GlbChunks> splitGlb(std::string_view bytes, std::string& why);
 // Stops scanning once the depth exceeds `limit` and returns limit + 1.
 int jsonNestingDepth(std::string_view text, int limit);
 
+// The size an image's header states, read without decoding it. Nullopt, with `why` set, for
+// data stb cannot decode and for images larger than kMaxImageDimension on either side (also
+// those too large for stb to describe: "image is 60000x60000, expected at most 8192 ...").
+struct ImageSize {
+    int width = 0;
+    int height = 0;
+};
+std::optional<ImageSize> readImageSize(const unsigned char* bytes, std::size_t size,
+                                       std::string& why);
+
 // Decodes a PNG/JPEG/BMP/GIF/... image into RGBA8, rows top to bottom. Refuses, with `why`
-// set, data stb cannot decode and images larger than kMaxImageDimension on either side.
+// set, what readImageSize refuses.
 bool decodeImage(const unsigned char* bytes, std::size_t size, Image& out, std::string& why);
 
 } // namespace rmsc::gltf

@@ -239,19 +239,9 @@ std::optional<glm::dmat4> localMatrix(const tinygltf::Node& node, const std::str
 }
 
 // Appends `source` transformed by `world` to the asset.
+// The budget was checked for every instance before any primitive was read (countInstances).
 bool bake(const SourcePrimitive& source, const glm::dmat4& world, const std::string& nodePointer,
           Reporter& report, MeshAsset& asset) {
-    std::uint64_t vertices = source.positions.size(), indices = source.triangles.size();
-    for (const MeshPrimitive& p : asset.primitives) {
-        vertices += p.vertices.size();
-        indices += p.indices.size();
-    }
-    if (vertices > kMaxVertices || indices > kMaxIndices) {
-        report.error(nodePointer, "the scene has more than " + std::to_string(kMaxVertices) +
-                                      " vertices or " + std::to_string(kMaxIndices) +
-                                      " indices once its nodes are instanced");
-        return false;
-    }
     const glm::dmat3 linear(world);
     const double det = glm::determinant(linear);
     const glm::dmat3 normalMatrix = std::abs(det) > 1e-300 ? glm::inverseTranspose(linear) : linear;
@@ -403,9 +393,18 @@ std::vector<glm::vec3> smoothNormals(const std::vector<glm::vec3>& positions,
     return normals;
 }
 
-bool buildGeometry(const tinygltf::Model& model, Reporter& report, MeshAsset& asset) {
-    // Each mesh is read once, when first instanced.
-    std::vector<std::optional<std::vector<SourcePrimitive>>> meshes(model.meshes.size());
+namespace {
+
+// A node that draws a mesh, with its world transform.
+struct Instance {
+    int node = -1;
+    glm::dmat4 world{1.0};
+};
+
+// Walks the scene from its roots, depth first: adds the nodes' lights and lists the nodes that
+// draw a mesh, in drawing order. Reads no vertex data.
+bool walkNodes(const tinygltf::Model& model, Reporter& report, MeshAsset& asset,
+               std::vector<Instance>& instances) {
     struct Visit {
         int node;
         glm::dmat4 parentWorld;
@@ -435,22 +434,96 @@ bool buildGeometry(const tinygltf::Model& model, Reporter& report, MeshAsset& as
         const glm::dmat4 world = visit.parentWorld * *local;
         addNodeLight(model, node, world, pointer, report, asset);
         if (node.mesh >= 0) {
-            const std::size_t m = std::size_t(node.mesh);
-            if (m >= model.meshes.size()) {
+            if (std::size_t(node.mesh) >= model.meshes.size()) {
                 report.error(pointer + "/mesh", "refers to a missing mesh");
                 return false;
             }
-            if (!meshes[m]) {
-                std::vector<SourcePrimitive> primitives(model.meshes[m].primitives.size());
-                for (std::size_t p = 0; p < primitives.size(); ++p)
-                    if (!readPrimitive(model, m, p, report, primitives[p])) return false;
-                meshes[m] = std::move(primitives);
-            }
-            for (const SourcePrimitive& source : *meshes[m])
-                if (source.drawable && !bake(source, world, pointer, report, asset)) return false;
+            instances.push_back({visit.node, world});
         }
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
             stack.push_back({*it, world, visit.depth + 1});
+    }
+    return true;
+}
+
+// The vertices and triangle indices one instance of mesh `m` adds, from its accessors' counts
+// (what readPrimitive will read and toTriangles make of it). Accessor references were checked.
+void meshCounts(const tinygltf::Model& model, std::size_t m, std::uint64_t& vertices,
+                std::uint64_t& indices) {
+    vertices = indices = 0;
+    for (const tinygltf::Primitive& prim : model.meshes[m].primitives) {
+        if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            prim.mode != TINYGLTF_MODE_TRIANGLE_FAN)
+            continue; // skipped
+        const auto position = prim.attributes.find("POSITION");
+        if (position == prim.attributes.end() || position->second < 0 ||
+            std::size_t(position->second) >= model.accessors.size())
+            continue; // refused by readPrimitive
+        const std::uint64_t count = model.accessors[std::size_t(position->second)].count;
+        std::uint64_t listed = count;
+        if (prim.indices >= 0 && std::size_t(prim.indices) < model.accessors.size())
+            listed = model.accessors[std::size_t(prim.indices)].count;
+        const std::uint64_t triangleIndices = prim.mode == TINYGLTF_MODE_TRIANGLES ? listed
+                                              : listed < 3                         ? 0
+                                                           : (listed - 2) * 3;
+        vertices += count;
+        indices += triangleIndices;
+    }
+}
+
+// Takes every instance's vertices and indices out of the budget, in drawing order, before
+// anything is read: a file whose accessors claim more than the budget is refused at the node
+// that goes over, whatever its buffers hold (an accessor without a buffer view is all zeros
+// and costs nothing in the file).
+bool countInstances(const tinygltf::Model& model, const std::vector<Instance>& instances,
+                    Allowance& vertices, Allowance& indices, Reporter& report) {
+    std::vector<std::uint64_t> meshVertices(model.meshes.size()), meshIndices(model.meshes.size());
+    std::vector<char> counted(model.meshes.size(), 0);
+    for (const Instance& instance : instances) {
+        const std::size_t m = std::size_t(model.nodes[std::size_t(instance.node)].mesh);
+        if (!counted[m]) {
+            meshCounts(model, m, meshVertices[m], meshIndices[m]);
+            counted[m] = 1;
+        }
+        const std::string pointer = "/nodes/" + std::to_string(instance.node);
+        for (Allowance* allowance : {&vertices, &indices}) {
+            const std::uint64_t amount = allowance == &vertices ? meshVertices[m] : meshIndices[m];
+            if (!allowance->take(amount)) {
+                const std::uint64_t needed =
+                    amount > std::numeric_limits<std::uint64_t>::max() - allowance->used
+                        ? std::numeric_limits<std::uint64_t>::max()
+                        : allowance->used + amount;
+                report.error(pointer, "instancing /meshes/" + std::to_string(m) +
+                                          " here brings the file's scene to " +
+                                          allowance->refusal(needed));
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+bool buildGeometry(const tinygltf::Model& model, Allowance& vertices, Allowance& indices,
+                   Reporter& report, MeshAsset& asset) {
+    std::vector<Instance> instances;
+    if (!walkNodes(model, report, asset, instances)) return false;
+    if (!countInstances(model, instances, vertices, indices, report)) return false;
+    // Each mesh is read once, when first instanced.
+    std::vector<std::optional<std::vector<SourcePrimitive>>> meshes(model.meshes.size());
+    for (const Instance& instance : instances) {
+        const std::size_t m = std::size_t(model.nodes[std::size_t(instance.node)].mesh);
+        if (!meshes[m]) {
+            std::vector<SourcePrimitive> primitives(model.meshes[m].primitives.size());
+            for (std::size_t p = 0; p < primitives.size(); ++p)
+                if (!readPrimitive(model, m, p, report, primitives[p])) return false;
+            meshes[m] = std::move(primitives);
+        }
+        const std::string pointer = "/nodes/" + std::to_string(instance.node);
+        for (const SourcePrimitive& source : *meshes[m])
+            if (source.drawable && !bake(source, instance.world, pointer, report, asset))
+                return false;
     }
     if (asset.primitives.empty()) {
         report.warning("", "the file's scene contains no triangles");

@@ -6,6 +6,7 @@
 #include "gltf_files.hpp"
 #include "gltf_json_checks.hpp"
 #include "gltf_validate.hpp"
+#include "scene/gltf_budget.hpp"
 #include "scene/gltf_geometry.hpp"
 #include "scene/gltf_report.hpp"
 #include "scene/gltf_tinygltf.hpp"
@@ -16,6 +17,8 @@
 #include <map>
 #include <new>
 #include <sstream>
+#include <string_view>
+#include <unordered_map>
 
 namespace rmsc {
 
@@ -34,7 +37,42 @@ struct LoadContext {
     Reporter* report = nullptr;
     const tinygltf::Model* model = nullptr;            // being filled by tinygltf
     std::map<std::string, std::string> bufferPointers; // resolved file -> "/buffers/i/uri"
+    gltf::FileBudget* budget = nullptr;
+    // Per image: the first image with the same data (the same resolved URI, data URI or buffer
+    // view), which alone is decoded; itself when there is none.
+    std::vector<int> imageSource;
 };
+
+// Whether image `index` is decoded (the first of those with its data).
+bool decodesImage(const LoadContext& context, int index) {
+    return index < 0 || std::size_t(index) >= context.imageSource.size() ||
+           context.imageSource[std::size_t(index)] == index;
+}
+
+// The image's size from its header, taken out of the texel budget before it is decoded.
+bool decodeInBudget(const unsigned char* bytes, std::size_t size, LoadContext& context,
+                    const std::string& pointer, const std::string& what, Image& out) {
+    std::string why;
+    const auto stated = gltf::readImageSize(bytes, size, why);
+    if (!stated) {
+        context.report->error(pointer, what + why);
+        return false;
+    }
+    const std::uint64_t texels = std::uint64_t(stated->width) * std::uint64_t(stated->height);
+    gltf::Allowance& budget = context.budget->texels;
+    if (!budget.take(texels)) {
+        context.report->error(pointer, what + "image is " + std::to_string(stated->width) + "x" +
+                                           std::to_string(stated->height) +
+                                           ", which brings the file's images to " +
+                                           budget.refusal(budget.used + texels));
+        return false;
+    }
+    if (!gltf::decodeImage(bytes, size, out, why)) {
+        context.report->error(pointer, what + why);
+        return false;
+    }
+    return true;
+}
 
 // The file below the glTF folder that tinygltf asks for, or nullopt for any other path.
 std::optional<std::filesystem::path> confinedPath(const std::string& path, std::string& why) {
@@ -122,12 +160,13 @@ bool loadImage(tinygltf::Image* image, const int index, std::string*, std::strin
             return false;
         }
     }
-    Image decoded;
-    std::string why;
-    if (size <= 0 || !gltf::decodeImage(bytes, std::size_t(size), decoded, why)) {
-        context.report->error(pointer, size <= 0 ? "image data is empty" : why);
+    if (!decodesImage(context, index)) return true; // the same data as an earlier image
+    if (size <= 0) {
+        context.report->error(pointer, "image data is empty");
         return false;
     }
+    Image decoded;
+    if (!decodeInBudget(bytes, std::size_t(size), context, pointer, "", decoded)) return false;
     storeImage(std::move(decoded), *image);
     return true;
 }
@@ -155,6 +194,7 @@ bool loadExternalImages(tinygltf::Model& model, LoadContext& context) {
     for (std::size_t i = 0; i < model.images.size(); ++i) {
         tinygltf::Image& image = model.images[i];
         if (!image.image.empty() || image.uri.empty() || gltf::isDataUri(image.uri)) continue;
+        if (!decodesImage(context, int(i))) continue; // the same file as an earlier image
         const std::string pointer = "/images/" + std::to_string(i) + "/uri";
         std::string why;
         const auto decoded = gltf::percentDecode(image.uri);
@@ -167,9 +207,9 @@ bool loadExternalImages(tinygltf::Model& model, LoadContext& context) {
         if (!bytes) {
             context.report->error(pointer, "cannot read image \"" + image.uri + "\": " + why);
             ok = false;
-        } else if (!gltf::decodeImage(reinterpret_cast<const unsigned char*>(bytes->data()),
-                                      bytes->size(), rgba, why)) {
-            context.report->error(pointer, "image \"" + image.uri + "\": " + why);
+        } else if (!decodeInBudget(reinterpret_cast<const unsigned char*>(bytes->data()),
+                                   bytes->size(), context, pointer,
+                                   "image \"" + image.uri + "\": ", rgba)) {
             ok = false;
         } else {
             storeImage(std::move(rgba), image);
@@ -180,8 +220,9 @@ bool loadExternalImages(tinygltf::Model& model, LoadContext& context) {
 
 // One textureInfo of a material: resolves texture -> image and sampler. Indices were range
 // checked on the JSON and by validateModel; what is left here is what rmsc cannot use.
-MeshTextureRef convertTexture(const tinygltf::Model& model, int index, int texCoord,
-                              const std::string& pointer, Reporter& report) {
+MeshTextureRef convertTexture(const tinygltf::Model& model, const std::vector<int>& imageSlots,
+                              int index, int texCoord, const std::string& pointer,
+                              Reporter& report) {
     MeshTextureRef out;
     if (index < 0) return out;
     if (std::size_t(index) >= model.textures.size()) {
@@ -200,7 +241,7 @@ MeshTextureRef convertTexture(const tinygltf::Model& model, int index, int texCo
                                                   "TEXCOORD_1); the texture is ignored");
         return out;
     }
-    out.image = texture.source;
+    out.image = imageSlots[std::size_t(texture.source)];
     out.texCoord = texCoord;
     if (texture.sampler >= 0 && std::size_t(texture.sampler) < model.samplers.size()) {
         const tinygltf::Sampler& sampler = model.samplers[std::size_t(texture.sampler)];
@@ -212,7 +253,8 @@ MeshTextureRef convertTexture(const tinygltf::Model& model, int index, int texCo
     return out;
 }
 
-void convertMaterials(const tinygltf::Model& model, Reporter& report, MeshAsset& asset) {
+void convertMaterials(const tinygltf::Model& model, const std::vector<int>& imageSlots,
+                      Reporter& report, MeshAsset& asset) {
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
@@ -226,20 +268,22 @@ void convertMaterials(const tinygltf::Model& model, Reporter& report, MeshAsset&
         out.emissiveFactor =
             glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
         out.doubleSided = m.doubleSided;
-        out.baseColorTexture =
-            convertTexture(model, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                           pointer + "/pbrMetallicRoughness/baseColorTexture", report);
-        out.metallicRoughnessTexture = convertTexture(
-            model, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-            pointer + "/pbrMetallicRoughness/metallicRoughnessTexture", report);
-        out.normalTexture = convertTexture(model, m.normalTexture.index, m.normalTexture.texCoord,
-                                           pointer + "/normalTexture", report);
+        out.baseColorTexture = convertTexture(
+            model, imageSlots, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+            pointer + "/pbrMetallicRoughness/baseColorTexture", report);
+        out.metallicRoughnessTexture =
+            convertTexture(model, imageSlots, pbr.metallicRoughnessTexture.index,
+                           pbr.metallicRoughnessTexture.texCoord,
+                           pointer + "/pbrMetallicRoughness/metallicRoughnessTexture", report);
+        out.normalTexture =
+            convertTexture(model, imageSlots, m.normalTexture.index, m.normalTexture.texCoord,
+                           pointer + "/normalTexture", report);
         out.normalScale = float(m.normalTexture.scale);
         out.emissiveTexture =
-            convertTexture(model, m.emissiveTexture.index, m.emissiveTexture.texCoord,
+            convertTexture(model, imageSlots, m.emissiveTexture.index, m.emissiveTexture.texCoord,
                            pointer + "/emissiveTexture", report);
         out.occlusionTexture =
-            convertTexture(model, m.occlusionTexture.index, m.occlusionTexture.texCoord,
+            convertTexture(model, imageSlots, m.occlusionTexture.index, m.occlusionTexture.texCoord,
                            pointer + "/occlusionTexture", report);
         out.occlusionStrength = float(m.occlusionTexture.strength);
         // KHR_materials_emissive_strength; the value was checked by validateModel.
@@ -274,8 +318,62 @@ std::string canonicalGlb(const gltf::GlbChunks& chunks) {
     return out;
 }
 
+// Takes every buffer's declared byteLength (checked to be a number by checkGltfJson) out of
+// the budget, before tinygltf reads any.
+bool budgetBuffers(const nlohmann::json& document, gltf::Allowance& budget, Reporter& report) {
+    const auto buffers = document.find("buffers");
+    if (buffers == document.end() || !buffers->is_array()) return true;
+    for (std::size_t i = 0; i < buffers->size(); ++i) {
+        const nlohmann::json& buffer = (*buffers)[i];
+        const auto length = buffer.is_object() ? buffer.find("byteLength") : buffer.end();
+        if (length == buffer.end() || !length->is_number_unsigned()) continue;
+        const std::uint64_t bytes = length->get<std::uint64_t>();
+        if (!budget.take(bytes)) {
+            const std::uint64_t needed =
+                bytes > std::numeric_limits<std::uint64_t>::max() - budget.used
+                    ? std::numeric_limits<std::uint64_t>::max()
+                    : budget.used + bytes;
+            report.error("/buffers/" + std::to_string(i) + "/byteLength",
+                         "this buffer brings the file's buffers to " + budget.refusal(needed));
+            return false;
+        }
+    }
+    return true;
+}
+
+// For each image, the first image with the same data: the same buffer view, the same data URI
+// or the same file once resolved in the glTF folder.
+std::vector<int> imageSources(const nlohmann::json& document) {
+    std::vector<int> sources;
+    const auto images = document.find("images");
+    if (images == document.end() || !images->is_array()) return sources;
+    std::unordered_map<std::string, int> byName;         // "view N", "file <path>"
+    std::unordered_map<std::string_view, int> byDataUri; // views into `document`
+    for (std::size_t i = 0; i < images->size(); ++i) {
+        const nlohmann::json& image = (*images)[i];
+        int source = int(i);
+        const auto view = image.is_object() ? image.find("bufferView") : image.end();
+        const auto uri = image.is_object() ? image.find("uri") : image.end();
+        if (view != image.end() && view->is_number_unsigned()) {
+            source = byName.try_emplace("view " + view->dump(), int(i)).first->second;
+        } else if (uri != image.end() && uri->is_string()) {
+            const std::string& text = uri->get_ref<const std::string&>();
+            std::string why;
+            if (gltf::isDataUri(text)) {
+                source = byDataUri.try_emplace(text, int(i)).first->second;
+            } else if (const auto decoded = gltf::percentDecode(text)) {
+                if (const auto relative = gltf::resolveInFolder(*decoded, why))
+                    source = byName.try_emplace("file " + relative->generic_string(), int(i))
+                                 .first->second;
+            }
+        }
+        sources.push_back(source);
+    }
+    return sources;
+}
+
 std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSource& files,
-                              Reporter& report) {
+                              GltfBudget& sceneBudget, Reporter& report) {
     std::string why;
     const auto bytes = files.read(path, why);
     if (!bytes) {
@@ -319,6 +417,8 @@ std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSourc
     input.hasBinChunk = chunks.hasBin;
     input.binSize = chunks.bin.size();
     if (!gltf::checkGltfJson(document, input, report)) return std::nullopt;
+    gltf::FileBudget budget = gltf::fileBudget(sceneBudget);
+    if (!budgetBuffers(document, budget.bufferBytes, report)) return std::nullopt;
 
     tinygltf::Model model;
     LoadContext context;
@@ -326,6 +426,8 @@ std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSourc
     context.folder = path.parent_path();
     context.report = &report;
     context.model = &model;
+    context.budget = &budget;
+    context.imageSource = imageSources(document);
     if (const auto buffers = document.find("buffers");
         buffers != document.end() && buffers->is_array()) {
         for (std::size_t i = 0; i < buffers->size(); ++i) {
@@ -377,16 +479,28 @@ std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSourc
 
     MeshAsset asset;
     asset.path = path;
-    for (tinygltf::Image& image : model.images) {
+    // One asset image per distinct image; the others use the slot of the first with their data.
+    std::vector<int> imageSlots(model.images.size(), -1);
+    for (std::size_t i = 0; i < model.images.size(); ++i) {
+        if (!decodesImage(context, int(i))) {
+            imageSlots[i] = imageSlots[std::size_t(context.imageSource[i])];
+            continue;
+        }
+        tinygltf::Image& image = model.images[i];
         Image out;
         out.width = image.width;
         out.height = image.height;
         out.rgba = std::move(image.image);
+        imageSlots[i] = int(asset.images.size());
         asset.images.push_back(std::move(out));
     }
-    convertMaterials(model, report, asset);
-    if (!gltf::buildGeometry(model, report, asset)) return std::nullopt;
+    convertMaterials(model, imageSlots, report, asset);
+    if (!gltf::buildGeometry(model, budget.vertices, budget.indices, report, asset))
+        return std::nullopt;
     if (report.errors > 0) return std::nullopt;
+    sceneBudget.vertices -= budget.vertices.used;
+    sceneBudget.indices -= budget.indices.used;
+    sceneBudget.texels -= budget.texels.used;
     return asset;
 }
 
@@ -394,9 +508,15 @@ std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSourc
 
 std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
                                   Diagnostics& diagnostics) {
+    GltfBudget budget;
+    return loadGltf(path, files, diagnostics, budget);
+}
+
+std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
+                                  Diagnostics& diagnostics, GltfBudget& sceneBudget) {
     Reporter report{path.string(), &diagnostics};
     try {
-        return load(path, files, report);
+        return load(path, files, sceneBudget, report);
     } catch (const std::bad_alloc&) {
         report.error("", "out of memory while loading the glTF file");
     } catch (const std::exception& e) {

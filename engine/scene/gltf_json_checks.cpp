@@ -3,6 +3,7 @@
 
 #include "gltf_files.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -176,6 +177,63 @@ void checkImages(const json& root, Reporter& report) {
     }
 }
 
+// KHR_lights_punctual's lights, which tinygltf refuses without a pointer (a light without a
+// "type", a spot light without "spot") and whose optional values of the wrong type it drops
+// silently. Values are checked further when a node uses the light (gltf_lights.cpp).
+void checkLights(const json& root, Reporter& report) {
+    const auto extensions = root.find("extensions");
+    if (extensions == root.end() || !extensions->is_object()) return;
+    const auto punctual = extensions->find("KHR_lights_punctual");
+    if (punctual == extensions->end()) return;
+    const std::string extensionPointer = "/extensions/KHR_lights_punctual";
+    if (!punctual->is_object()) {
+        report.error(extensionPointer, "expected an object with a \"lights\" array");
+        return;
+    }
+    const auto lights = punctual->find("lights");
+    if (lights == punctual->end()) return;
+    if (!lights->is_array()) {
+        report.error(extensionPointer + "/lights", "expected an array of lights");
+        return;
+    }
+    const auto expectNumber = [&](const json& light, const char* key, const std::string& p) {
+        const auto it = light.find(key);
+        if (it != light.end() && !it->is_number())
+            report.error(p + "/" + key, "expected a number, got " + shortDump(*it));
+    };
+    for (std::size_t i = 0; i < lights->size(); ++i) {
+        const json& light = (*lights)[i];
+        const std::string pointer = extensionPointer + "/lights/" + std::to_string(i);
+        if (!light.is_object()) {
+            report.error(pointer, "expected a light object with a \"type\"");
+            continue;
+        }
+        const auto type = light.find("type");
+        if (type == light.end() || !type->is_string() ||
+            (*type != "directional" && *type != "point" && *type != "spot")) {
+            report.error(pointer + "/type",
+                         "expected \"directional\", \"point\" or \"spot\", got " +
+                             (type == light.end() ? std::string("nothing") : shortDump(*type)));
+        } else if (*type == "spot") {
+            const auto spot = light.find("spot");
+            if (spot == light.end() || !spot->is_object()) {
+                report.error(pointer + "/spot",
+                             "expected an object with the spot light's cone angles");
+            } else {
+                expectNumber(*spot, "innerConeAngle", pointer + "/spot");
+                expectNumber(*spot, "outerConeAngle", pointer + "/spot");
+            }
+        }
+        const auto color = light.find("color");
+        if (color != light.end() && !(color->is_array() && color->size() == 3 &&
+                                      std::all_of(color->begin(), color->end(),
+                                                  [](const json& c) { return c.is_number(); })))
+            report.error(pointer + "/color", "expected 3 numbers, got " + shortDump(*color));
+        expectNumber(light, "intensity", pointer);
+        expectNumber(light, "range", pointer);
+    }
+}
+
 // --- references between top-level arrays -------------------------------------------------
 
 std::size_t arraySize(const json& root, const char* key) {
@@ -337,6 +395,7 @@ bool checkGltfJson(const json& root, const JsonCheckInput& input, Reporter& repo
     checkReferences(root, report);
     checkBuffers(root, input, report);
     checkImages(root, report);
+    checkLights(root, report);
     return report.errors == errorsBefore;
 }
 

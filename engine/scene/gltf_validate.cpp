@@ -119,19 +119,34 @@ void checkHierarchy(const tinygltf::Model& model, Reporter& report) {
             return;
         }
     }
+    // Each root once per scene: one pass counts how often each node is listed, a second
+    // reports each node listed more than once, once, at its second entry.
+    std::vector<std::size_t> firstEntry(count), entries(count, 0);
     for (std::size_t s = 0; s < model.scenes.size(); ++s) {
         const std::vector<int>& roots = model.scenes[s].nodes;
+        const std::string scenePointer = "/scenes/" + std::to_string(s) + "/nodes/";
         for (std::size_t i = 0; i < roots.size(); ++i) {
             const int n = roots[i];
             if (n < 0 || std::size_t(n) >= count) continue;
-            const std::string pointer =
-                "/scenes/" + std::to_string(s) + "/nodes/" + std::to_string(i);
+            if (entries[std::size_t(n)]++ > 0) continue;
+            firstEntry[std::size_t(n)] = i;
             if (parent[std::size_t(n)] >= 0)
-                report.error(pointer,
+                report.error(scenePointer + std::to_string(i),
                              "scene root /nodes/" + std::to_string(n) + " is a child of /nodes/" +
                                  std::to_string(parent[std::size_t(n)]) + ", expected a root node");
-            for (std::size_t j = 0; j < i; ++j)
-                if (roots[j] == n) report.error(pointer, "node listed twice in the scene");
+        }
+        for (std::size_t i = 0; i < roots.size(); ++i) {
+            const int n = roots[i];
+            if (n < 0 || std::size_t(n) >= count) continue;
+            std::size_t& listed = entries[std::size_t(n)];
+            if (listed > 1 && i == firstEntry[std::size_t(n)]) continue; // report at the second
+            if (listed > 1)
+                report.error(scenePointer + std::to_string(i),
+                             "/nodes/" + std::to_string(n) + " is listed " +
+                                 std::to_string(listed) + " times in the scene (first at " +
+                                 scenePointer + std::to_string(firstEntry[std::size_t(n)]) +
+                                 "), expected each root once");
+            listed = 0; // reported, or listed once: cleared for the next scene
         }
     }
 }

@@ -68,24 +68,28 @@ std::string formatNumber(double value) {
 
 std::string quotedList(std::span<const std::string> names) {
     std::string out;
-    for (const std::string& name : names) {
+    const std::size_t shown = std::min(names.size(), kQuotedNames);
+    for (std::size_t i = 0; i < shown; ++i) {
         if (!out.empty()) out += ", ";
-        out += "\"" + name + "\"";
+        out += "\"" + names[i] + "\"";
     }
+    if (shown < names.size()) out += " and " + std::to_string(names.size() - shown) + " more";
     return out;
 }
 
-int editDistance(std::string_view a, std::string_view b) {
-    // Optimal string alignment: Levenshtein plus swaps of neighbouring letters ("rde" -> "red"),
-    // the most common typo. d[i][j] is the distance between a's first i and b's first j letters.
+namespace {
+
+// Optimal string alignment: Levenshtein plus swaps of neighbouring letters ("rde" -> "red"),
+// the most common typo. Rows i - 2, i - 1 and i of the table (d[i][j] is the distance between
+// a's first i and b's first j letters) live in `rows`, reused between calls.
+int editDistance(std::string_view a, std::string_view b, std::vector<int>& rows) {
     const std::size_t columns = b.size() + 1;
-    std::vector<int> d((a.size() + 1) * columns);
-    auto at = [&](std::size_t i, std::size_t j) -> int& { return d[i * columns + j]; };
-    for (std::size_t i = 0; i <= a.size(); ++i)
-        at(i, 0) = int(i);
+    rows.assign(3 * columns, 0);
+    auto at = [&](std::size_t i, std::size_t j) -> int& { return rows[(i % 3) * columns + j]; };
     for (std::size_t j = 0; j <= b.size(); ++j)
         at(0, j) = int(j);
     for (std::size_t i = 1; i <= a.size(); ++i) {
+        at(i, 0) = int(i);
         for (std::size_t j = 1; j <= b.size(); ++j) {
             const int cost = a[i - 1] == b[j - 1] ? 0 : 1;
             at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, at(i - 1, j - 1) + cost});
@@ -96,30 +100,54 @@ int editDistance(std::string_view a, std::string_view b) {
     return at(a.size(), b.size());
 }
 
+// Names longer than this are not ranked against a list (no short name is a likely typo of
+// them, and ranking would cost their length times every candidate's).
+constexpr std::size_t kRankedNameLength = 256;
+
+} // namespace
+
+int editDistance(std::string_view a, std::string_view b) {
+    std::vector<int> rows;
+    return editDistance(a, b, rows);
+}
+
 std::vector<std::string> sortedByDistance(std::string_view name,
                                           std::span<const std::string> candidates) {
-    std::vector<std::string> sorted(candidates.begin(), candidates.end());
-    std::stable_sort(sorted.begin(), sorted.end(), [&](const std::string& x, const std::string& y) {
-        return editDistance(name, x) < editDistance(name, y);
-    });
+    if (name.size() > kRankedNameLength)
+        return std::vector<std::string>(candidates.begin(), candidates.end());
+    // Each distance once (a comparison sort would compute them n log n times).
+    std::vector<std::pair<int, std::size_t>> ranked;
+    std::vector<int> rows;
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        ranked.emplace_back(editDistance(name, candidates[i], rows), i);
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<std::string> sorted;
+    sorted.reserve(ranked.size());
+    for (const auto& [distance, index] : ranked)
+        sorted.push_back(candidates[index]);
     return sorted;
 }
 
 std::optional<std::string> closeMatch(std::string_view name,
                                       std::span<const std::string> candidates) {
+    // A typo changes a few letters; more than a third of the name is a different word.
+    const int allowed = std::max<int>(1, int(std::max(name.size(), std::size_t(3))) / 3);
     std::optional<std::string> best;
     int bestDistance = 0;
+    std::vector<int> rows;
     for (const std::string& candidate : candidates) {
-        const int d = editDistance(name, candidate);
-        if (!best || d < bestDistance) {
+        // The distance is at least the difference in length: skip what cannot be close.
+        const std::size_t longer = std::max(name.size(), candidate.size());
+        const std::size_t shorter = std::min(name.size(), candidate.size());
+        if (longer - shorter > std::size_t(allowed)) continue;
+        const int d = editDistance(name, candidate, rows);
+        if (d <= allowed && (!best || d < bestDistance)) {
             best = candidate;
             bestDistance = d;
         }
     }
-    // A typo changes a few letters; more than a third of the name is a different word.
-    const int allowed = std::max<int>(1, int(std::max(name.size(), std::size_t(3))) / 3);
-    if (best && bestDistance <= allowed) return best;
-    return std::nullopt;
+    return best;
 }
 
 void warnUnknownKeys(const JsonReader& reader, const Json& object, const std::string& pointer,
@@ -127,6 +155,10 @@ void warnUnknownKeys(const JsonReader& reader, const Json& object, const std::st
     if (!object.is_object()) return;
     for (const auto& [key, value] : object.items()) {
         if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+        if (!reader.diagnostics->keeps()) { // counted, but not kept: no message to build
+            reader.warning(pointer, "unknown key");
+            continue;
+        }
         std::string message = "unknown key \"" + key + "\"";
         if (auto match = closeMatch(key, known)) {
             message += "; did you mean \"" + *match + "\"?";

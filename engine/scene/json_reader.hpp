@@ -49,7 +49,9 @@ std::string jsonTypeName(const Json& value);
 // The shortest text that reads back as the same float (or double): 0.1f -> "0.1".
 std::string formatNumber(float value);
 std::string formatNumber(double value);
-// Quoted, comma-separated: "\"a\", \"b\"".
+// Quoted, comma-separated: "\"a\", \"b\"". Lists longer than kQuotedNames end with
+// " and N more" (a scene may define thousands of materials).
+constexpr std::size_t kQuotedNames = 64;
 std::string quotedList(std::span<const std::string> names);
 
 // Edit distance: insertions, deletions, substitutions and swaps of neighbouring letters.

@@ -35,16 +35,20 @@ bool loadMaterialTextures(std::vector<Material>& materials, const std::string& s
                                   "cannot read texture \"" + texture->file + "\": " + why);
                 continue;
             }
-            TextureImage loaded;
-            loaded.path = texture->path;
-            loaded.srgb = srgb;
-            if (!gltf::decodeImage(reinterpret_cast<const unsigned char*>(bytes->data()),
-                                   bytes->size(), loaded.image, why)) {
+            const auto* data = reinterpret_cast<const unsigned char*>(bytes->data());
+            // The limits below are checked on the size the header states, before decoding.
+            const auto stated = gltf::readImageSize(data, bytes->size(), why);
+            if (!stated) {
                 diagnostics.error(sceneFile, texture->pointer,
                                   "texture \"" + texture->file +
                                       "\" is not a usable image: " + why);
                 continue;
             }
+            TextureImage loaded;
+            loaded.path = texture->path;
+            loaded.srgb = srgb;
+            loaded.image.width = stated->width;
+            loaded.image.height = stated->height;
             if (int(textures.size()) >= kMaxSdfMaterialTextures) {
                 diagnostics.error(sceneFile, texture->pointer,
                                   "texture \"" + texture->file +
@@ -55,8 +59,9 @@ bool loadMaterialTextures(std::vector<Material>& materials, const std::string& s
                                       "linear map counts twice)");
                 continue;
             }
-            texels += std::uint64_t(loaded.image.width) * std::uint64_t(loaded.image.height);
-            if (texels > kMaxSdfTextureTexels) {
+            const std::uint64_t withThis =
+                texels + std::uint64_t(loaded.image.width) * std::uint64_t(loaded.image.height);
+            if (withThis > kMaxSdfTextureTexels) {
                 diagnostics.error(
                     sceneFile, texture->pointer,
                     "texture \"" + texture->file + "\" (" + std::to_string(loaded.image.width) +
@@ -65,6 +70,13 @@ bool loadMaterialTextures(std::vector<Material>& materials, const std::string& s
                         std::to_string(kMaxSdfTextureTexels >> 20) + " Mi texels in all");
                 continue;
             }
+            if (!gltf::decodeImage(data, bytes->size(), loaded.image, why)) {
+                diagnostics.error(sceneFile, texture->pointer,
+                                  "texture \"" + texture->file +
+                                      "\" is not a usable image: " + why);
+                continue;
+            }
+            texels = withThis;
             known[key] = int(textures.size());
             texture->image = int(textures.size());
             textures.push_back(std::move(loaded));

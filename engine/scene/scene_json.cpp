@@ -88,7 +88,20 @@ void readCamera(const SceneReader& r, const Json& object, Camera& camera) {
                      "the camera's \"target\" equals its \"position\"; it must look somewhere");
         return;
     }
+    // Normalizing a float vector squares its components: from about 1.8e19 on they overflow.
+    if (!std::isfinite(glm::length(view))) {
+        r.json.error(childPointer(pointer, "target"),
+                     "target - position is too long for float arithmetic (its length overflows "
+                     "to infinity); expected \"target\" and \"position\" less than 1e19 apart");
+        return;
+    }
     const float upLength = glm::length(camera.up);
+    if (!std::isfinite(upLength)) {
+        r.json.error(childPointer(pointer, "up"),
+                     "the \"up\" vector is too long for float arithmetic (its length overflows "
+                     "to infinity); expected components below 1e19, e.g. [0, 1, 0]");
+        return;
+    }
     const float sine = upLength > 0.0f
                            ? glm::length(glm::cross(camera.up / upLength, glm::normalize(view)))
                            : 0.0f;

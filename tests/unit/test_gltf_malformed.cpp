@@ -351,15 +351,35 @@ std::vector<Case> corpus() {
         setU32(bad, 8, std::uint32_t(bad.size()));
         add(rawCase("GLB without its BIN chunk", "mem/cube.glb", bad, "/buffers/0"));
     }
+
+    // --- hostile inputs (also in tests/cli/hostile_inputs.py) ---
+    add(cubeCase("light without a type", "/extensions/KHR_lights_punctual/lights/0/type",
+                 [](Cube& c) {
+                     c.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {{{"intensity", 2}}};
+                 }));
+    add(cubeCase("light colour that is not numbers",
+                 "/extensions/KHR_lights_punctual/lights/0/color", [](Cube& c) {
+                     c.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {
+                         {{"type", "point"}, {"color", "red"}}};
+                 }));
+    add(cubeCase("scene root listed 3000 times", "/scenes/0/nodes/1",
+                 [](Cube& c) { c.gltf["scenes"][0]["nodes"] = std::vector<int>(3000, 0); }));
+    add(cubeCase("buffers over the byte budget", "/buffers/2/byteLength", [](Cube& c) {
+        for (int i = 0; i < 2; ++i)
+            c.gltf["buffers"].push_back({{"byteLength", 600u << 20}, {"uri", "big.bin"}});
+    }));
+    cases.back().files["mem/big.bin"] = "small";
+    add(texturedCube("image of 60000 x 60000", "/images/0",
+                     {{"uri", "data:image/png;base64," + base64Encode(pngHeader(60000, 60000))}}));
     return cases;
 }
 
 } // namespace
 
-// The corpus holds 62 malformed files; every one must be refused, none may crash or hang.
-TEST(GltfMalformed, Corpus62FilesAllRefusedWithFileAndPointer) {
+// The corpus holds 67 malformed files; every one must be refused, none may crash or hang.
+TEST(GltfMalformed, Corpus67FilesAllRefusedWithFileAndPointer) {
     const std::vector<Case> cases = corpus();
-    EXPECT_EQ(cases.size(), 62u);
+    EXPECT_EQ(cases.size(), 67u);
     // RMSC_FUZZ_SEED_DIR=tests/fuzz/seeds/gltf writes the corpus's entry files as fuzzer seeds.
     if (const char* seedDir = std::getenv("RMSC_FUZZ_SEED_DIR")) {
         for (std::size_t i = 0; i < cases.size(); ++i) {

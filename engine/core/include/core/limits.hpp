@@ -57,5 +57,17 @@ constexpr int kGltfJsonDepth = 128;                // checked before tinygltf pa
 constexpr int kGltfNodeDepth = 64;                 // node hierarchy depth
 constexpr std::uint64_t kGltfVertices = 16u << 20; // per accessor and per asset
 constexpr std::uint64_t kGltfIndices = 48u << 20;  // per accessor and per asset
+// The load budget, checked before anything is allocated: vertices and indices from the
+// accessors' counts, texels from the image headers, buffer bytes from "byteLength".
+constexpr std::uint64_t kGltfTexels = std::uint64_t(1) << 27;      // decoded, per file
+constexpr std::uint64_t kGltfBufferBytes = std::uint64_t(1) << 30; // buffers of one file
+// What the glTF files of one scene (meshes and shell proxies) may hold together.
+constexpr std::uint64_t kSceneGltfVertices = 32u << 20;
+constexpr std::uint64_t kSceneGltfIndices = 96u << 20;
+constexpr std::uint64_t kSceneGltfTexels = std::uint64_t(1) << 28;
+
+// ---- Diagnostics (core/diagnostics.cpp) ----
+// Problems kept and printed for one input; the rest are counted ("... and 5 more errors").
+constexpr int kDiagnosticsKept = 100;
 
 } // namespace rmsc::limits

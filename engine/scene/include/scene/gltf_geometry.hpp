@@ -1,9 +1,10 @@
-// Turns a validated glTF model's scene into MeshAsset triangles: reads each mesh primitive
-// once, converts strips and fans to triangle lists, bakes node world transforms into positions
-// and normals (flipping winding for mirroring transforms), computes missing normals and fills
-// the bounds.
+// Turns a validated glTF model's scene into MeshAsset triangles: checks the instanced counts
+// against the load budget, reads each mesh primitive once, converts strips and fans to
+// triangle lists, bakes node world transforms into positions and normals (flipping winding for
+// mirroring transforms), computes missing normals and fills the bounds.
 #pragma once
 
+#include "scene/gltf_budget.hpp"
 #include "scene/gltf_report.hpp"
 #include "scene/gltf_tinygltf.hpp"
 #include "scene/mesh_asset.hpp"
@@ -13,8 +14,11 @@
 
 namespace rmsc::gltf {
 
-// Fills asset.primitives, boundsMin and boundsMax. Returns false after reporting an error.
-bool buildGeometry(const tinygltf::Model& model, Reporter& report, MeshAsset& asset);
+// Fills asset.primitives, boundsMin, boundsMax and asset.lights. Takes the instanced vertices
+// and triangle indices out of `vertices` and `indices`, from the accessors' counts, before
+// reading any; returns false after reporting an error.
+bool buildGeometry(const tinygltf::Model& model, Allowance& vertices, Allowance& indices,
+                   Reporter& report, MeshAsset& asset);
 
 // Area-weighted vertex normals of an indexed triangle list (flat where no vertex is shared);
 // vertices in no triangle, or only in degenerate ones, get +y.

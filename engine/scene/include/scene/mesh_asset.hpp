@@ -5,6 +5,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/file_source.hpp"
+#include "core/limits.hpp"
 #include "scene/scene.hpp"
 
 #include <glm/glm.hpp>
@@ -87,8 +88,21 @@ struct MeshAsset {
     glm::vec3 boundsMax{0.0f};
 };
 
+// What the glTF files of one scene may still hold together (limits::kSceneGltf*). Each file
+// loaded with it takes what it holds out of it; a file that would take more is refused.
+struct GltfBudget {
+    std::uint64_t vertices = limits::kSceneGltfVertices;
+    std::uint64_t indices = limits::kSceneGltfIndices;
+    std::uint64_t texels = limits::kSceneGltfTexels;
+};
+
 // Loads a .gltf or .glb through `files`. Every problem is reported to `diagnostics` with the
 // file and the glTF element ("/meshes/0/primitives/1/indices"); returns nullopt on error.
+// Checked before anything is allocated: the per-file limits (vertices, indices, texels, buffer
+// bytes) and what is left of `sceneBudget`, from which the asset's share is then taken.
+std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
+                                  Diagnostics& diagnostics, GltfBudget& sceneBudget);
+// The same with a scene budget of its own (a glTF file opened by itself).
 std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
                                   Diagnostics& diagnostics);
 
