@@ -216,7 +216,8 @@ struct CellResult {
     PrunedTree pruned;
     std::vector<std::uint32_t> list; // instruction indices, postfix
     int leaves = 0;
-    bool far = false; // the surface is farther than the cell's edge from all of it
+    bool far = false;  // a far cell's constant (SdfCellOptions::farConstants)
+    bool near = false; // the surface may be within the cell's edge of it
 };
 
 // Far cells: where the whole program is at least `edge` (the cell's edge length) everywhere in
@@ -238,8 +239,9 @@ GpuSdfInstruction constantInstruction(float value) {
 // Prunes `in` to the cell of centre c and edge length `edge`; `constants` are the far cells'
 // kFarSteps constants of the cell's level (instruction indices).
 void pruneCell(const Pruner& pr, const PrunedTree& in, glm::vec3 c, float edge,
-               const std::uint32_t* constants, CellResult& out, std::vector<float>& value,
-               std::vector<SdfInterval>& range, std::vector<SdfPruneSide>& side) {
+               const std::uint32_t* constants, int shortLeaves, CellResult& out,
+               std::vector<float>& value, std::vector<SdfInterval>& range,
+               std::vector<SdfPruneSide>& side) {
     const std::size_t n = in.size();
     const float r = 0.8660254f * edge; // half the diagonal
     value.resize(n);
@@ -296,13 +298,6 @@ void pruneCell(const Pruner& pr, const PrunedTree& in, glm::vec3 c, float edge,
     out.pruned.clear();
     out.list.clear();
     out.leaves = 0;
-    out.far = range[n - 1].lo >= edge;
-    if (out.far) {
-        const int m = std::min(int(range[n - 1].lo / edge), kFarSteps);
-        out.list.push_back(constants[m - 1]);
-        out.leaves = 1;
-        return;
-    }
     // Emit what is kept, operands first.
     const auto isUnion = [&](int i) {
         const TreeNode& t = pr.tree.nodes[std::size_t(in[std::size_t(i)].node)];
@@ -357,6 +352,16 @@ void pruneCell(const Pruner& pr, const PrunedTree& in, glm::vec3 c, float edge,
         return int(out.pruned.size()) - 1;
     };
     emit(emit, int(n) - 1);
+    out.near = range[n - 1].lo < edge;
+    // A far cell whose program is long takes a constant lower bound instead (shortLeaves < 0:
+    // never; soft shadows and the cone pass read the values, so the renderer keeps them exact).
+    out.far = shortLeaves >= 0 && range[n - 1].lo >= edge;
+    if (out.far && out.leaves > shortLeaves) {
+        const int m = std::min(int(range[n - 1].lo / edge), kFarSteps);
+        out.pruned.clear();
+        out.list.assign(1, constants[m - 1]);
+        out.leaves = 1;
+    }
 }
 
 // The value-stack depth a list needs.
@@ -395,6 +400,14 @@ std::uint64_t hashList(std::span<const std::uint32_t> list) {
     return h;
 }
 
+// The whole program's list (the identity) after everything else, for points outside the grid.
+void appendOutsideList(SdfCellGrid& grid, std::size_t instructions) {
+    grid.outsideOffset = std::uint32_t(grid.words.size());
+    grid.outsideLength = std::uint32_t(instructions);
+    for (std::uint32_t i = 0; i < instructions; ++i)
+        grid.words.push_back(i);
+}
+
 } // namespace
 
 Aabb sdfContentBox(const SdfNode& root) {
@@ -408,7 +421,10 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     const auto started = std::chrono::steady_clock::now();
     SdfCellGrid grid;
     grid.code = program.instructions;
-    if (content.empty() || program.instructions.empty() || options.levels < 1) return grid;
+    if (content.empty() || program.instructions.empty() || options.levels < 1) {
+        appendOutsideList(grid, program.instructions.size());
+        return grid;
+    }
     // The union the accumulated parts of a bounding hierarchy are folded with.
     GpuSdfInstruction unite;
     unite.opcode = std::uint32_t(SdfOpcode::Combine);
@@ -418,11 +434,13 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     ProgramTree tree;
     if (!readTree(program.instructions, unionInstruction, tree) || tree.nodes.empty()) {
         grid.code = program.instructions;
+        appendOutsideList(grid, program.instructions.size());
         return grid;
     }
-    const int levels = std::min(options.levels, 5);
+    const int levels = std::clamp(options.levels, 1, 6);
     const glm::vec3 half = content.halfSize();
-    const float extent = std::max(std::max(half.x, half.y), std::max(half.z, 1e-3f)) * 1.02f;
+    const float extent = std::max(std::max(half.x, half.y), std::max(half.z, 1e-3f)) * 1.02f *
+                         float(1 << (2 * std::clamp(options.outerLevels, 0, levels - 1)));
     grid.origin = content.center() - glm::vec3(extent);
     grid.size = 2.0f * extent;
 
@@ -456,6 +474,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
                 tasks.push_back({{x, y, z}, &whole, std::size_t(2 * (x + 4 * y + 16 * z))});
     std::vector<CellResult> previous; // the refined cells' results, parents of `tasks`
     long totalLength = 0, totalLeaves = 0;
+    std::size_t cellCount = 64;
     bool tooDeep = false;
     const int threadCount = options.threads > 0
                                 ? options.threads
@@ -472,7 +491,8 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
             for (std::size_t t; (t = next.fetch_add(1)) < tasks.size();) {
                 const glm::vec3 centre = grid.origin + (glm::vec3(tasks[t].cell) + 0.5f) * cellSize;
                 pruneCell(pruner, *tasks[t].parent, centre, cellSize,
-                          &constants[std::size_t(kFarSteps * (level - 1))], results[t], value,
+                          &constants[std::size_t(kFarSteps * (level - 1))],
+                          options.farConstants ? options.refineLeaves : -1, results[t], value,
                           range, side);
             }
         };
@@ -487,9 +507,30 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
         std::vector<CellResult> refined;
         std::vector<std::size_t> refinedTasks; // with their blocks in order, from firstBlock
         const std::size_t firstBlock = entries.size() / 128;
+        // Which cells to refine: those with more shapes than options.refineLeaves, within the
+        // cell budget; cells near the surface first, then those with the most shapes.
+        std::vector<std::size_t> candidates;
+        for (std::size_t t = 0; t < tasks.size(); ++t)
+            if (level < levels && !results[t].far && results[t].leaves > options.refineLeaves)
+                candidates.push_back(t);
+        std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+            const bool nearA = results[a].near, nearB = results[b].near;
+            if (nearA != nearB) return nearA;
+            if (results[a].leaves != results[b].leaves)
+                return results[a].leaves > results[b].leaves;
+            return a < b;
+        });
+        const std::size_t room =
+            options.maxCells > cellCount ? (options.maxCells - cellCount) / 64 : 0;
+        if (candidates.size() > room) candidates.resize(room);
+        std::sort(candidates.begin(), candidates.end());
+        cellCount += 64 * candidates.size();
+        std::vector<bool> refine(tasks.size(), false);
+        for (std::size_t t : candidates)
+            refine[t] = true;
         for (std::size_t t = 0; t < tasks.size(); ++t) {
             CellResult& r = results[t];
-            if (level < levels && !r.far && r.leaves > options.refineLeaves) {
+            if (refine[t]) {
                 entries[tasks[t].entry] =
                     kSdfCellRefined | std::uint32_t(firstBlock + refinedTasks.size());
                 refinedTasks.push_back(t);
@@ -533,6 +574,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     if (tooDeep) { // a pruned part deeper than the stack (the fold of accumulated parts)
         grid.code = program.instructions;
         grid.stats = {};
+        appendOutsideList(grid, program.instructions.size());
         return grid;
     }
     // Lists after the entries; the whole program's list last.
@@ -541,10 +583,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
         if (!(entries[e] & kSdfCellRefined)) entries[e] += base;
     grid.words = std::move(entries);
     grid.words.insert(grid.words.end(), lists.begin(), lists.end());
-    grid.outsideOffset = std::uint32_t(grid.words.size());
-    grid.outsideLength = std::uint32_t(program.instructions.size());
-    for (std::uint32_t i = 0; i < program.instructions.size(); ++i)
-        grid.words.push_back(i);
+    appendOutsideList(grid, program.instructions.size());
     grid.levels = levels;
     grid.stats.meanLength = grid.stats.leafCells ? double(totalLength) / grid.stats.leafCells : 0.0;
     grid.stats.meanLeaves = grid.stats.leafCells ? double(totalLeaves) / grid.stats.leafCells : 0.0;

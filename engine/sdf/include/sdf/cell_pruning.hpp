@@ -13,10 +13,10 @@
 // centre. The operations are monotone, so intervals go up the tree; an operation whose result
 // provably equals one operand over the whole cell (each operation's own rule,
 // sdfOperationPrune) is replaced by that operand. Inside a cell the pruned program's value,
-// material blend and object id are those of the whole program, except in far cells: where the
-// whole program is at least the cell's edge everywhere in the cell, its program is a constant
-// lower bound of that (so it never exceeds the true distance, and a march crosses the cell in
-// a step or two). Outside the grid the whole program runs.
+// material blend and object id are those of the whole program, except in far cells when
+// SdfCellOptions::farConstants asks for them: where the whole program is at least the cell's
+// edge everywhere in the cell and its program is long, a constant lower bound of that (never
+// above the true distance). Outside the grid the whole program runs.
 #pragma once
 
 #include "sdf/bounds.hpp"
@@ -44,9 +44,21 @@ SdfPruneSide sdfOperationPrune(SdfOp op, SdfInterval a, SdfInterval b, float smo
 SdfInterval sdfOperationInterval(SdfOp op, SdfInterval a, SdfInterval b, const glm::vec4& opParams);
 
 struct SdfCellOptions {
-    int levels = 3;       // subdivision levels: 4^levels cells per axis at the finest
+    int levels = 6; // subdivision levels: 4^levels cells per axis at the finest (at most 6)
+    // The grid is the content's cube grown 4^outerLevels times: what lies around the content
+    // (a floor plane to the horizon) is pruned too, and the finest cells are the content's cube
+    // divided 4^(levels - outerLevels) times.
+    int outerLevels = 2;
     int refineLeaves = 4; // a cell whose program has more leaves than this is refined
     int threads = 0;      // 0: one per hardware thread
+    // Far cells with long programs run a constant lower bound (see above). Without it the air
+    // around dense content keeps long programs (the 400-sphere grid: 55 shapes per cell instead
+    // of 2, 7 GB to prune); with it, soft shadows that read those distances are darker in the
+    // penumbra than the whole program gives (depth and ids stay exact).
+    bool farConstants = true;
+    // The most cells in all (memory: 8 bytes each plus their programs); refinement stops there,
+    // cells near the surface refined first.
+    std::size_t maxCells = std::size_t(1) << 21;
 };
 
 struct SdfCellStats {
