@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "headless_session.hpp"
 #include "render/readback.hpp"
+#include "sdf/cell_pruning.hpp"
 #include "sdf/compiler.hpp"
 
 #include <sys/resource.h>
@@ -25,7 +26,7 @@ const OptionSpec kOptions[] = {
     {"--warmup", nullptr, "N", "untimed frames first, lasting at least 300 ms (default 2)"},
     {"--backend", nullptr, "NAME", "auto | egl | osmesa"},
     {"--sdf-strategy", nullptr, "NAME",
-     "baked (default), buffer, interpreter, or all (each in turn, with ratios to baked)"},
+     "baked (default), buffer, interpreter, cells, or all (each in turn, with ratios to baked)"},
     {"--sdf-map", nullptr, "FILE",
      "also time a hand-written SDF map (GLSL defining sdfSceneEmpty, sdfDistance, sdfSurface)"},
     {"--shells", nullptr, "MODE",
@@ -105,6 +106,11 @@ struct StrategyRun {
     double evaluationsPerPixel = 0.0; // the cone and march pass's, per pixel
     std::vector<double> wall;
     std::array<std::vector<double>, std::size_t(Pass::Count)> passes;
+    // The Cells strategy: the cell hierarchy (sdf/cell_pruning.hpp) and the time to prune it
+    // again after one shape moved.
+    int cellLevels = 0;
+    SdfCellStats cells;
+    double repruneMs = 0.0;
 };
 
 // Primitives evaluated per pixel, by program (Variant::program, and whether it skips parts).
@@ -236,9 +242,10 @@ int planBench(const BenchOptions& options, const HeadlessSession& session, Bench
     }
 
     std::vector<SdfStrategy> timed =
-        options.allStrategies ? std::vector<SdfStrategy>{SdfStrategy::Baked, SdfStrategy::Buffer,
-                                                         SdfStrategy::Interpreter}
-                              : std::vector<SdfStrategy>{options.frame.strategy};
+        options.allStrategies
+            ? std::vector<SdfStrategy>{SdfStrategy::Baked, SdfStrategy::Buffer,
+                                       SdfStrategy::Interpreter, SdfStrategy::Cells}
+            : std::vector<SdfStrategy>{options.frame.strategy};
     if (options.sdfMapPath) {
         const std::string& path = *options.sdfMapPath;
         std::ifstream in(path, std::ios::binary);
@@ -314,6 +321,21 @@ double measureMarch(const Renderer& renderer, const FrameTargets& targets, Strat
     return pixels;
 }
 
+// Moves the first shape of the scene's program by a tenth of its distance scale and prunes the
+// whole grid again (there is no incremental re-pruning yet): the time a one-shape edit costs.
+double repruneAfterOneShapeEdit(const PreparedScene& prepared) {
+    SdfProgram program = prepared.sdf;
+    for (GpuSdfInstruction& in : program.instructions)
+        if (SdfOpcode(in.opcode) == SdfOpcode::Shape) {
+            in.worldToLocal[0].w += 0.1f;
+            break;
+        }
+    const auto start = std::chrono::steady_clock::now();
+    const SdfCellGrid grid =
+        buildSdfCells(program, prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
+    return grid.levels > 0 ? millisecondsSince(start) : 0.0;
+}
+
 // Times `variant`: builds its shaders, renders the warm-up and timed frames, reads the march
 // statistics and counts the primitives evaluated (once per program). False when a shader build
 // fails (printed).
@@ -325,6 +347,11 @@ bool runVariant(Renderer& renderer, const Variant& variant, const BenchOptions& 
     renderer.setConePass(variant.conePass);
     GpuScene gpuScene = uploadScene(*prepared, strategy);
     if (strategy == kHandWritten) gpuScene.sdfMap = plan.handWrittenMap;
+    if (gpuScene.sdfCells.id() != 0) {
+        run.cellLevels = gpuScene.sdfCellLevels;
+        run.cells = gpuScene.sdfCellStats;
+        run.repruneMs = repruneAfterOneShapeEdit(*prepared);
+    }
     if (variant.live.first <= variant.live.last)
         gpuScene.sdfMap = generateSdfMap(prepared->sdf, strategy, {}, variant.live);
     const auto compileStart = std::chrono::steady_clock::now();
@@ -341,7 +368,9 @@ bool runVariant(Renderer& renderer, const Variant& variant, const BenchOptions& 
     // per program. Only the interpreter skips parts by their boxes (sdf/glsl_codegen.hpp).
     const bool skips = strategy != kHandWritten &&
                        effectiveSdfStrategy(prepared->sdf, strategy) == SdfStrategy::Interpreter;
-    const std::string countKey = variant.program + (skips ? ", skipping" : "");
+    const bool cells = gpuScene.sdfCells.id() != 0;
+    const std::string countKey =
+        variant.program + (skips ? ", skipping" : "") + (cells ? ", cells" : "");
     const auto counted = std::find_if(evaluations.begin(), evaluations.end(),
                                       [&](const auto& e) { return e.first == countKey; });
     if (counted != evaluations.end()) {
@@ -400,7 +429,19 @@ void printJson(const BenchOptions& options, const HeadlessContext& context, doub
             std::printf("%s\"%s\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}", p ? ", " : "",
                         kPassNames[p], s.median, s.min, s.max);
         }
-        std::printf("}}");
+        std::printf("}");
+        if (run.cellLevels > 0) {
+            const SdfCellStats& c = run.cells;
+            std::printf(", \"cells\": {\"levels\": %d, \"per_level\": [", run.cellLevels);
+            for (std::size_t l = 0; l < c.cellsPerLevel.size(); ++l)
+                std::printf("%s%d", l ? ", " : "", c.cellsPerLevel[l]);
+            std::printf("], \"leaf_cells\": %d, \"programs\": %zu, \"mean_length\": %.2f, "
+                        "\"max_length\": %d, \"mean_shapes\": %.2f, \"prune_ms\": %.1f, "
+                        "\"reprune_one_shape_ms\": %.1f, \"gpu_bytes\": %zu}",
+                        c.leafCells, c.uniquePrograms, c.meanLength, c.maxLength, c.meanLeaves,
+                        c.buildMs, run.repruneMs, c.bytes);
+        }
+        std::printf("}");
     }
     std::printf("]}\n");
 }
@@ -424,6 +465,17 @@ void printText(const BenchOptions& options, const HeadlessContext& context, doub
         if (runs.size() > 1)
             std::printf(", %.2fx the %s frame time", wallStats.median / firstMedian,
                         runs.front().name.c_str());
+        if (run.cellLevels > 0) {
+            const SdfCellStats& c = run.cells;
+            std::printf("\ncells     %d levels, cells per level", run.cellLevels);
+            for (int n : c.cellsPerLevel)
+                std::printf(" %d", n);
+            std::printf("; %d leaf cells, %zu distinct programs of %.1f instructions (%.1f shapes) "
+                        "on average, %d at most; pruned in %.1f ms, again after a one-shape edit "
+                        "in %.1f ms; %.2f MiB on the GPU",
+                        c.leafCells, c.uniquePrograms, c.meanLength, c.meanLeaves, c.maxLength,
+                        c.buildMs, run.repruneMs, double(c.bytes) / (1024.0 * 1024.0));
+        }
         std::printf("\n%-9s %9s %9s %9s\n", "ms", "median", "min", "max");
         std::printf("%-9s %9.2f %9.2f %9.2f\n", "frame", wallStats.median, wallStats.min,
                     wallStats.max);

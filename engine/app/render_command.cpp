@@ -15,7 +15,7 @@ const OptionSpec kOptions[] = {
     {"--size", nullptr, "WxH", "image size in pixels (default 640x360)"},
     {"--backend", nullptr, "NAME", "auto | egl | osmesa (default auto: EGL, then OSMesa)"},
     {"--sdf-strategy", nullptr, "NAME",
-     "how the SDF scene reaches the shader: baked (default), buffer or interpreter"},
+     "how the SDF scene reaches the shader: baked (default), buffer, interpreter or cells (the program pruned per cell; the default above 160 shapes)"},
     {"--shells", nullptr, "MODE",
      "scene (default): shells through their proxy meshes; fullscreen: every SDF node in the "
      "fullscreen pass"},

@@ -38,6 +38,8 @@ void GpuScene::bindBuffers() const {
         glBindTextureUnit(kSdfMaterialTextureFirstUnit + GLuint(i), materialTextures[i].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, shadowViewBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfDataBinding, sdfData.id());
+    if (sdfCells.id() != 0)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfCellBinding, sdfCells.id());
 }
 
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
@@ -60,7 +62,14 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
 
     // The program buffer holds the scene's instructions, then each shell's; the data buffer the
     // same, with the shells' profile instructions pointing at their data's new place.
-    std::vector<GpuSdfInstruction> instructions = prepared.sdf.instructions;
+    // The Cells strategy: the program pruned per cell, whose instructions (the program's and
+    // the few the pruning adds) are the scene's in the buffer.
+    const bool cells = effectiveSdfStrategy(prepared.sdf, strategy) == SdfStrategy::Cells;
+    SdfCellGrid grid;
+    if (cells)
+        grid = buildSdfCells(prepared.sdf,
+                             prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
+    std::vector<GpuSdfInstruction> instructions = cells ? grid.code : prepared.sdf.instructions;
     std::vector<glm::vec4> sdfData = prepared.sdf.data;
     for (const PreparedShell& shell : prepared.shells) {
         SdfProgram program = shell.compiled.program;
@@ -105,6 +114,19 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     // At least as long as its uniform window.
     gpu.sdfProgram = createHeaderedBuffer(sdfHeader, instructions, kSdfUniformBlockBytes);
     gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
+    if (cells) {
+        GpuSdfCellHeader header;
+        header.originSize = glm::vec4(grid.origin, grid.size);
+        header.info =
+            glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength, 0u);
+        std::vector<unsigned char> bytes(sizeof header + grid.words.size() * sizeof(std::uint32_t));
+        std::memcpy(bytes.data(), &header, sizeof header);
+        std::memcpy(bytes.data() + sizeof header, grid.words.data(),
+                    grid.words.size() * sizeof(std::uint32_t));
+        gpu.sdfCells = gl::createBufferWithData(GLsizeiptr(bytes.size()), bytes.data());
+        gpu.sdfCellStats = grid.stats;
+        gpu.sdfCellLevels = grid.levels;
+    }
     gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());
     gpu.sdf = prepared.sdf;
 

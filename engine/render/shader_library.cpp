@@ -21,6 +21,7 @@ std::vector<GlslConstant> renderGlslConstants() {
         {"SHADOW_VIEW_BINDING", unit(kShadowViewBinding)},
         {"SDF_DATA_BINDING", unit(kSdfDataBinding)},
         {"MARCH_STATISTICS_BINDING", unit(kMarchStatisticsBinding)},
+        {"SDF_CELL_BINDING", unit(kSdfCellBinding)},
         {"FRAME_BINDING", unit(kFrameBinding)},
         {"SDF_PROGRAM_UNIFORM_BINDING", unit(kSdfProgramUniformBinding)},
         {"SKY_IMAGE_UNIT", unit(kSkyImageUnit)},

@@ -140,14 +140,30 @@ std::uint32_t sdfNearestLeaf(const SdfProgram& program, glm::vec3 p) {
     return nearest;
 }
 
-float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
-    if (program.instructions.empty()) return kSdfFar;
+namespace {
+
+// The instructions a run reads, in order: the program's own (Whole) or those an index list
+// names (Ordered: a per-cell program, sdf/cell_pruning.hpp). A BoundSkip skips list positions.
+struct WholeProgram {
+    const std::vector<GpuSdfInstruction>& code;
+    std::size_t size() const { return code.size(); }
+    const GpuSdfInstruction& operator[](std::size_t n) const { return code[n]; }
+};
+struct OrderedProgram {
+    std::span<const GpuSdfInstruction> code;
+    std::span<const std::uint32_t> order;
+    std::size_t size() const { return order.size(); }
+    const GpuSdfInstruction& operator[](std::size_t n) const { return code[order[n]]; }
+};
+
+template <class Code>
+float distanceOf(const SdfProgram& program, const Code& code, glm::vec3 p, int* evaluations) {
+    if (code.size() == 0) return kSdfFar;
     std::array<float, kSdfMaxStack> stack{};
     int top = 0; // number of entries on the stack
     std::array<glm::vec3, kSdfMaxPointStack> saved{};
     int savedTop = 0;
     float best = kSdfFar; // what Accumulate unites into
-    const std::vector<GpuSdfInstruction>& code = program.instructions;
     for (std::size_t i = 0; i < code.size(); ++i) {
         const GpuSdfInstruction& instruction = code[i];
         if (instruction.opcode == std::uint32_t(SdfOpcode::BoundSkip)) {
@@ -182,8 +198,10 @@ float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
     return top == 0 ? best : stack[0];
 }
 
-SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p) {
-    if (program.instructions.empty()) {
+template <class Code>
+SdfSurface surfaceOf(const SdfProgram& program, const Code& code,
+                     std::span<const Material> materials, glm::vec3 p) {
+    if (code.size() == 0) {
         SdfSurface none;
         none.distance = kSdfFar;
         return none;
@@ -194,7 +212,6 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
     int savedTop = 0;
     SdfSurface best; // what Accumulate unites into: the nearest so far
     best.distance = kSdfFar;
-    const std::vector<GpuSdfInstruction>& code = program.instructions;
     for (std::size_t i = 0; i < code.size(); ++i) {
         const GpuSdfInstruction& instruction = code[i];
         if (instruction.opcode == std::uint32_t(SdfOpcode::BoundSkip)) {
@@ -233,6 +250,32 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
         }
     }
     return top == 0 ? best : stack[0];
+}
+
+} // namespace
+
+float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations) {
+    return distanceOf(program, WholeProgram{program.instructions}, p, evaluations);
+}
+
+SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p) {
+    return surfaceOf(program, WholeProgram{program.instructions}, materials, p);
+}
+
+float sdfDistanceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
+                         std::span<const std::uint32_t> order, glm::vec3 p, int* evaluations) {
+    return distanceOf(program, OrderedProgram{code, order}, p, evaluations);
+}
+
+SdfSurface sdfSurfaceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
+                             std::span<const std::uint32_t> order,
+                             std::span<const Material> materials, glm::vec3 p) {
+    return surfaceOf(program, OrderedProgram{code, order}, materials, p);
+}
+
+float sdfLeafDistance(const SdfProgram& program, const GpuSdfInstruction& instruction,
+                      glm::vec3 p) {
+    return leafDistance(program, instruction, p);
 }
 
 // Tetrahedron technique (Inigo Quilez, "Normals for an SDF",

@@ -8,12 +8,23 @@
 
 bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 
+// The program that runs at p: positions `base` to `base + count` of a list whose entry n is
+// instruction SDF_PROGRAM_AT(n). Without cells (common/sdf_cells.glsl): the whole program.
+#ifndef SDF_CELLS
+void sdfProgramRange(vec3 p, out uint base, out uint count) {
+    base = 0u;
+    count = sdfHeader.x;
+}
+#define SDF_PROGRAM_AT(n) (n)
+#endif
+
 // One instruction of sdfDistance (the loop body, repeated to unroll the loop). The point stack
 // is handled inline (an array passed to a function would be copied in and out on every call).
 #define SDF_DISTANCE_STEP \
-    if (i < count) { \
+    if (n < count) { \
+        uint i = SDF_PROGRAM_AT(base + n); \
         if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) { \
-            if (sdfBoundDistance(i, p) >= best) i += sdfInstructions[i].kind; \
+            if (sdfBoundDistance(i, p) >= best) n += sdfInstructions[i].kind; \
         } else if (sdfInstructions[i].opcode == SDF_OPCODE_SEED_BEST) { \
             best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
                                              sdfInstructions[i].params[1], \
@@ -46,11 +57,12 @@ bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
             --top; \
         } \
     } \
-    ++i;
+    ++n;
 
 // The scene distance at p (world units; negative inside). Used by the march loop.
 float sdfDistance(vec3 p) {
-    uint count = sdfHeader.x;
+    uint base, count;
+    sdfProgramRange(p, base, count);
     if (count == 0u) return SDF_FAR;
     float stack[SDF_MAX_STACK];
     int top = 0; // number of entries on the stack
@@ -61,7 +73,7 @@ float sdfDistance(vec3 p) {
     // Eight instructions per loop iteration: Mesa's llvmpipe ends a shader invocation's loops
     // after a budget of iterations shared by every loop (LP_MAX_TGSI_LOOP_ITERATIONS), which
     // large programs would exhaust within a few march steps; unrolling stretches it 8 times.
-    for (uint i = 0u; i < count;) {
+    for (uint n = 0u; n < count;) {
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP
     }
@@ -71,7 +83,8 @@ float sdfDistance(vec3 p) {
 // The same program as sdfDistance, carrying the material and object id (see
 // sdfCombineSurfaces). Evaluated once per hit.
 SdfSurface sdfSurface(vec3 p) {
-    uint count = sdfHeader.x;
+    uint base, count;
+    sdfProgramRange(p, base, count);
     if (count == 0u) return sdfEmptySurface(p);
     SdfSurface stack[SDF_MAX_STACK];
     int top = 0;
@@ -79,9 +92,10 @@ SdfSurface sdfSurface(vec3 p) {
     int savedTop = 0;
     SdfSurface best = sdfEmptySurface(p); // what SDF_OPCODE_ACCUMULATE unites into
     stack[0] = best;                      // (read only if the program pushes nothing)
-    for (uint i = 0u; i < count; ++i) {
+    for (uint n = 0u; n < count; ++n) {
+        uint i = SDF_PROGRAM_AT(base + n);
         if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) i += sdfInstructions[i].kind;
+            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructions[i].kind;
         } else if (sdfInstructions[i].opcode == SDF_OPCODE_SEED_BEST) {
             // Surfaces are not seeded: `best` must be a part's surface.
         } else if (sdfInstructions[i].opcode == SDF_OPCODE_ACCUMULATE) {

@@ -23,8 +23,9 @@ struct Agreement {
 // Casts the ray of every `step`-th pixel on the CPU and compares with the GPU AOVs. Pixels
 // where the GPU shows a mesh are checked too: the CPU ray, stopped at the mesh depth, must not
 // hit an SDF object in front of it.
-Agreement compare(const PreparedScene& prepared, int width, int height, int step) {
-    const FrameTargets targets = renderPrepared(prepared, width, height);
+Agreement compare(const PreparedScene& prepared, int width, int height, int step,
+                  SdfStrategy strategy = SdfStrategy::Baked) {
+    const FrameTargets targets = renderPrepared(prepared, width, height, nullptr, strategy);
     const Pixels<std::uint32_t> ids = readObjectIds(targets);
     const Pixels<float> depths = readViewDepth(targets);
     const Scene& scene = prepared.scene;
@@ -131,4 +132,35 @@ TEST(CpuGpuAgreement, BlendChamferRoundXor) {
 }
 TEST(CpuGpuAgreement, DemoScene) {
     expectAgreement("samples/scenes/demo.json", 0.04);
+}
+
+// The Cells strategy (the program pruned per cell, sdf/cell_pruning.hpp) against CPU ray casts
+// through the whole program: a binary tree of 256 spheres whose levels alternate union and
+// smooth union over a plane, seen to the horizon (where the interpreter used to run out of
+// llvmpipe's loop budget and draw wrong tiles), and the samples with every operation and
+// modifier.
+TEST(CpuGpuAgreement, CellsOnASmoothTreeToTheHorizon) {
+    const PreparedScene prepared = openRepositoryScene("samples/bench/tree_256.json");
+    ASSERT_EQ(effectiveSdfStrategy(prepared.sdf, SdfStrategy::Baked), SdfStrategy::Cells);
+    const Agreement a = compare(prepared, 96, 54, 2);
+    EXPECT_GT(a.sdfHits, a.sampled * 3 / 4); // the rest is sky above the horizon
+    EXPECT_LE(a.idMismatches, a.sampled / 100) << a.firstProblem;
+    EXPECT_LE(a.depthMismatches, a.sampled / 100) << a.firstProblem;
+    EXPECT_EQ(a.gpuMisses, 0) << a.firstProblem;
+}
+
+// Every operation, modifier and profile of the samples through the Cells strategy: depth and
+// ids as the CPU casts them through the whole program. (Its far cells' constants change soft
+// shadows, not what is hit: see sdf/cell_pruning.hpp.)
+TEST(CpuGpuAgreement, CellsOnEveryOperationAndModifier) {
+    for (const char* name : {"csg", "modifiers", "smooth_blend"}) {
+        SCOPED_TRACE(name);
+        const PreparedScene prepared =
+            openRepositoryScene(std::string("samples/scenes/") + name + ".json");
+        const Agreement a = compare(prepared, 128, 72, 2, SdfStrategy::Cells);
+        EXPECT_GT(a.sdfHits, a.sampled / 10);
+        EXPECT_LE(a.idMismatches, a.sampled / 100) << a.firstProblem;
+        EXPECT_LE(a.depthMismatches, a.sampled / 100) << a.firstProblem;
+        EXPECT_EQ(a.gpuMisses, 0) << a.firstProblem;
+    }
 }

@@ -144,3 +144,4 @@ TEST(SdfStrategies, BoundsDoNotChangeTheImage) {
         EXPECT_LE(differing, int(idsA.data.size() / 200));
     }
 }
+

@@ -22,6 +22,7 @@ enum SsboBinding : unsigned {
     kShadowViewBinding = 3,
     kSdfDataBinding = 4,         // SdfProgram::data (shaders/common/sdf_scene.glsl)
     kMarchStatisticsBinding = 5, // fragments that marched (shaders/common/march_statistics.glsl)
+    kSdfCellBinding = 6,         // the cell table and programs (shaders/common/sdf_cells.glsl)
 };
 
 // Uniform block binding points: the frame (shaders/common/frame.glsl) and the program buffer's
@@ -31,6 +32,13 @@ enum UboBinding : unsigned { kFrameBinding = 0, kSdfProgramUniformBinding = 1 };
 // Texture units of the lighting inputs every shading pass samples (shaders/common/sky.glsl,
 // shadows.glsl); passes keep their own textures on lower units.
 enum LightingTextureUnit : unsigned { kSkyImageUnit = 14, kShadowMapUnit = 15 };
+
+// The header of the cell buffer (shaders/common/sdf_cells.glsl), before SdfCellGrid::words.
+struct GpuSdfCellHeader {
+    glm::vec4 originSize{0.0f}; // xyz = the grid cube's corner, w = its edge
+    glm::uvec4 info{0u};        // x = levels, y = the whole program's list offset, z = its length
+};
+static_assert(sizeof(GpuSdfCellHeader) == 32);
 
 // GpuLight::directionType.w.
 enum GpuLightType : int { kGpuDirectional = 0, kGpuPoint = 1, kGpuSpot = 2 };

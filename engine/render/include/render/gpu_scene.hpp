@@ -6,6 +6,7 @@
 #include "prepare/prepared_scene.hpp"
 #include "render/gpu_layout.hpp"
 #include "render/gpu_mesh.hpp"
+#include "sdf/cell_pruning.hpp"
 #include "sdf/glsl_codegen.hpp"
 
 #include <vector>
@@ -45,8 +46,13 @@ struct GpuScene {
     std::vector<Material> materials; // copy of PreparedScene::materials, for overrides
     gl::Buffer sdfProgram;           // GpuSdfHeader + instructions
     gl::Buffer sdfData;              // SdfProgram::data (vec4[], at least one entry)
-    gl::Buffer materialBuffer;       // GpuMaterial[]
-    gl::Buffer lightBuffer;          // GpuLightHeader + GpuLight[]
+    // The Cells strategy's cell table and programs (GpuSdfCellHeader + SdfCellGrid::words),
+    // none for the other strategies, and what building it measured.
+    gl::Buffer sdfCells;
+    SdfCellStats sdfCellStats;
+    int sdfCellLevels = 0;
+    gl::Buffer materialBuffer; // GpuMaterial[]
+    gl::Buffer lightBuffer;    // GpuLightHeader + GpuLight[]
     // SDF material textures, one per PreparedScene::textures entry, bound to texture units
     // kSdfMaterialTextureFirstUnit + slot by bindBuffers.
     std::vector<gl::Texture> materialTextures;

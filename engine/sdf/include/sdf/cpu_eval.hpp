@@ -36,6 +36,17 @@ float sdfDistance(const SdfProgram& program, glm::vec3 p, int* evaluations = nul
 std::uint32_t sdfNearestLeaf(const SdfProgram& program, glm::vec3 p);
 // `materials` is indexed by GpuSdfInstruction::material.
 SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p);
+// The same for the instructions `order` names, in that order, out of `code` (a per-cell
+// program of sdf/cell_pruning.hpp; `program` gives the data buffer). A BoundSkip skips
+// positions of `order`.
+float sdfDistanceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
+                         std::span<const std::uint32_t> order, glm::vec3 p,
+                         int* evaluations = nullptr);
+SdfSurface sdfSurfaceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
+                             std::span<const std::uint32_t> order,
+                             std::span<const Material> materials, glm::vec3 p);
+// The distance of one shape or profile instruction at world point p.
+float sdfLeafDistance(const SdfProgram& program, const GpuSdfInstruction& instruction, glm::vec3 p);
 // Normalized gradient by the tetrahedron technique (4 evaluations; Quilez, "normals for an SDF").
 glm::vec3 sdfNormal(const SdfProgram& program, glm::vec3 p, float h);
 

@@ -18,6 +18,8 @@ enum class SdfStrategy {
     Interpreter, // the generic interpreter reading the program buffer (common/sdf_interpreter.glsl)
     Buffer,      // generated code, parameters read from the program buffer: edits need no compile
     Baked,       // generated code, parameters as literals: the fastest, recompiled on every edit
+    Cells,       // the interpreter on the program pruned to the cell of each point (cells.glsl,
+                 // sdf/cell_pruning.hpp): its text depends on the primitive kinds used only
 };
 
 std::string_view sdfStrategyName(SdfStrategy strategy);
@@ -26,8 +28,8 @@ std::optional<SdfStrategy> parseSdfStrategy(std::string_view name);
 // Generated code costs shader-compile time in proportion to the scene: the map is inlined at
 // each place the shaders evaluate it (march, normal, surface, texture frame, soft shadow, AO),
 // and on llvmpipe each leaf costs about 0.2 s of compiling and 15 MiB of compiler memory.
-// Above this many leaves the renderer falls back to the interpreter, whose compile cost does
-// not grow with the scene (about 40 s on llvmpipe).
+// Above this many leaves the renderer falls back to the Cells strategy, whose compile cost does
+// not grow with the scene, nor its cost per step with the shapes away from the point.
 constexpr int kMaxGeneratedLeaves = limits::kGeneratedCodeShapes;
 
 // The strategy used for `program` when `requested` is asked for (see kMaxGeneratedLeaves).

@@ -1,0 +1,113 @@
+// Per-cell pruning of a compiled SDF program: a hierarchy of cells (4x4x4 per level, coarse to
+// fine) over the scene's content, and for each cell the program specialised to it, holding
+// only the nodes that can change the distance inside the cell. The march, normals, shadows
+// and AO evaluate the program of the cell the point is in (shaders/common/sdf_cells.glsl, the
+// Cells strategy of sdf/glsl_codegen.hpp), so a step costs what the few shapes near the point
+// cost, not what the scene costs. After "Lipschitz Pruning" (Barbier, Sanchez, Paris, Galin,
+// Tricard and Guérin, Eurographics 2025) and the per-tile specialisation of Keeter, "Massively
+// Parallel Rendering of Complex Closed-Form Implicit Surfaces" (SIGGRAPH 2020).
+//
+// The rule: every leaf's field (a shape, a profile, or a node with its own point frame taken
+// whole) is 1-Lipschitz as the compiler emits it (its distance scale and step corrections make
+// it so), so over a cell of half-diagonal r its value lies in [v - r, v + r], v its value at the
+// centre. The operations are monotone, so intervals go up the tree; an operation whose result
+// provably equals one operand over the whole cell (each operation's own rule,
+// sdfOperationPrune) is replaced by that operand. Inside a cell the pruned program's value,
+// material blend and object id are those of the whole program, except in far cells when
+// SdfCellOptions::farConstants asks for them: where the whole program is at least the cell's
+// edge everywhere in the cell and its program is long, a constant lower bound of that (never
+// above the true distance). Outside the grid the whole program runs.
+#pragma once
+
+#include "sdf/bounds.hpp"
+#include "sdf/program.hpp"
+#include "sdf/sdf_tree.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace rmsc {
+
+// An interval of field values over a region.
+struct SdfInterval {
+    float lo = 0.0f;
+    float hi = 0.0f;
+};
+
+// Which operand an operation equals over a region where its operands lie in `a` and `b`.
+enum class SdfPruneSide { Both, A, B };
+SdfPruneSide sdfOperationPrune(SdfOp op, SdfInterval a, SdfInterval b, float smoothness);
+// The interval of op(a, b) over the region (op is monotone in each operand).
+SdfInterval sdfOperationInterval(SdfOp op, SdfInterval a, SdfInterval b, const glm::vec4& opParams);
+
+struct SdfCellOptions {
+    int levels = 6; // subdivision levels: 4^levels cells per axis at the finest (at most 6)
+    // The grid is the content's cube grown 4^outerLevels times: what lies around the content
+    // (a floor plane to the horizon) is pruned too, and the finest cells are the content's cube
+    // divided 4^(levels - outerLevels) times.
+    int outerLevels = 2;
+    int refineLeaves = 4; // a cell whose program has more leaves than this is refined
+    int threads = 0;      // 0: one per hardware thread
+    // Far cells with long programs run a constant lower bound (see above). Without it the air
+    // around dense content keeps long programs (the 400-sphere grid: 55 shapes per cell instead
+    // of 2, 7 GB to prune); with it, soft shadows that read those distances are darker in the
+    // penumbra than the whole program gives (depth and ids stay exact).
+    bool farConstants = true;
+    // The most cells in all (memory: 8 bytes each plus their programs); refinement stops there,
+    // cells near the surface refined first.
+    std::size_t maxCells = std::size_t(1) << 21;
+};
+
+struct SdfCellStats {
+    std::vector<int> cellsPerLevel; // cells made at each level (64 per refined cell)
+    int leafCells = 0;              // cells with a program of their own (not refined)
+    double meanLength = 0.0;        // instructions per leaf cell's program, mean
+    int maxLength = 0;              // and largest
+    double meanLeaves = 0.0;        // shape evaluations per leaf cell's program, mean
+    std::size_t uniquePrograms = 0; // distinct programs after sharing equal ones
+    double buildMs = 0.0;           // wall time of buildSdfCells
+    std::size_t bytes = 0;          // GPU bytes of the cell table and index lists
+};
+
+// The cells and their programs, laid out as the GPU reads them (sdf_cells.glsl): `words` holds
+// blocks of 64 cells of 2 words each (block 0: the cells of the first level, x + 4 y + 16 z),
+// then the programs' index lists. A cell is (offset in words of its list, length) or, when
+// refined, (kSdfCellRefined | the index of its block of 64, 0). Indices refer to `code`: the
+// program's instructions followed by the instructions the pruning adds.
+constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
+
+struct SdfCellGrid {
+    int levels = 0;         // 0: no grid (everything runs the whole program)
+    glm::vec3 origin{0.0f}; // the grid is the cube [origin, origin + size]
+    float size = 0.0f;
+    std::vector<std::uint32_t> words;
+    std::uint32_t outsideOffset = 0; // the whole program's list (identity), in words
+    std::uint32_t outsideLength = 0;
+    std::vector<GpuSdfInstruction> code; // program.instructions + the added ones
+    SdfCellStats stats;
+};
+
+// The content box of a tree: the union of the world boxes of its bounded parts (unbounded
+// groups are looked into; the rest of an unbounded part is left out). Empty when nothing is
+// bounded.
+Aabb sdfContentBox(const SdfNode& root);
+
+// Prunes `program` (with or without its bounding hierarchy) over the cube around `content`.
+// No grid (levels 0) when `content` is empty or the program cannot be split into a tree.
+SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
+                          const SdfCellOptions& options = {});
+
+// The list of the program that runs at p (the cell's, or the whole program's outside the
+// grid): its offset in grid.words and its length, computed as the shader does.
+struct SdfCellRange {
+    std::uint32_t offset = 0;
+    std::uint32_t length = 0;
+    int level = 0; // of the cell (its edge: grid.size / 4^level); 0 outside the grid
+};
+SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p);
+std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
+
+} // namespace rmsc
