@@ -494,6 +494,10 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
                           &constants[std::size_t(kFarSteps * (level - 1))],
                           options.farConstants ? options.refineLeaves : -1, results[t], value,
                           range, side);
+                // Only cells that may be refined keep their pruned tree (memory: the finest
+                // level holds most cells).
+                if (level == levels || results[t].leaves <= options.refineLeaves)
+                    PrunedTree().swap(results[t].pruned);
             }
         };
         std::vector<std::thread> workers;

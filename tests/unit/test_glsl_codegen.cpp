@@ -81,20 +81,26 @@ TEST(GlslCodegen, EmptySceneNeverHits) {
     EXPECT_NE(map.find("return SDF_FAR;"), std::string::npos);
 }
 
-TEST(GlslCodegen, VeryLargeScenesFallBackToTheInterpreter) {
+TEST(GlslCodegen, VeryLargeScenesFallBackToCells) {
     std::string children;
     for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
         children += std::string(i ? ", " : "") +
                     R"({"shape": "sphere", "radius": 0.1, "position": [)" + std::to_string(i) +
                     ", 0, 0]}";
     const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
-    EXPECT_EQ(effectiveSdfStrategy(large, SdfStrategy::Baked), SdfStrategy::Interpreter);
+    EXPECT_EQ(effectiveSdfStrategy(large, SdfStrategy::Baked), SdfStrategy::Cells);
     const std::string map = generateSdfMap(large, SdfStrategy::Baked);
-    // (the lean interpreter: a union of shapes is box tests and parts)
-    EXPECT_NE(map.find("#include \"common/sdf_parts_loop.glsl\""), std::string::npos);
-    // Its dispatch holds only the kinds the scene uses.
+    // (the stackless loop of the cells: a union of shapes is box tests and parts)
+    EXPECT_NE(map.find("#define SDF_CELLS_LEAN 1"), std::string::npos);
+    EXPECT_NE(map.find("#include \"common/sdf_cells.glsl\""), std::string::npos);
+    // Its dispatch holds only the kinds the scene uses, and the plane of the far cells.
     EXPECT_NE(map.find("sdSphere("), std::string::npos);
+    EXPECT_NE(map.find("sdPlane("), std::string::npos);
     EXPECT_EQ(map.find("sdBox("), std::string::npos);
+    // The interpreter when asked for.
+    EXPECT_NE(generateSdfMap(large, SdfStrategy::Interpreter)
+                  .find("#include \"common/sdf_parts_loop.glsl\""),
+              std::string::npos);
     EXPECT_EQ(effectiveSdfStrategy(test::compileSdfText(kTwoShapes), SdfStrategy::Baked),
               SdfStrategy::Baked);
 }
