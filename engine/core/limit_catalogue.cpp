@@ -68,8 +68,17 @@ constexpr Limit kLimits[] = {
      "refused at the node's `shell` key", "kShellShapes"},
     {"Shapes drawn by generated code", kGeneratedCodeShapes, "",
      "the shapes of an SDF tree drawn by the baked or buffer strategy",
-     "the tree is drawn by the interpreter instead (slower frames, no long shader build)",
+     "the tree is drawn by its per-cell programs instead (the `cells` strategy: no shader build "
+     "that grows with the scene)",
      "kGeneratedCodeShapes"},
+    {"Pruning cells", kSdfCells, "",
+     "cells of the `cells` strategy's hierarchy (8 bytes each on the GPU, plus their programs)",
+     "refinement stops: the cells near the surface are refined first, the rest keep their "
+     "parents' programs",
+     "kSdfCells"},
+    {"Pruning levels", kSdfCellLevels, "levels",
+     "4x4x4 subdivisions of the `cells` strategy's grid (the content's cube grown 16 times)",
+     "fixed: the finest cells are the content's cube divided 256 times", "kSdfCellLevels"},
     {"Shadow maps", kShadowViews, "",
      "mesh shadow maps of a scene, in light order: one per directional or spot light, six per "
      "point light",

@@ -34,8 +34,11 @@ constexpr int kSdfPointStack = 16;        // point stack: how deep saved points 
 constexpr int kSdfData = 1 << 16;         // entries of the SDF data buffer (polygon points)
 constexpr int kShellShapes = 160;         // shapes in one shell (its map is generated code)
 // Shapes of a tree drawn by generated code; above it the renderer draws the tree with the
-// interpreter (generated code costs compile time in proportion to the scene).
+// per-cell programs (generated code costs compile time in proportion to the scene).
 constexpr int kGeneratedCodeShapes = 160;
+// Cells of the per-cell pruning (sdf/cell_pruning.hpp) in all, and its levels.
+constexpr int kSdfCells = 1 << 21;
+constexpr int kSdfCellLevels = 6;
 
 // ---- Rendering (engine/render) ----
 constexpr int kShadowViews = 12; // shadow-map layers of a scene (a point light takes six)

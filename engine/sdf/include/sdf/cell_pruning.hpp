@@ -19,6 +19,7 @@
 // above the true distance). Outside the grid the whole program runs.
 #pragma once
 
+#include "core/limits.hpp"
 #include "sdf/bounds.hpp"
 #include "sdf/program.hpp"
 #include "sdf/sdf_tree.hpp"
@@ -58,7 +59,7 @@ struct SdfCellOptions {
     bool farConstants = true;
     // The most cells in all (memory: 8 bytes each plus their programs); refinement stops there,
     // cells near the surface refined first.
-    std::size_t maxCells = std::size_t(1) << 21;
+    std::size_t maxCells = std::size_t(limits::kSdfCells);
 };
 
 struct SdfCellStats {
