@@ -43,10 +43,11 @@ TEST(FuzzRegressions, SceneInputsAreReadWithoutCrashing) {
     }
 }
 
-TEST(FuzzRegressions, GltfInputsAreReadWithoutCrashing) {
+// Loads every glTF regression input as the fuzzers serve it (the input itself, other files from
+// the samples), with the default budget or with `budget`.
+void loadGltfInputs(GltfBudget* budget) {
     for (const fs::path& path : inputs("gltf")) {
         SCOPED_TRACE(path.string());
-        // Served like the fuzzer serves them: the input itself, other files from the samples.
         const std::string bytes = read(path);
         const fs::path entry = bytes.starts_with("glTF") ? "fuzz/model.glb" : "fuzz/model.gltf";
         const FileSource embedded = embeddedFileSource();
@@ -55,7 +56,23 @@ TEST(FuzzRegressions, GltfInputsAreReadWithoutCrashing) {
             return embedded.read(fs::path("samples/assets") / p.filename(), error);
         }};
         Diagnostics d;
-        const auto asset = loadGltf(entry, files, d);
+        GltfBudget left;
+        if (budget) left = *budget;
+        const auto asset = budget ? loadGltf(entry, files, d, left) : loadGltf(entry, files, d);
         EXPECT_NE(asset.has_value(), d.hasErrors()) << d.format();
     }
+}
+
+TEST(FuzzRegressions, GltfInputsAreReadWithoutCrashing) {
+    loadGltfInputs(nullptr);
+}
+
+// fuzz_gltf_accessors loads what it builds with this budget; its findings are kept here as the
+// .glb it built (RMSC_FUZZ_WRITE_GLB) and replayed the same way.
+TEST(FuzzRegressions, GltfInputsAreReadWithoutCrashingUnderTheAccessorFuzzersBudget) {
+    GltfBudget small;
+    small.vertices = 1u << 16;
+    small.indices = 1u << 18;
+    small.texels = 1u << 20;
+    loadGltfInputs(&small);
 }
