@@ -3,6 +3,7 @@
 // (see inspector.hpp).
 #include "inspector.hpp"
 
+#include "editor/inspector_keys.hpp"
 #include "editor/param_fields.hpp"
 #include "editor/profile_edits.hpp"
 #include "editor/scene_edits.hpp"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 
 namespace rmsc::app {
@@ -41,6 +43,24 @@ void drawGroupFields(SdfNode& node, float size, editor::Document& document) {
                          "%.4f", ImGuiSliderFlags_AlwaysClamp))
         document.markChanged("Smoothness");
     helpTooltip(smoothnessParam().description);
+    if (!takesBlend(node.op)) return;
+    const std::span<const BlendSpec> blends = blendCatalogue();
+    const auto current = std::find_if(blends.begin(), blends.end(),
+                                      [&](const BlendSpec& b) { return b.blend == node.blend; });
+    const std::string currentName =
+        current != blends.end() ? std::string(current->name) : std::string("?");
+    if (ImGui::BeginCombo(editor::kBlendControl, currentName.c_str())) {
+        for (const BlendSpec& blend : blends) {
+            if (ImGui::Selectable(std::string(blend.name).c_str(), node.blend == blend.blend) &&
+                node.blend != blend.blend) {
+                node.blend = blend.blend;
+                document.markChanged("Blend");
+            }
+            helpTooltip(blend.description);
+        }
+        ImGui::EndCombo();
+    }
+    helpTooltip("The curve of the smooth seam.");
 }
 
 // Makes the shape `other`; parameters of the same name keep their values.
@@ -149,6 +169,12 @@ void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& pa
     if (editTransform(node->transform, state.worldCoordinates,
                       editor::sdfParentWorldMatrix(scene, path), size))
         document.markChanged("Transform");
+    if (!path.empty()) {
+        if (ImGui::Checkbox(editor::kCutControl, &node->cut)) document.markChanged("Cut");
+        helpTooltip("Subtracted from the union (or other operation) of its siblings that are not "
+                    "cut, whichever order they come in. A group needs at least one child that is "
+                    "not cut.");
+    }
     ImGui::Separator();
     if (node->isGroup)
         drawGroupFields(*node, size, document);

@@ -70,6 +70,7 @@ void saveSceneAs(const std::filesystem::path& path, editor::Document& document, 
     const std::filesystem::path previousFile = document.file();
     if (!document.saveAs(path, error)) {
         messages.fileError = "Save failed; your edits are kept in memory.\n" + error;
+        std::fprintf(stderr, "rmsc view: save failed: %s\n", error.c_str());
         return;
     }
     editor::removeRecovery(previousFile); // the edits are safe in the file now

@@ -11,6 +11,10 @@ A second run on a fresh copy of the scene makes things with the Add menu: a poin
 with G), a spot and a directional light, then selects the point light by clicking its marker
 and moves it again, adds a revolution and a chamfer union group, and saves; the test checks
 the saved file and that the window shows the lights' markers.
+A third run marks both children of the root group as cut with the inspector's cut checkbox (a
+group whose every child is cut does not compile), presses Ctrl+S and checks the save is refused
+(the log names /sdf, the problems panel shows it, the file is unchanged), then undoes one cut
+and saves successfully.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -153,6 +157,46 @@ def create_run(rmsc, source, tmp, xvfb_run, check):
               marker_pixels(shots["moved-again"], (357, 150), 6))
 
 
+def refuse_run(rmsc, source, tmp, xvfb_run, check):
+    """The third run (tests/e2e/viewer_refuse_script.txt): a save the viewer refuses."""
+    folder = os.path.join(tmp, "refuse")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    original = open(scene).read()
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_refuse_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script", script,
+               "--size", "640x360", "--embedded-shaders"]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
+    print(run.stderr[-2000:])
+    check("third run: viewer exits 0", run.returncode == 0, run.returncode)
+    refusal = re.search(r"rmsc view: save failed: the scene is not valid, so nothing was written"
+                        r".*\n/sdf: every child of the group is marked \"cut\"", run.stderr)
+    check("the save with every child cut was refused, naming /sdf", refusal is not None, run.stderr[-2000:])
+    saved = run.stderr.find("rmsc view: saved ")
+    check("then the save after the undo succeeded", refusal is not None and saved > refusal.start(),
+          run.stderr[-2000:])
+    # The only save that wrote made the backup: the file as it was before the run, so the refused
+    # save wrote nothing.
+    backup = scene + ".bak"
+    check("the refused save left the file as it was (the later save's backup is the original)",
+          os.path.exists(backup) and open(backup).read() == original)
+    children = json.load(open(scene))["sdf"]["children"]
+    check("the file holds the scene after the undo: the ball cut, the base not",
+          [c.get("cut", False) for c in children] == [True, False], children)
+    path = os.path.join(folder, "refused.png")
+    check("third run: window shot refused written", os.path.exists(path))
+    if os.path.exists(path):
+        width, height, channels, rows = read_png(path)
+        # The problems panel over the lower part of the view, in red text.
+        red = sum(1 for y in range(180, 345) for x in range(160, 430)
+                  if rows[y][x * channels] > 180 and rows[y][x * channels + 1] < 120 and
+                  rows[y][x * channels + 2] < 120)
+        check("the refusal is shown in the problems panel", red > 300, red)
+
+
 def main():
     rmsc, source = sys.argv[1], sys.argv[2]
     xvfb_run = shutil.which("xvfb-run")
@@ -239,6 +283,7 @@ def main():
             check("redo gives the edited image again", len(differing_pixels(shots["after"], shots["redone"])) < 20)
             check("flying changed the view", len(differing_pixels(shots["before"], shots["undone"])) > 200)
         create_run(rmsc, source, tmp, xvfb_run, check)
+        refuse_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

@@ -1,0 +1,163 @@
+// The keys the inspector edits (editor/inspector_keys.hpp). The hand-written rows name the
+// controls in engine/viewer/inspector_*.cpp; parameters come from the catalogues the inspector
+// draws its fields from.
+#include "editor/inspector_keys.hpp"
+
+#include "scene/light_spec.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/primitives.hpp"
+#include "sdf/profiles.hpp"
+
+#include <string_view>
+
+namespace rmsc::editor {
+namespace {
+
+struct KeyControl {
+    std::string_view key;
+    std::string_view control;
+};
+
+// Every SDF node: engine/viewer/inspector_sdf_node.cpp and the widgets it calls.
+constexpr KeyControl kNodeKeys[] = {
+    {"name", "name"},
+    {"material", "material"},
+    {"modifiers", "add modifier / remove, one field per parameter"},
+    {"cut", kCutControl},
+    {"shell", "draw through a proxy mesh"},
+    {"position", "position"},
+    {"rotation", "rotation"},
+    {"scale", "scale"},
+    {"quaternion", "rotation (the same rotation; a save writes it as this exact quaternion)"},
+};
+
+constexpr KeyControl kGroupKeys[] = {
+    {"op", "operation"},
+    {"smoothness", "smoothness"},
+    {"blend", kBlendControl},
+};
+
+constexpr KeyControl kShellKeys[] = {
+    {"proxy", "proxy"},
+    {"bound", "clip to a bound / bound"},
+    {"mesh", "proxy (a glTF file)"},
+};
+
+// engine/viewer/inspector_light.cpp.
+constexpr KeyControl kLightKeys[] = {
+    {"type", "type"},
+    {"name", "name"},
+    {"color", "colour"},
+    {"intensity", "intensity"},
+    {"shadows", "casts shadows"},
+    {"shadow_softness", "own shadow softness / shadow softness"},
+};
+
+// engine/viewer/inspector_material.cpp, inspector_textures.cpp.
+constexpr KeyControl kMaterialKeys[] = {
+    {"base_color", "base colour"},
+    {"metallic", "metallic"},
+    {"roughness", "roughness"},
+    {"emissive", "emissive"},
+    {"base_color_texture", "base colour texture: file"},
+    {"normal_texture", "normal texture: file"},
+    {"roughness_texture", "roughness texture: file"},
+};
+
+constexpr KeyControl kTextureKeys[] = {
+    {"file", "file"},
+    {"scale", "scale"},
+    {"sharpness", "sharpness"},
+};
+
+// engine/viewer/inspector_render_settings.cpp.
+constexpr KeyControl kRenderKeys[] = {
+    {"max_steps", "max steps"},
+    {"max_distance", "max distance"},
+    {"surface_epsilon", "surface epsilon"},
+    {"background", "background"},
+    {"ambient", "ambient"},
+    {"exposure", "exposure"},
+};
+
+void add(std::vector<InspectorKey>& keys, const std::string& object,
+         std::span<const KeyControl> rows) {
+    for (const KeyControl& row : rows)
+        keys.push_back({object, std::string(row.key), std::string(row.control)});
+}
+
+// The SDF node objects of the schema: the group, each primitive's shape and each profile solid.
+std::vector<std::string> nodeObjects() {
+    std::vector<std::string> objects = {"group"};
+    for (const PrimitiveSpec& spec : primitiveCatalogue())
+        objects.push_back("shape_" + std::string(spec.name));
+    for (const ProfileSolidSpec& solid : profileSolidCatalogue())
+        objects.push_back("shape_" + std::string(solid.name));
+    return objects;
+}
+
+} // namespace
+
+std::vector<InspectorKey> inspectorKeys() {
+    std::vector<InspectorKey> keys;
+    for (const std::string& object : nodeObjects())
+        add(keys, object, kNodeKeys);
+    add(keys, "group", kGroupKeys);
+    for (const PrimitiveSpec& spec : primitiveCatalogue()) {
+        const std::string object = "shape_" + std::string(spec.name);
+        keys.push_back({object, "shape", "shape"});
+        for (const ParamSpec& p : spec.params)
+            keys.push_back({object, std::string(p.name), std::string(p.name)});
+    }
+    for (const ProfileSolidSpec& solid : profileSolidCatalogue()) {
+        const std::string object = "shape_" + std::string(solid.name);
+        keys.push_back({object, "shape", "shape"});
+        keys.push_back({object, "profile", "profile"});
+        keys.push_back(
+            {object, std::string(solid.param.spec.key), std::string(solid.param.spec.key)});
+    }
+    for (const ProfileSpec& spec : profileCatalogue()) {
+        const std::string object = "profile_" + std::string(spec.name);
+        keys.push_back({object, "type", "profile"});
+        for (const ProfileParam& p : spec.params)
+            keys.push_back({object, std::string(p.spec.key), std::string(p.spec.key)});
+    }
+    for (const ModifierSpec& spec : modifierCatalogue()) {
+        const std::string object = "modifier_" + std::string(spec.name);
+        keys.push_back({object, "type", "add modifier"});
+        for (const ModifierParam& p : spec.params)
+            keys.push_back({object, std::string(p.spec.key), std::string(p.spec.key)});
+    }
+    add(keys, "shell", kShellKeys);
+    for (LightType type : kLightTypes) {
+        const std::string object = "light_" + std::string(lightTypeName(type));
+        add(keys, object, kLightKeys);
+        if (hasPosition(type)) keys.push_back({object, "position", "position"});
+        if (hasDirection(type)) keys.push_back({object, "direction", "azimuth / elevation"});
+        if (hasRange(type)) keys.push_back({object, "range", "limited range / range"});
+        if (hasCone(type)) {
+            keys.push_back({object, "inner_angle", "inner angle"});
+            keys.push_back({object, "outer_angle", "outer angle"});
+        }
+    }
+    add(keys, "material", kMaterialKeys);
+    add(keys, "texture", kTextureKeys);
+    add(keys, "normal_texture", kTextureKeys);
+    keys.push_back({"normal_texture", "strength", "strength"});
+    add(keys, "render", kRenderKeys);
+    return keys;
+}
+
+std::vector<InspectorKey> keysNotInInspector() {
+    std::vector<InspectorKey> keys;
+    keys.push_back({"group", "children",
+                    "the Scene panel edits the hierarchy (+ Shape, + Group, drag and drop, "
+                    "Ctrl+D, Delete)"});
+    for (const char* key : {"shadows", "ao", "fxaa"})
+        keys.push_back({"render", key,
+                        "no control yet: the shadow, ambient occlusion and FXAA settings are "
+                        "edited in the file only"});
+    return keys;
+}
+
+} // namespace rmsc::editor
