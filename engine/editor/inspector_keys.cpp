@@ -78,6 +78,25 @@ constexpr KeyControl kRenderKeys[] = {
     {"background", "background"},
     {"ambient", "ambient"},
     {"exposure", "exposure"},
+    {"shadows", "shadows"},
+    {"ao", "AO samples"},
+    {"fxaa", "FXAA"},
+};
+constexpr KeyControl kShadowKeys[] = {
+    {"enabled", "shadows"},
+    {"steps", "shadow steps"},
+    {"softness", "shadow softness"},
+    {"min_distance", "shadow min distance"},
+    {"max_distance", "shadow max distance"},
+    {"map_size", "shadow map size"},
+    {"pcf_radius", "shadow PCF radius"},
+    {"normal_offset", "shadow normal offset"},
+    {"slope_bias", "shadow slope bias"},
+};
+constexpr KeyControl kAoKeys[] = {
+    {"samples", "AO samples"},
+    {"distance", "AO distance"},
+    {"strength", "AO strength"},
 };
 
 void add(std::vector<InspectorKey>& keys, const std::string& object,
@@ -145,6 +164,8 @@ std::vector<InspectorKey> inspectorKeys() {
     add(keys, "normal_texture", kTextureKeys);
     keys.push_back({"normal_texture", "strength", "strength"});
     add(keys, "render", kRenderKeys);
+    add(keys, "shadows", kShadowKeys);
+    add(keys, "ao", kAoKeys);
     return keys;
 }
 
@@ -153,10 +174,6 @@ std::vector<InspectorKey> keysNotInInspector() {
     keys.push_back({"group", "children",
                     "the Scene panel edits the hierarchy (+ Shape, + Group, drag and drop, "
                     "Ctrl+D, Delete)"});
-    for (const char* key : {"shadows", "ao", "fxaa"})
-        keys.push_back({"render", key,
-                        "no control yet: the shadow, ambient occlusion and FXAA settings are "
-                        "edited in the file only"});
     return keys;
 }
 

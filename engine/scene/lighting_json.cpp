@@ -3,6 +3,8 @@
 // at most 90 degrees, inner below outer).
 #include "lighting_json.hpp"
 
+#include "scene/render_spec.hpp"
+
 #include "core/limits.hpp"
 #include "param_json.hpp"
 #include "scene/light_spec.hpp"
@@ -171,25 +173,30 @@ void readRenderLighting(const JsonReader& json, const Json& renderObject, Render
             s.enabled = true; // writing the object turns shadows on unless it says otherwise
             warnUnknownKeys(json, *shadows, pointer, kShadowKeys);
             readBoolField(json, *shadows, pointer, "enabled", &s.enabled);
-            readIntegerField(json, *shadows, pointer, "steps", &s.steps, 1, 256);
+            readIntegerField(json, *shadows, pointer, "steps", &s.steps, int(kShadowStepsRange.min),
+                             int(kShadowStepsRange.max));
             readNumberField(json, *shadows, pointer, "softness", &s.softness,
-                            NumberRange::closed(0.001, 1.0));
-            const bool minOk = readNumberField(json, *shadows, pointer, "min_distance",
-                                               &s.minDistance, NumberRange::openClosed(0.0, 10.0));
-            const bool maxOk = readNumberField(json, *shadows, pointer, "max_distance",
-                                               &s.maxDistance, NumberRange::openClosed(0.0, 1e4));
+                            numberRange(kShadowSoftnessRange));
+            const bool minOk =
+                readNumberField(json, *shadows, pointer, "min_distance", &s.minDistance,
+                                numberRange(kShadowMinDistanceRange));
+            const bool maxOk =
+                readNumberField(json, *shadows, pointer, "max_distance", &s.maxDistance,
+                                numberRange(kShadowMaxDistanceRange));
             if (minOk && maxOk && !(s.maxDistance > s.minDistance)) {
                 json.error(childPointer(pointer, "max_distance"),
                            "expected \"max_distance\" > \"min_distance\" (" +
                                formatNumber(s.minDistance) + "), got " +
                                formatNumber(s.maxDistance));
             }
-            readIntegerField(json, *shadows, pointer, "map_size", &s.mapSize, 256, 4096);
-            readIntegerField(json, *shadows, pointer, "pcf_radius", &s.pcfRadius, 0, 3);
+            readIntegerField(json, *shadows, pointer, "map_size", &s.mapSize,
+                             int(kShadowMapSizeRange.min), int(kShadowMapSizeRange.max));
+            readIntegerField(json, *shadows, pointer, "pcf_radius", &s.pcfRadius,
+                             int(kShadowPcfRadiusRange.min), int(kShadowPcfRadiusRange.max));
             readNumberField(json, *shadows, pointer, "normal_offset", &s.normalOffset,
-                            NumberRange::closed(0.0, 10.0));
+                            numberRange(kShadowNormalOffsetRange));
             readNumberField(json, *shadows, pointer, "slope_bias", &s.slopeBias,
-                            NumberRange::closed(0.0, 10.0));
+                            numberRange(kShadowSlopeBiasRange));
         }
     }
     if (const Json* ao = findMember(renderObject, "ao")) {
@@ -197,11 +204,12 @@ void readRenderLighting(const JsonReader& json, const Json& renderObject, Render
         if (expectObject(json, *ao, pointer)) {
             render.ao.samples = kDefaultAoSamples;
             warnUnknownKeys(json, *ao, pointer, kAoKeys);
-            readIntegerField(json, *ao, pointer, "samples", &render.ao.samples, 0, 16);
+            readIntegerField(json, *ao, pointer, "samples", &render.ao.samples,
+                             int(kAoSamplesRange.min), int(kAoSamplesRange.max));
             readNumberField(json, *ao, pointer, "distance", &render.ao.distance,
-                            NumberRange::openClosed(0.0, 10.0));
+                            numberRange(kAoDistanceRange));
             readNumberField(json, *ao, pointer, "strength", &render.ao.strength,
-                            NumberRange::closed(0.0, 4.0));
+                            numberRange(kAoStrengthRange));
         }
     }
     readBoolField(json, renderObject, "/render", "fxaa", &render.fxaa);

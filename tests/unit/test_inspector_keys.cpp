@@ -20,8 +20,8 @@ namespace {
 
 // The schema definitions the inspector covers: these names, or these prefixes.
 bool inspected(const std::string& def) {
-    static const std::set<std::string> names = {"group",   "shell",          "material",
-                                                "texture", "normal_texture", "render"};
+    static const std::set<std::string> names = {"group",          "shell",  "material", "texture",
+                                                "normal_texture", "render", "shadows",  "ao"};
     for (const char* prefix : {"shape_", "modifier_", "profile_", "light_"})
         if (def.rfind(prefix, 0) == 0) return true;
     return names.count(def) > 0;
