@@ -143,9 +143,11 @@ TEST(CpuGpuAgreement, CellsOnASmoothTreeToTheHorizon) {
     const PreparedScene prepared = openRepositoryScene("samples/bench/tree_256.json");
     ASSERT_EQ(effectiveSdfStrategy(prepared.sdf, SdfStrategy::Baked), SdfStrategy::Cells);
     const Agreement a = compare(prepared, 96, 54, 2);
-    EXPECT_GT(a.sdfHits, a.sampled * 3 / 4); // the rest is sky above the horizon
-    EXPECT_LE(a.idMismatches, a.sampled / 100) << a.firstProblem;
-    EXPECT_LE(a.depthMismatches, a.sampled / 100) << a.firstProblem;
+    // As tight as measured on llvmpipe: 1008 of 1296 samples hit (the rest is sky above the
+    // horizon), one grazing ray's id differs, no depth.
+    EXPECT_GT(a.sdfHits, a.sampled * 3 / 4);
+    EXPECT_LE(a.idMismatches, 1) << a.firstProblem;
+    EXPECT_EQ(a.depthMismatches, 0) << a.firstProblem;
     EXPECT_EQ(a.gpuMisses, 0) << a.firstProblem;
 }
 
@@ -158,9 +160,10 @@ TEST(CpuGpuAgreement, CellsOnEveryOperationAndModifier) {
         const PreparedScene prepared =
             openRepositoryScene(std::string("samples/scenes/") + name + ".json");
         const Agreement a = compare(prepared, 128, 72, 2, SdfStrategy::Cells);
-        EXPECT_GT(a.sdfHits, a.sampled / 10);
-        EXPECT_LE(a.idMismatches, a.sampled / 100) << a.firstProblem;
-        EXPECT_LE(a.depthMismatches, a.sampled / 100) << a.firstProblem;
+        // As measured on llvmpipe: at least 391 of 2304 samples hit, no id or depth differs.
+        EXPECT_GT(a.sdfHits, a.sampled / 6);
+        EXPECT_EQ(a.idMismatches, 0) << a.firstProblem;
+        EXPECT_EQ(a.depthMismatches, 0) << a.firstProblem;
         EXPECT_EQ(a.gpuMisses, 0) << a.firstProblem;
     }
 }
