@@ -33,6 +33,18 @@ def scaled(shape, s):
     return out
 
 
+def common(name, camera, children):
+    return {
+        "version": 1,
+        "camera": camera,
+        "render": {"background": [0.18, 0.2, 0.24]},
+        "materials": {"m%d" % i: {"base_color": c, "roughness": 0.45}
+                      for i, c in enumerate(COLOURS)},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+        "sdf": {"name": name, "children": children},
+    }
+
+
 def grid_scene(n):
     side = math.ceil(math.sqrt(n))
     cell = 4.0 / side
@@ -45,27 +57,8 @@ def grid_scene(n):
         node["position"] = [round(x, 5), round(y, 5), 0.0]
         node["material"] = "m%d" % (i % len(COLOURS))
         children.append(node)
-    return {
-        "version": 1,
-        "camera": {"position": [0, 0, 7.5], "target": [0, 0, 0], "fov": 40},
-        "render": {"background": [0.18, 0.2, 0.24]},
-        "materials": {"m%d" % i: {"base_color": c, "roughness": 0.45}
-                      for i, c in enumerate(COLOURS)},
-        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
-        "sdf": {"name": "%d primitives" % n, "children": children},
-    }
-
-
-def common(name, camera, children):
-    return {
-        "version": 1,
-        "camera": camera,
-        "render": {"background": [0.18, 0.2, 0.24]},
-        "materials": {"m%d" % i: {"base_color": c, "roughness": 0.45}
-                      for i, c in enumerate(COLOURS)},
-        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
-        "sdf": {"name": name, "children": children},
-    }
+    camera = {"position": [0, 0, 7.5], "target": [0, 0, 0], "fov": 40}
+    return common("%d primitives" % n, camera, children)
 
 
 def tree_scene(n):

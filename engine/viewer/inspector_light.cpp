@@ -4,6 +4,8 @@
 // each with the range the scene reader accepts (see inspector.hpp).
 #include "inspector.hpp"
 
+#include "editor/param_fields.hpp"
+
 #include "panel_widgets.hpp"
 #include "scene/light_spec.hpp"
 
@@ -25,16 +27,8 @@ struct DragBounds {
 };
 
 DragBounds dragBounds(const ParamRange& range) {
-    DragBounds b;
-    if (std::isfinite(range.min)) {
-        b.min = float(range.min);
-        if (range.minExclusive) b.min = std::nextafter(b.min, FLT_MAX);
-    }
-    if (std::isfinite(range.max)) {
-        b.max = float(range.max);
-        if (range.maxExclusive) b.max = std::nextafter(b.max, -FLT_MAX);
-    }
-    return b;
+    const editor::FloatFieldRange r = editor::floatFieldRange(range);
+    return {r.min, r.max};
 }
 
 bool dragNumber(const char* label, float& value, float step, DragBounds bounds,
@@ -124,8 +118,7 @@ void drawLightInspector(editor::Document& document, int index, ViewerCommands& c
                           stepFor(std::max(1.0f, glm::length(light.position)))))
         document.markChanged("Light position");
     if (hasDirection(light.type)) drawDirection(light, document);
-    if (editColor("colour", light.color))
-        document.markChanged("Light colour");
+    if (editColor("colour", light.color)) document.markChanged("Light colour");
     if (dragNumber("intensity", light.intensity, 0.02f, dragBounds(kLightIntensityRange), "%.2f"))
         document.markChanged("Light intensity");
     helpTooltip(light.type == LightType::Directional ? "Illuminance (lux-like)."

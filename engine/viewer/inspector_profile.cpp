@@ -4,6 +4,8 @@
 // inspector.hpp).
 #include "inspector.hpp"
 
+#include "editor/param_fields.hpp"
+
 #include "editor/profile_edits.hpp"
 #include "panel_widgets.hpp"
 #include "sdf/profiles.hpp"
@@ -20,13 +22,11 @@
 namespace rmsc::app {
 namespace {
 
-// A range's ends as drag bounds: an exclusive end moves to the next float inside, an unbounded
-// one to the largest float.
+// A range's ends as drag bounds (editor/param_fields.hpp: what the reader accepts).
 void dragBounds(const ParamRange& range, float& lo, float& hi) {
-    lo = std::isfinite(range.min) ? float(range.min) : -FLT_MAX;
-    hi = std::isfinite(range.max) ? float(range.max) : FLT_MAX;
-    if (range.minExclusive) lo = std::nextafter(lo, FLT_MAX);
-    if (range.maxExclusive) hi = std::nextafter(hi, -FLT_MAX);
+    const editor::FloatFieldRange r = editor::floatFieldRange(range);
+    lo = r.min;
+    hi = r.max;
 }
 
 // The polygon's corners, one row each, with buttons to add a corner after one and remove one
