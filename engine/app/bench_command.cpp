@@ -110,7 +110,9 @@ struct StrategyRun {
     // again after one shape moved.
     int cellLevels = 0;
     SdfCellStats cells;
-    double repruneMs = 0.0;
+    double repruneMs = 0.0;       // pruning again after a one-shape edit
+    double repruneUploadMs = 0.0; // and uploading the cells
+    std::size_t repruneCells = 0; // the cells it pruned again
 };
 
 // Primitives evaluated per pixel, by program (Variant::program, and whether it skips parts).
@@ -321,19 +323,37 @@ double measureMarch(const Renderer& renderer, const FrameTargets& targets, Strat
     return pixels;
 }
 
-// Moves the first shape of the scene's program by a tenth of its distance scale and prunes the
-// whole grid again (there is no incremental re-pruning yet): the time a one-shape edit costs.
-double repruneAfterOneShapeEdit(const PreparedScene& prepared) {
+// Moves the middle shape of the scene's program by a tenth of its distance scale and prunes the
+// grid again from the kept state (sdf/cell_pruning.hpp, repruneSdfCells), then uploads the
+// cell buffer as the viewer would: the time a one-shape edit costs, and the cells it pruned.
+struct Reprune {
+    double pruneMs = 0.0;
+    double uploadMs = 0.0;
+    std::size_t cells = 0;
+};
+Reprune repruneAfterOneShapeEdit(const PreparedScene& prepared) {
+    const Aabb content = prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{};
+    SdfCellStatePtr state;
+    SdfCellGrid grid = buildSdfCells(prepared.sdf, content, {}, &state);
+    if (!state) return {};
     SdfProgram program = prepared.sdf;
-    for (GpuSdfInstruction& in : program.instructions)
-        if (SdfOpcode(in.opcode) == SdfOpcode::Shape) {
-            in.worldToLocal[0].w += 0.1f;
-            break;
-        }
+    std::vector<std::size_t> shapes;
+    for (std::size_t i = 0; i < program.instructions.size(); ++i)
+        if (SdfOpcode(program.instructions[i].opcode) == SdfOpcode::Shape) shapes.push_back(i);
+    if (shapes.empty()) return {};
+    GpuSdfInstruction& moved = program.instructions[shapes[shapes.size() / 2]];
+    moved.worldToLocal[0].w += 0.1f * moved.misc.x;
+    Reprune result;
     const auto start = std::chrono::steady_clock::now();
-    const SdfCellGrid grid =
-        buildSdfCells(program, prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
-    return grid.levels > 0 ? millisecondsSince(start) : 0.0;
+    if (!repruneSdfCells(*state, program, grid)) return {};
+    result.pruneMs = millisecondsSince(start);
+    result.cells = grid.stats.prunedCells;
+    const auto uploadStart = std::chrono::steady_clock::now();
+    const gl::Buffer buffer = gl::createBufferWithData(
+        GLsizeiptr(grid.words.size() * sizeof(std::uint32_t)), grid.words.data());
+    glFinish();
+    result.uploadMs = millisecondsSince(uploadStart);
+    return result;
 }
 
 // Times `variant`: builds its shaders, renders the warm-up and timed frames, reads the march
@@ -350,7 +370,10 @@ bool runVariant(Renderer& renderer, const Variant& variant, const BenchOptions& 
     if (gpuScene.sdfCells.id() != 0) {
         run.cellLevels = gpuScene.sdfCellLevels;
         run.cells = gpuScene.sdfCellStats;
-        run.repruneMs = repruneAfterOneShapeEdit(*prepared);
+        const Reprune again = repruneAfterOneShapeEdit(*prepared);
+        run.repruneMs = again.pruneMs;
+        run.repruneUploadMs = again.uploadMs;
+        run.repruneCells = again.cells;
     }
     if (variant.live.first <= variant.live.last)
         gpuScene.sdfMap = generateSdfMap(prepared->sdf, strategy, {}, variant.live);
@@ -437,9 +460,10 @@ void printJson(const BenchOptions& options, const HeadlessContext& context, doub
                 std::printf("%s%d", l ? ", " : "", c.cellsPerLevel[l]);
             std::printf("], \"leaf_cells\": %d, \"programs\": %zu, \"mean_length\": %.2f, "
                         "\"max_length\": %d, \"mean_shapes\": %.2f, \"prune_ms\": %.1f, "
-                        "\"reprune_one_shape_ms\": %.1f, \"gpu_bytes\": %zu}",
+                        "\"reprune_one_shape_ms\": %.1f, \"reprune_upload_ms\": %.1f, "
+                        "\"reprune_cells\": %zu, \"gpu_bytes\": %zu}",
                         c.leafCells, c.uniquePrograms, c.meanLength, c.maxLength, c.meanLeaves,
-                        c.buildMs, run.repruneMs, c.bytes);
+                        c.buildMs, run.repruneMs, run.repruneUploadMs, run.repruneCells, c.bytes);
         }
         std::printf("}");
     }
@@ -472,9 +496,10 @@ void printText(const BenchOptions& options, const HeadlessContext& context, doub
                 std::printf(" %d", n);
             std::printf("; %d leaf cells, %zu distinct programs of %.1f instructions (%.1f shapes) "
                         "on average, %d at most; pruned in %.1f ms, again after a one-shape edit "
-                        "in %.1f ms; %.2f MiB on the GPU",
+                        "in %.1f ms (%zu cells) and uploaded in %.1f ms; %.2f MiB on the GPU",
                         c.leafCells, c.uniquePrograms, c.meanLength, c.meanLeaves, c.maxLength,
-                        c.buildMs, run.repruneMs, double(c.bytes) / (1024.0 * 1024.0));
+                        c.buildMs, run.repruneMs, run.repruneCells, run.repruneUploadMs,
+                        double(c.bytes) / (1024.0 * 1024.0));
         }
         std::printf("\n%-9s %9s %9s %9s\n", "ms", "median", "min", "max");
         std::printf("%-9s %9.2f %9.2f %9.2f\n", "frame", wallStats.median, wallStats.min,

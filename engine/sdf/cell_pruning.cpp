@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <thread>
 #include <unordered_map>
@@ -416,107 +417,197 @@ Aabb sdfContentBox(const SdfNode& root) {
     return box;
 }
 
-SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
-                          const SdfCellOptions& options) {
-    const auto started = std::chrono::steady_clock::now();
-    SdfCellGrid grid;
-    grid.code = program.instructions;
-    if (content.empty() || program.instructions.empty() || options.levels < 1) {
-        appendOutsideList(grid, program.instructions.size());
-        return grid;
-    }
-    // The union the accumulated parts of a bounding hierarchy are folded with.
-    GpuSdfInstruction unite;
-    unite.opcode = std::uint32_t(SdfOpcode::Combine);
-    unite.kind = std::uint32_t(SdfOp::Union);
-    const std::uint32_t unionInstruction = std::uint32_t(grid.code.size());
-    grid.code.push_back(unite);
+// ---- The cell hierarchy, kept to prune it again after an edit ----
+
+// What a grid was built from. Cells are numbered by their entry (cell k: entries 2k, 2k + 1);
+// block b holds cells 64 b .. 64 b + 63, the children of one refined cell (block 0: the first
+// level). A leaf cell's entry is (offset in `lists`, length); a refined one's
+// (kSdfCellRefined | its block, 0).
+struct SdfCellState {
+    SdfProgram program; // as pruned: the edits' numbers
+    std::vector<GpuSdfInstruction> code;
     ProgramTree tree;
-    if (!readTree(program.instructions, unionInstruction, tree) || tree.nodes.empty()) {
-        grid.code = program.instructions;
-        appendOutsideList(grid, program.instructions.size());
-        return grid;
-    }
-    const int levels = std::clamp(options.levels, 1, 6);
-    const glm::vec3 half = content.halfSize();
-    const float extent = std::max(std::max(half.x, half.y), std::max(half.z, 1e-3f)) * 1.02f *
-                         float(1 << (2 * std::clamp(options.outerLevels, 0, levels - 1)));
-    grid.origin = content.center() - glm::vec3(extent);
-    grid.size = 2.0f * extent;
-
+    std::vector<std::uint32_t> identity;
     std::vector<std::uint32_t> constants; // kFarSteps per level
-    for (int level = 1; level <= levels; ++level)
-        for (int m = 1; m <= kFarSteps; ++m) {
-            constants.push_back(std::uint32_t(grid.code.size()));
-            grid.code.push_back(
-                constantInstruction(float(m) * grid.size / float(1 << (2 * level))));
-        }
-    std::vector<std::uint32_t> identity(grid.code.size());
-    std::iota(identity.begin(), identity.end(), 0u);
-    const Pruner pruner{program, grid.code, tree, identity, 1e-5f * grid.size};
+    SdfCellOptions options;
+    int levels = 0;
+    glm::vec3 origin{0.0f};
+    float size = 0.0f;
 
-    PrunedTree whole(tree.nodes.size());
-    for (std::size_t i = 0; i < tree.nodes.size(); ++i)
-        whole[i] = {int(i), tree.nodes[i].a, tree.nodes[i].b};
-
-    struct Task {
-        glm::ivec3 cell; // at its level
-        const PrunedTree* parent;
-        std::size_t entry; // its entry in `entries` (2 words)
+    struct Block {
+        int level = 1;       // of its cells
+        glm::ivec3 first{0}; // the cell coordinates of its cell 0, at its level
+        PrunedTree parent;   // the refined cell's pruned tree: where its cells start from
+        bool live = true;    // false: freed (its cell became a leaf again), reused first
     };
-    std::vector<std::uint32_t> entries(128, 0);
-    std::vector<std::uint32_t> lists;
+    std::vector<Block> blocks;
+    std::vector<std::uint32_t> freeBlocks;
+    std::vector<std::uint32_t> entries;
+    std::vector<std::uint32_t> cellLeaves; // per cell: shape evaluations of its program
+    std::vector<std::uint32_t> lists;      // the leaf cells' lists, equal ones shared
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> shared; // hash -> offsets
-    std::vector<Task> tasks;
-    for (int z = 0; z < 4; ++z)
-        for (int y = 0; y < 4; ++y)
-            for (int x = 0; x < 4; ++x)
-                tasks.push_back({{x, y, z}, &whole, std::size_t(2 * (x + 4 * y + 16 * z))});
-    std::vector<CellResult> previous; // the refined cells' results, parents of `tasks`
-    long totalLength = 0, totalLeaves = 0;
-    std::size_t cellCount = 64;
-    bool tooDeep = false;
-    const int threadCount = options.threads > 0
-                                ? options.threads
-                                : std::max(1, int(std::thread::hardware_concurrency()));
-    for (int level = 1; level <= levels && !tasks.empty(); ++level) {
-        grid.stats.cellsPerLevel.push_back(int(tasks.size()));
-        const float cellSize = grid.size / float(1 << (2 * level));
-        std::vector<CellResult> results(tasks.size());
+    std::size_t listsAtCompaction = 0;
+    std::size_t uniquePrograms = 0;
+    std::size_t liveCells = 0;
+    std::size_t prunedCells = 0; // by the last build or re-prune
+    bool tooDeep = false;        // a pruned part deeper than the stack: no grid
+};
+
+void SdfCellStateDeleter::operator()(SdfCellState* state) const {
+    delete state;
+}
+
+namespace {
+
+float cellEdge(const SdfCellState& s, int level) {
+    return s.size / float(1 << (2 * level));
+}
+
+std::uint32_t allocateBlock(SdfCellState& s, int level, glm::ivec3 first, PrunedTree parent) {
+    std::uint32_t b;
+    if (!s.freeBlocks.empty()) {
+        b = s.freeBlocks.back();
+        s.freeBlocks.pop_back();
+    } else {
+        b = std::uint32_t(s.blocks.size());
+        s.blocks.emplace_back();
+        s.entries.resize(s.entries.size() + 128, 0);
+        s.cellLeaves.resize(s.cellLeaves.size() + 64, 0);
+    }
+    s.blocks[b] = {level, first, std::move(parent), true};
+    s.liveCells += 64;
+    return b;
+}
+
+void freeBlock(SdfCellState& s, std::uint32_t b) {
+    for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k)
+        if (s.entries[2 * k] & kSdfCellRefined) freeBlock(s, s.entries[2 * k] & ~kSdfCellRefined);
+    s.blocks[b].live = false;
+    PrunedTree().swap(s.blocks[b].parent);
+    s.freeBlocks.push_back(b);
+    s.liveCells -= 64;
+}
+
+// The offset of `list` in s.lists, shared with an equal list when there is one.
+std::uint32_t storeList(SdfCellState& s, std::span<const std::uint32_t> list) {
+    std::vector<std::uint32_t>& same = s.shared[hashList(list)];
+    for (std::uint32_t o : same)
+        if (o + list.size() <= s.lists.size() &&
+            std::equal(list.begin(), list.end(), s.lists.begin() + o))
+            return o;
+    const std::uint32_t offset = std::uint32_t(s.lists.size());
+    s.lists.insert(s.lists.end(), list.begin(), list.end());
+    same.push_back(offset);
+    ++s.uniquePrograms;
+    return offset;
+}
+
+void setLeafCell(SdfCellState& s, std::uint32_t k, const CellResult& r) {
+    if (stackDepth(s.code, r.list) > kSdfMaxStack) s.tooDeep = true;
+    s.entries[2 * k] = storeList(s, r.list);
+    s.entries[2 * k + 1] = std::uint32_t(r.list.size());
+    s.cellLeaves[k] = std::uint32_t(r.leaves);
+}
+
+// Edits leave lists no cell uses; once they are as many as the rest, the lists are stored again.
+void compactLists(SdfCellState& s) {
+    if (s.lists.size() < 2 * s.listsAtCompaction + (1u << 20)) return;
+    std::vector<std::uint32_t> old = std::move(s.lists);
+    s.lists.clear();
+    s.shared.clear();
+    s.uniquePrograms = 0;
+    for (std::uint32_t b = 0; b < s.blocks.size(); ++b)
+        if (s.blocks[b].live)
+            for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k)
+                if (!(s.entries[2 * k] & kSdfCellRefined))
+                    s.entries[2 * k] = storeList(
+                        s, std::span(old).subspan(s.entries[2 * k], s.entries[2 * k + 1]));
+    s.listsAtCompaction = s.lists.size();
+}
+
+bool holdsChanged(const PrunedTree& tree, const std::vector<char>& changed) {
+    for (const PrunedNode& n : tree)
+        if (changed[std::size_t(n.node)]) return true;
+    return false;
+}
+
+bool sameTree(const PrunedTree& a, const PrunedTree& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const PrunedNode& x, const PrunedNode& y) {
+                          return x.node == y.node && x.a == y.a && x.b == y.b;
+                      });
+}
+
+// Prunes the cells of `pending` blocks level by level: each block's 64 cells from its parent
+// tree. `fresh` blocks are new (every cell of theirs is made); in the others a refined cell's
+// children are pruned again only when its new tree holds a node of `changed` or differs from
+// its old one: a cell's program is a function of its parent's tree and of the values of that
+// tree's nodes, so with the same tree and none of it changed it is what it was. (The tree
+// itself is not enough alone: a node dropped in both may still have decided what was kept.)
+void pruneBlocks(SdfCellState& s, std::vector<std::pair<std::uint32_t, bool>> pending,
+                 const std::vector<char>& changed) {
+    const Pruner pruner{s.program, s.code, s.tree, s.identity, 1e-5f * s.size};
+    const SdfCellOptions& o = s.options;
+    const int threadCount =
+        o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
+    while (!pending.empty()) {
+        const std::size_t cellCount = 64 * pending.size();
+        s.prunedCells += cellCount;
+        std::vector<CellResult> results(cellCount);
         std::atomic<std::size_t> next{0};
         const auto work = [&] {
             std::vector<float> value;
             std::vector<SdfInterval> range;
             std::vector<SdfPruneSide> side;
-            for (std::size_t t; (t = next.fetch_add(1)) < tasks.size();) {
-                const glm::vec3 centre = grid.origin + (glm::vec3(tasks[t].cell) + 0.5f) * cellSize;
-                pruneCell(pruner, *tasks[t].parent, centre, cellSize,
-                          &constants[std::size_t(kFarSteps * (level - 1))],
-                          options.farConstants ? options.refineLeaves : -1, results[t], value,
-                          range, side);
+            for (std::size_t t; (t = next.fetch_add(1)) < cellCount;) {
+                const SdfCellState::Block& block = s.blocks[pending[t / 64].first];
+                const int j = int(t % 64);
+                const glm::ivec3 cell = block.first + glm::ivec3(j % 4, (j / 4) % 4, j / 16);
+                const float edge = cellEdge(s, block.level);
+                const glm::vec3 centre = s.origin + (glm::vec3(cell) + 0.5f) * edge;
+                pruneCell(pruner, block.parent, centre, edge,
+                          &s.constants[std::size_t(kFarSteps * (block.level - 1))],
+                          o.farConstants ? o.refineLeaves : -1, results[t], value, range, side);
                 // Only cells that may be refined keep their pruned tree (memory: the finest
                 // level holds most cells).
-                if (level == levels || results[t].leaves <= options.refineLeaves)
+                if (block.level == s.levels || results[t].leaves <= o.refineLeaves)
                     PrunedTree().swap(results[t].pruned);
             }
         };
         std::vector<std::thread> workers;
-        for (int w = 1; w < std::min(threadCount, int(tasks.size())); ++w)
+        for (int w = 1; w < std::min(threadCount, int(cellCount)); ++w)
             workers.emplace_back(work);
         work();
         for (std::thread& w : workers)
             w.join();
 
-        std::vector<Task> children;
-        std::vector<CellResult> refined;
-        std::vector<std::size_t> refinedTasks; // with their blocks in order, from firstBlock
-        const std::size_t firstBlock = entries.size() / 128;
-        // Which cells to refine: those with more shapes than options.refineLeaves, within the
-        // cell budget; cells near the surface first, then those with the most shapes.
+        std::vector<std::pair<std::uint32_t, bool>> children;
+        // Cells to refine anew: within the cell budget, those near the surface first, then
+        // those with the most shapes.
         std::vector<std::size_t> candidates;
-        for (std::size_t t = 0; t < tasks.size(); ++t)
-            if (level < levels && !results[t].far && results[t].leaves > options.refineLeaves)
+        for (std::size_t t = 0; t < cellCount; ++t) {
+            const auto [b, fresh] = pending[t / 64];
+            const std::uint32_t k = 64 * b + std::uint32_t(t % 64);
+            CellResult& r = results[t];
+            const bool refine = s.blocks[b].level < s.levels && !r.far && r.leaves > o.refineLeaves;
+            const bool wasRefined = !fresh && (s.entries[2 * k] & kSdfCellRefined);
+            if (wasRefined) {
+                const std::uint32_t child = s.entries[2 * k] & ~kSdfCellRefined;
+                if (refine) {
+                    if (holdsChanged(r.pruned, changed) ||
+                        !sameTree(s.blocks[child].parent, r.pruned)) {
+                        s.blocks[child].parent = std::move(r.pruned);
+                        children.push_back({child, false});
+                    }
+                    continue;
+                }
+                freeBlock(s, child);
+            }
+            if (refine)
                 candidates.push_back(t);
+            else
+                setLeafCell(s, k, r);
+        }
         std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
             const bool nearA = results[a].near, nearB = results[b].near;
             if (nearA != nearB) return nearA;
@@ -524,78 +615,176 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
                 return results[a].leaves > results[b].leaves;
             return a < b;
         });
-        const std::size_t room =
-            options.maxCells > cellCount ? (options.maxCells - cellCount) / 64 : 0;
-        if (candidates.size() > room) candidates.resize(room);
-        std::sort(candidates.begin(), candidates.end());
-        cellCount += 64 * candidates.size();
-        std::vector<bool> refine(tasks.size(), false);
-        for (std::size_t t : candidates)
-            refine[t] = true;
-        for (std::size_t t = 0; t < tasks.size(); ++t) {
-            CellResult& r = results[t];
-            if (refine[t]) {
-                entries[tasks[t].entry] =
-                    kSdfCellRefined | std::uint32_t(firstBlock + refinedTasks.size());
-                refinedTasks.push_back(t);
-                refined.push_back(std::move(r));
+        const std::size_t room = o.maxCells > s.liveCells ? (o.maxCells - s.liveCells) / 64 : 0;
+        for (std::size_t c = 0; c < candidates.size(); ++c) {
+            const std::size_t t = candidates[c];
+            const auto [b, fresh] = pending[t / 64];
+            const std::uint32_t k = 64 * b + std::uint32_t(t % 64);
+            if (c >= room) {
+                setLeafCell(s, k, results[t]);
                 continue;
             }
-            if (stackDepth(grid.code, r.list) > kSdfMaxStack) tooDeep = true;
+            const int j = int(t % 64);
+            const glm::ivec3 cell = s.blocks[b].first + glm::ivec3(j % 4, (j / 4) % 4, j / 16);
+            const std::uint32_t child =
+                allocateBlock(s, s.blocks[b].level + 1, cell * 4, std::move(results[t].pruned));
+            s.entries[2 * k] = kSdfCellRefined | child;
+            s.entries[2 * k + 1] = 0;
+            children.push_back({child, true});
+        }
+        // Blocks in order, as a full build makes them (the next level's cells likewise).
+        std::sort(children.begin(), children.end());
+        pending = std::move(children);
+    }
+}
+
+// The grid as the GPU reads it: the cell entries, the lists after them (offsets made absolute),
+// the whole program's list last; and its statistics.
+void packGrid(const SdfCellState& s, SdfCellGrid& grid) {
+    grid.code = s.code;
+    grid.stats = {};
+    if (s.tooDeep) { // a pruned part deeper than the stack (the fold of accumulated parts)
+        grid.levels = 0;
+        grid.code = s.program.instructions;
+        grid.words.clear();
+        appendOutsideList(grid, s.program.instructions.size());
+        return;
+    }
+    grid.levels = s.levels;
+    grid.origin = s.origin;
+    grid.size = s.size;
+    const std::uint32_t base = std::uint32_t(s.entries.size());
+    grid.words.resize(s.entries.size() + s.lists.size());
+    grid.stats.cellsPerLevel.assign(std::size_t(s.levels), 0);
+    long totalLength = 0, totalLeaves = 0;
+    for (std::uint32_t b = 0; b < s.blocks.size(); ++b) {
+        if (!s.blocks[b].live) {
+            std::fill_n(grid.words.begin() + 128 * b, 128, 0u);
+            continue;
+        }
+        grid.stats.cellsPerLevel[std::size_t(s.blocks[b].level - 1)] += 64;
+        for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k) {
+            const std::uint32_t e = s.entries[2 * k], length = s.entries[2 * k + 1];
+            grid.words[2 * k] = e & kSdfCellRefined ? e : e + base;
+            grid.words[2 * k + 1] = length;
+            if (e & kSdfCellRefined) continue;
             ++grid.stats.leafCells;
-            totalLength += long(r.list.size());
-            totalLeaves += r.leaves;
-            grid.stats.maxLength = std::max(grid.stats.maxLength, int(r.list.size()));
-            std::vector<std::uint32_t>& same = shared[hashList(r.list)];
-            std::uint32_t offset = ~0u;
-            for (std::uint32_t o : same)
-                if (o + r.list.size() <= lists.size() &&
-                    std::equal(r.list.begin(), r.list.end(), lists.begin() + o))
-                    offset = o;
-            if (offset == ~0u) {
-                offset = std::uint32_t(lists.size());
-                lists.insert(lists.end(), r.list.begin(), r.list.end());
-                same.push_back(offset);
-                ++grid.stats.uniquePrograms;
-            }
-            entries[tasks[t].entry] = offset; // made absolute below
-            entries[tasks[t].entry + 1] = std::uint32_t(r.list.size());
+            totalLength += long(length);
+            totalLeaves += long(s.cellLeaves[k]);
+            grid.stats.maxLength = std::max(grid.stats.maxLength, int(length));
         }
-        // The refined cells' children, each refined cell's 64 in its block.
-        entries.resize(entries.size() + 128 * refinedTasks.size(), 0);
-        for (std::size_t k = 0; k < refinedTasks.size(); ++k) {
-            const Task& parent = tasks[refinedTasks[k]];
-            for (int z = 0; z < 4; ++z)
-                for (int y = 0; y < 4; ++y)
-                    for (int x = 0; x < 4; ++x)
-                        children.push_back(
-                            {parent.cell * 4 + glm::ivec3(x, y, z), &refined[k].pruned,
-                             (firstBlock + k) * 128 + std::size_t(2 * (x + 4 * y + 16 * z))});
-        }
-        previous = std::move(refined); // keeps the parents alive for the next level
-        tasks = std::move(children);
     }
-    if (tooDeep) { // a pruned part deeper than the stack (the fold of accumulated parts)
-        grid.code = program.instructions;
-        grid.stats = {};
-        appendOutsideList(grid, program.instructions.size());
-        return grid;
-    }
-    // Lists after the entries; the whole program's list last.
-    const std::uint32_t base = std::uint32_t(entries.size());
-    for (std::size_t e = 0; e < entries.size(); e += 2)
-        if (!(entries[e] & kSdfCellRefined)) entries[e] += base;
-    grid.words = std::move(entries);
-    grid.words.insert(grid.words.end(), lists.begin(), lists.end());
-    appendOutsideList(grid, program.instructions.size());
-    grid.levels = levels;
+    while (!grid.stats.cellsPerLevel.empty() && grid.stats.cellsPerLevel.back() == 0)
+        grid.stats.cellsPerLevel.pop_back();
+    std::copy(s.lists.begin(), s.lists.end(), grid.words.begin() + base);
+    appendOutsideList(grid, s.program.instructions.size());
+    grid.stats.uniquePrograms = s.uniquePrograms;
+    grid.stats.prunedCells = s.prunedCells;
     grid.stats.meanLength = grid.stats.leafCells ? double(totalLength) / grid.stats.leafCells : 0.0;
     grid.stats.meanLeaves = grid.stats.leafCells ? double(totalLeaves) / grid.stats.leafCells : 0.0;
     grid.stats.bytes = grid.words.size() * sizeof(std::uint32_t);
-    grid.stats.buildMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
-            .count();
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+} // namespace
+
+SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
+                          const SdfCellOptions& options, SdfCellStatePtr* keep) {
+    const auto started = std::chrono::steady_clock::now();
+    if (keep) keep->reset();
+    SdfCellGrid grid;
+    grid.code = program.instructions;
+    if (content.empty() || program.instructions.empty() || options.levels < 1) {
+        appendOutsideList(grid, program.instructions.size());
+        return grid;
+    }
+    SdfCellStatePtr state(new SdfCellState);
+    SdfCellState& s = *state;
+    s.program = program;
+    s.code = program.instructions;
+    s.options = options;
+    // The union the accumulated parts of a bounding hierarchy are folded with.
+    GpuSdfInstruction unite;
+    unite.opcode = std::uint32_t(SdfOpcode::Combine);
+    unite.kind = std::uint32_t(SdfOp::Union);
+    const std::uint32_t unionInstruction = std::uint32_t(s.code.size());
+    s.code.push_back(unite);
+    if (!readTree(program.instructions, unionInstruction, s.tree) || s.tree.nodes.empty()) {
+        appendOutsideList(grid, program.instructions.size());
+        return grid;
+    }
+    s.levels = std::clamp(options.levels, 1, 6);
+    const glm::vec3 half = content.halfSize();
+    const float extent = std::max(std::max(half.x, half.y), std::max(half.z, 1e-3f)) * 1.02f *
+                         float(1 << (2 * std::clamp(options.outerLevels, 0, s.levels - 1)));
+    s.origin = content.center() - glm::vec3(extent);
+    s.size = 2.0f * extent;
+    for (int level = 1; level <= s.levels; ++level)
+        for (int m = 1; m <= kFarSteps; ++m) {
+            s.constants.push_back(std::uint32_t(s.code.size()));
+            s.code.push_back(constantInstruction(float(m) * cellEdge(s, level)));
+        }
+    s.identity.resize(s.code.size());
+    std::iota(s.identity.begin(), s.identity.end(), 0u);
+
+    PrunedTree whole(s.tree.nodes.size());
+    for (std::size_t i = 0; i < s.tree.nodes.size(); ++i)
+        whole[i] = {int(i), s.tree.nodes[i].a, s.tree.nodes[i].b};
+    allocateBlock(s, 1, glm::ivec3(0), std::move(whole));
+    pruneBlocks(s, {{0u, true}}, std::vector<char>(s.tree.nodes.size(), 0));
+    s.listsAtCompaction = s.lists.size();
+    packGrid(s, grid);
+    grid.stats.buildMs = millisecondsSince(started);
+    if (keep && !s.tooDeep) *keep = std::move(state);
     return grid;
+}
+
+bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& grid) {
+    const auto started = std::chrono::steady_clock::now();
+    const std::vector<GpuSdfInstruction>& before = s.program.instructions;
+    const std::vector<GpuSdfInstruction>& after = edited.instructions;
+    if (after.size() != before.size() || edited.data.size() != s.program.data.size()) return false;
+    // The same structure: every instruction the same but for the numbers of shapes,
+    // profiles, operations and modifiers, and the kind of shape.
+    std::vector<char> differs(after.size(), 0);
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        const GpuSdfInstruction &a = before[i], &b = after[i];
+        if (a.opcode != b.opcode) return false;
+        if (!isLeafOpcode(a.opcode) && a.kind != b.kind &&
+            SdfOpcode(a.opcode) != SdfOpcode::BoundSkip)
+            return false;
+        differs[i] = std::memcmp(&a, &b, sizeof a) != 0;
+    }
+    const bool dataDiffers = edited.data != s.program.data;
+    std::vector<char> changed(s.tree.nodes.size(), 0);
+    bool any = false;
+    for (std::size_t n = 0; n < s.tree.nodes.size(); ++n) {
+        const TreeNode& t = s.tree.nodes[n];
+        if (t.kind == NodeKind::Leaf) {
+            for (std::uint32_t i = t.begin; i < t.end && !changed[n]; ++i)
+                changed[n] =
+                    differs[i] || (dataDiffers && SdfOpcode(after[i].opcode) == SdfOpcode::Profile);
+        } else if (t.instruction < after.size()) {
+            changed[n] = differs[t.instruction];
+        }
+        any = any || changed[n];
+    }
+    s.program.data = edited.data;
+    std::copy(after.begin(), after.end(), s.code.begin());
+    std::copy(after.begin(), after.end(), s.program.instructions.begin());
+    s.prunedCells = 0;
+    if (any) {
+        pruneBlocks(s, {{0u, false}}, changed);
+        compactLists(s);
+    }
+    if (s.tooDeep) return false;
+    packGrid(s, grid);
+    grid.stats.buildMs = millisecondsSince(started);
+    return true;
 }
 
 SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p) {

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
 #include <sstream>
 
@@ -211,6 +212,121 @@ TEST(CellPruning, AGridOfSpheresPrunesToTheNearOnes) {
         std::mt19937 rng(3);
         EXPECT_EQ(expectCellsAgree(*c, grid, rng, 3000, "grid"), 3000);
     }
+}
+
+// The lists two grids over the same cube run at random points of it: equal everywhere.
+void expectSameLists(const SdfCellGrid& a, const SdfCellGrid& b, std::mt19937& rng,
+                     const std::string& what) {
+    ASSERT_EQ(a.origin, b.origin);
+    ASSERT_EQ(a.size, b.size);
+    ASSERT_EQ(a.code.size(), b.code.size());
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int i = 0; i < 2000; ++i) {
+        const glm::vec3 p = a.origin + glm::vec3(u(rng), u(rng), u(rng)) * a.size;
+        const std::span<const std::uint32_t> la = sdfCellProgram(a, p), lb = sdfCellProgram(b, p);
+        ASSERT_TRUE(std::equal(la.begin(), la.end(), lb.begin(), lb.end()))
+            << what << " at " << p.x << " " << p.y << " " << p.z << ": " << la.size() << " and "
+            << lb.size() << " instructions";
+    }
+    for (std::size_t i = 0; i < a.code.size(); ++i)
+        ASSERT_EQ(std::memcmp(&a.code[i], &b.code[i], sizeof a.code[i]), 0) << what << " " << i;
+}
+
+// An edit of numbers (a shape moved, resized or retyped, an operation's smoothness) pruned
+// again from the kept state gives the cells a full build of the edited program gives, and they
+// agree with the whole edited program.
+TEST(CellPruning, AnEditPrunedAgainEqualsAFullBuild) {
+    RandomTree random{std::mt19937(20261202)};
+    std::mt19937 rng(5);
+    int edits = 0;
+    for (int t = 0; t < 24; ++t) {
+        std::string sdf = random.group(3);
+        if (t % 3 == 0)
+            sdf = R"({"children": [{"shape": "plane", "normal": [0, 1, 0], "offset": 1.2}, )" +
+                  sdf + "]}";
+        const std::optional<Compiled> c = compileText(sdf, t % 2 == 0);
+        if (!c) continue;
+        const Aabb box = sdfContentBox(*c->scene.sdf);
+        SdfCellOptions options;
+        options.levels = 3;
+        options.refineLeaves = 1;
+        options.farConstants = t % 4 < 2;
+        SdfCellStatePtr state;
+        SdfCellGrid grid = buildSdfCells(c->program, box, options, &state);
+        if (grid.levels == 0) continue;
+        ASSERT_TRUE(state);
+        // Three edits in a row on the same state.
+        Compiled edited = *c;
+        for (int e = 0; e < 3; ++e) {
+            std::vector<GpuSdfInstruction>& code = edited.program.instructions;
+            std::vector<std::size_t> shapes, smooth;
+            for (std::size_t i = 0; i < code.size(); ++i) {
+                if (SdfOpcode(code[i].opcode) == SdfOpcode::Shape) shapes.push_back(i);
+                if (SdfOpcode(code[i].opcode) == SdfOpcode::Combine && code[i].params[0].x > 0)
+                    smooth.push_back(i);
+            }
+            ASSERT_FALSE(shapes.empty());
+            GpuSdfInstruction& in = code[shapes[std::size_t(random.pick(int(shapes.size())))]];
+            switch (random.pick(3)) {
+            case 0: // moved
+                in.worldToLocal[random.pick(3)].w += random.uniform(-1.0f, 1.0f);
+                break;
+            case 1: // resized
+                in.misc.x *= random.uniform(0.5f, 2.0f);
+                break;
+            default: // a smoothness changed, else moved
+                if (!smooth.empty())
+                    code[smooth[std::size_t(random.pick(int(smooth.size())))]].params[0].x *= 2.0f;
+                else
+                    in.worldToLocal[0].w += 0.5f;
+            }
+            ASSERT_TRUE(repruneSdfCells(*state, edited.program, grid)) << sdf;
+            const SdfCellGrid full = buildSdfCells(edited.program, box, options);
+            ASSERT_EQ(full.levels, grid.levels);
+            expectSameLists(grid, full, rng, sdf);
+            EXPECT_EQ(grid.stats.leafCells, full.stats.leafCells) << sdf;
+            expectCellsAgree(edited, grid, rng, 300, sdf);
+            if (HasFailure()) return;
+            ++edits;
+        }
+    }
+    EXPECT_GT(edits, 40);
+}
+
+// One sphere of a grid of 400 moved: the cells around its old and new place are pruned again,
+// a small part of what a full build prunes; a change of structure is refused.
+TEST(CellPruning, MovingOneShapePrunesFewCellsAgain) {
+    const auto gridText = [](float moved) {
+        std::ostringstream s;
+        s << R"({"children": [)";
+        for (int i = 0; i < 400; ++i)
+            s << (i ? ", " : "") << R"({"shape": "sphere", "radius": 0.3, "position": [)"
+              << (i % 20) - 10 + (i == 210 ? moved : 0.0f) << ", 0, " << (i / 20) - 10 << "]}";
+        s << "]}";
+        return s.str();
+    };
+    const std::optional<Compiled> c = compileText(gridText(0.0f), false);
+    const std::optional<Compiled> moved = compileText(gridText(0.6f), false);
+    ASSERT_TRUE(c && moved);
+    const Aabb box = sdfContentBox(*c->scene.sdf);
+    SdfCellStatePtr state;
+    SdfCellGrid grid = buildSdfCells(c->program, box, {}, &state);
+    ASSERT_TRUE(state);
+    const std::size_t fullCells = grid.stats.prunedCells;
+    ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
+    EXPECT_GT(grid.stats.prunedCells, 0u);
+    EXPECT_LT(grid.stats.prunedCells * 6, fullCells);
+    std::mt19937 rng(9);
+    expectSameLists(grid, buildSdfCells(moved->program, box), rng, "moved");
+    EXPECT_EQ(expectCellsAgree(*moved, grid, rng, 2000, "moved"), 2000);
+    // Nothing changed: nothing pruned.
+    ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
+    EXPECT_EQ(grid.stats.prunedCells, 0u);
+    // One sphere more is another structure.
+    const std::optional<Compiled> more =
+        compileText(gridText(0.0f).insert(14, R"({"shape": "sphere", "radius": 0.1}, )"), false);
+    ASSERT_TRUE(more);
+    EXPECT_FALSE(repruneSdfCells(*state, more->program, grid));
 }
 
 TEST(CellPruning, OperationRulesHoldAtTheirEdges) {

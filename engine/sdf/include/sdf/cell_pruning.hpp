@@ -27,6 +27,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -69,7 +70,8 @@ struct SdfCellStats {
     int maxLength = 0;              // and largest
     double meanLeaves = 0.0;        // shape evaluations per leaf cell's program, mean
     std::size_t uniquePrograms = 0; // distinct programs after sharing equal ones
-    double buildMs = 0.0;           // wall time of buildSdfCells
+    std::size_t prunedCells = 0;    // cells pruned by the build (or the re-prune)
+    double buildMs = 0.0;           // wall time of buildSdfCells (or repruneSdfCells)
     std::size_t bytes = 0;          // GPU bytes of the cell table and index lists
 };
 
@@ -96,10 +98,28 @@ struct SdfCellGrid {
 // bounded.
 Aabb sdfContentBox(const SdfNode& root);
 
+// What a grid was built from, kept to prune it again after an edit (repruneSdfCells).
+struct SdfCellState;
+struct SdfCellStateDeleter {
+    void operator()(SdfCellState* state) const;
+};
+using SdfCellStatePtr = std::unique_ptr<SdfCellState, SdfCellStateDeleter>;
+
 // Prunes `program` (with or without its bounding hierarchy) over the cube around `content`.
 // No grid (levels 0) when `content` is empty or the program cannot be split into a tree.
+// With `keep`, what it was built from goes there (null when there is no grid).
 SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
-                          const SdfCellOptions& options = {});
+                          const SdfCellOptions& options = {}, SdfCellStatePtr* keep = nullptr);
+
+// Prunes `grid` again for `edited`: the program the state was built from with only numbers
+// changed (the parameters, transforms and materials of shapes, the kind of a shape, the
+// parameters of operations and modifiers), in the same grid cube. Only cells whose parent
+// cell's pruned program holds a changed node, or changed itself, are pruned again (a moved
+// shape: the cells around its old and new place, and the coarse cells above them); the result
+// is what a full build gives but for the order in which the cell budget is spent. False when
+// the structure differs (or a cell's program would be deeper than the stack): build again,
+// the state is spent.
+bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid& grid);
 
 // The list of the program that runs at p (the cell's, or the whole program's outside the
 // grid): its offset in grid.words and its length, computed as the shader does.
