@@ -451,6 +451,9 @@ struct SdfCellState {
     std::size_t liveCells = 0;
     std::size_t prunedCells = 0; // by the last build or re-prune
     bool tooDeep = false;        // a pruned part deeper than the stack: no grid
+    // Keep the refined cells' trees for repruneSdfCells; without, each goes once its block is
+    // pruned (memory).
+    bool keepTrees = true;
 };
 
 void SdfCellStateDeleter::operator()(SdfCellState* state) const {
@@ -550,87 +553,97 @@ void pruneBlocks(SdfCellState& s, std::vector<std::pair<std::uint32_t, bool>> pe
     const SdfCellOptions& o = s.options;
     const int threadCount =
         o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
+    // A level's blocks a part at a time: the results of a part are all in memory at once.
+    constexpr std::size_t kPartBlocks = 2048;
     while (!pending.empty()) {
-        const std::size_t cellCount = 64 * pending.size();
-        s.prunedCells += cellCount;
-        std::vector<CellResult> results(cellCount);
-        std::atomic<std::size_t> next{0};
-        const auto work = [&] {
-            std::vector<float> value;
-            std::vector<SdfInterval> range;
-            std::vector<SdfPruneSide> side;
-            for (std::size_t t; (t = next.fetch_add(1)) < cellCount;) {
-                const SdfCellState::Block& block = s.blocks[pending[t / 64].first];
-                const int j = int(t % 64);
-                const glm::ivec3 cell = block.first + glm::ivec3(j % 4, (j / 4) % 4, j / 16);
-                const float edge = cellEdge(s, block.level);
-                const glm::vec3 centre = s.origin + (glm::vec3(cell) + 0.5f) * edge;
-                pruneCell(pruner, block.parent, centre, edge,
-                          &s.constants[std::size_t(kFarSteps * (block.level - 1))],
-                          o.farConstants ? o.refineLeaves : -1, results[t], value, range, side);
-                // Only cells that may be refined keep their pruned tree (memory: the finest
-                // level holds most cells).
-                if (block.level == s.levels || results[t].leaves <= o.refineLeaves)
-                    PrunedTree().swap(results[t].pruned);
-            }
-        };
-        std::vector<std::thread> workers;
-        for (int w = 1; w < std::min(threadCount, int(cellCount)); ++w)
-            workers.emplace_back(work);
-        work();
-        for (std::thread& w : workers)
-            w.join();
-
         std::vector<std::pair<std::uint32_t, bool>> children;
-        // Cells to refine anew: within the cell budget, those near the surface first, then
-        // those with the most shapes.
-        std::vector<std::size_t> candidates;
-        for (std::size_t t = 0; t < cellCount; ++t) {
-            const auto [b, fresh] = pending[t / 64];
-            const std::uint32_t k = 64 * b + std::uint32_t(t % 64);
-            CellResult& r = results[t];
-            const bool refine = s.blocks[b].level < s.levels && !r.far && r.leaves > o.refineLeaves;
-            const bool wasRefined = !fresh && (s.entries[2 * k] & kSdfCellRefined);
-            if (wasRefined) {
-                const std::uint32_t child = s.entries[2 * k] & ~kSdfCellRefined;
-                if (refine) {
-                    if (holdsChanged(r.pruned, changed) ||
-                        !sameTree(s.blocks[child].parent, r.pruned)) {
-                        s.blocks[child].parent = std::move(r.pruned);
-                        children.push_back({child, false});
+        for (std::size_t first = 0; first < pending.size(); first += kPartBlocks) {
+            const std::span<const std::pair<std::uint32_t, bool>> part(
+                pending.data() + first, std::min(kPartBlocks, pending.size() - first));
+            const std::size_t cellCount = 64 * part.size();
+            s.prunedCells += cellCount;
+            std::vector<CellResult> results(cellCount);
+            std::atomic<std::size_t> next{0};
+            const auto work = [&] {
+                std::vector<float> value;
+                std::vector<SdfInterval> range;
+                std::vector<SdfPruneSide> side;
+                for (std::size_t t; (t = next.fetch_add(1)) < cellCount;) {
+                    const SdfCellState::Block& block = s.blocks[part[t / 64].first];
+                    const int j = int(t % 64);
+                    const glm::ivec3 cell = block.first + glm::ivec3(j % 4, (j / 4) % 4, j / 16);
+                    const float edge = cellEdge(s, block.level);
+                    const glm::vec3 centre = s.origin + (glm::vec3(cell) + 0.5f) * edge;
+                    pruneCell(pruner, block.parent, centre, edge,
+                              &s.constants[std::size_t(kFarSteps * (block.level - 1))],
+                              o.farConstants ? o.refineLeaves : -1, results[t], value, range, side);
+                    // Only cells that may be refined keep their pruned tree (memory: the finest
+                    // level holds most cells).
+                    if (block.level == s.levels || results[t].leaves <= o.refineLeaves)
+                        PrunedTree().swap(results[t].pruned);
+                }
+            };
+            std::vector<std::thread> workers;
+            for (int w = 1; w < std::min(threadCount, int(cellCount)); ++w)
+                workers.emplace_back(work);
+            work();
+            for (std::thread& w : workers)
+                w.join();
+
+            // Cells to refine anew: within the cell budget, those near the surface first, then
+            // those with the most shapes.
+            std::vector<std::size_t> candidates;
+            for (std::size_t t = 0; t < cellCount; ++t) {
+                const auto [b, fresh] = part[t / 64];
+                const std::uint32_t k = 64 * b + std::uint32_t(t % 64);
+                CellResult& r = results[t];
+                const bool refine =
+                    s.blocks[b].level < s.levels && !r.far && r.leaves > o.refineLeaves;
+                const bool wasRefined = !fresh && (s.entries[2 * k] & kSdfCellRefined);
+                if (wasRefined) {
+                    const std::uint32_t child = s.entries[2 * k] & ~kSdfCellRefined;
+                    if (refine) {
+                        if (holdsChanged(r.pruned, changed) ||
+                            !sameTree(s.blocks[child].parent, r.pruned)) {
+                            s.blocks[child].parent = std::move(r.pruned);
+                            children.push_back({child, false});
+                        }
+                        continue;
                     }
+                    freeBlock(s, child);
+                }
+                if (refine)
+                    candidates.push_back(t);
+                else
+                    setLeafCell(s, k, r);
+            }
+            std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+                const bool nearA = results[a].near, nearB = results[b].near;
+                if (nearA != nearB) return nearA;
+                if (results[a].leaves != results[b].leaves)
+                    return results[a].leaves > results[b].leaves;
+                return a < b;
+            });
+            const std::size_t room = o.maxCells > s.liveCells ? (o.maxCells - s.liveCells) / 64 : 0;
+            for (std::size_t c = 0; c < candidates.size(); ++c) {
+                const std::size_t t = candidates[c];
+                const auto [b, fresh] = part[t / 64];
+                const std::uint32_t k = 64 * b + std::uint32_t(t % 64);
+                if (c >= room) {
+                    setLeafCell(s, k, results[t]);
                     continue;
                 }
-                freeBlock(s, child);
+                const int j = int(t % 64);
+                const glm::ivec3 cell = s.blocks[b].first + glm::ivec3(j % 4, (j / 4) % 4, j / 16);
+                const std::uint32_t child =
+                    allocateBlock(s, s.blocks[b].level + 1, cell * 4, std::move(results[t].pruned));
+                s.entries[2 * k] = kSdfCellRefined | child;
+                s.entries[2 * k + 1] = 0;
+                children.push_back({child, true});
             }
-            if (refine)
-                candidates.push_back(t);
-            else
-                setLeafCell(s, k, r);
-        }
-        std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
-            const bool nearA = results[a].near, nearB = results[b].near;
-            if (nearA != nearB) return nearA;
-            if (results[a].leaves != results[b].leaves)
-                return results[a].leaves > results[b].leaves;
-            return a < b;
-        });
-        const std::size_t room = o.maxCells > s.liveCells ? (o.maxCells - s.liveCells) / 64 : 0;
-        for (std::size_t c = 0; c < candidates.size(); ++c) {
-            const std::size_t t = candidates[c];
-            const auto [b, fresh] = pending[t / 64];
-            const std::uint32_t k = 64 * b + std::uint32_t(t % 64);
-            if (c >= room) {
-                setLeafCell(s, k, results[t]);
-                continue;
-            }
-            const int j = int(t % 64);
-            const glm::ivec3 cell = s.blocks[b].first + glm::ivec3(j % 4, (j / 4) % 4, j / 16);
-            const std::uint32_t child =
-                allocateBlock(s, s.blocks[b].level + 1, cell * 4, std::move(results[t].pruned));
-            s.entries[2 * k] = kSdfCellRefined | child;
-            s.entries[2 * k + 1] = 0;
-            children.push_back({child, true});
+            if (!s.keepTrees)
+                for (const auto& [b, fresh] : part)
+                    PrunedTree().swap(s.blocks[b].parent);
         }
         // Blocks in order, as a full build makes them (the next level's cells likewise).
         std::sort(children.begin(), children.end());
@@ -707,6 +720,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     s.program = program;
     s.code = program.instructions;
     s.options = options;
+    s.keepTrees = keep != nullptr;
     // The union the accumulated parts of a bounding hierarchy are folded with.
     GpuSdfInstruction unite;
     unite.opcode = std::uint32_t(SdfOpcode::Combine);
