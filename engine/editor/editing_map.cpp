@@ -25,6 +25,9 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& inter
             {generateSdfMap(program, SdfStrategy::Baked, {}, live), EditingMapKind::Baked});
         byPreference.push_back(
             {generateSdfMap(program, SdfStrategy::Buffer), EditingMapKind::Buffer});
+    } else {
+        byPreference.push_back(
+            {generateSdfMap(interpreted, SdfStrategy::Cells), EditingMapKind::Cells});
     }
     byPreference.push_back(
         {generateSdfMap(interpreted, SdfStrategy::Interpreter), EditingMapKind::Interpreter});
@@ -51,6 +54,8 @@ std::string_view editingMapName(EditingMapKind kind) {
         return "buffer";
     case EditingMapKind::Interpreter:
         return "interpreter";
+    case EditingMapKind::Cells:
+        return "cells";
     }
     return "";
 }

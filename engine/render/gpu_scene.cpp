@@ -42,7 +42,8 @@ void GpuScene::bindBuffers() const {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfCellBinding, sdfCells.id());
 }
 
-GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
+GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
+                     const SdfCellGrid* cells) {
     GpuScene gpu;
     for (const MeshAsset& asset : prepared.assets) {
         gpu.meshes.push_back(uploadMesh(asset));
@@ -64,12 +65,13 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     // same, with the shells' profile instructions pointing at their data's new place.
     // The Cells strategy: the program pruned per cell, whose instructions (the program's and
     // the few the pruning adds) are the scene's in the buffer.
-    const bool cells = effectiveSdfStrategy(prepared.sdf, strategy) == SdfStrategy::Cells;
-    SdfCellGrid grid;
-    if (cells)
-        grid = buildSdfCells(prepared.sdf,
-                             prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
-    std::vector<GpuSdfInstruction> instructions = cells ? grid.code : prepared.sdf.instructions;
+    const bool pruned = effectiveSdfStrategy(prepared.sdf, strategy) == SdfStrategy::Cells;
+    SdfCellGrid built;
+    if (pruned && !cells)
+        built = buildSdfCells(prepared.sdf,
+                              prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
+    const SdfCellGrid& grid = cells ? *cells : built;
+    std::vector<GpuSdfInstruction> instructions = pruned ? grid.code : prepared.sdf.instructions;
     std::vector<glm::vec4> sdfData = prepared.sdf.data;
     for (const PreparedShell& shell : prepared.shells) {
         SdfProgram program = shell.compiled.program;
@@ -114,7 +116,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     // At least as long as its uniform window.
     gpu.sdfProgram = createHeaderedBuffer(sdfHeader, instructions, kSdfUniformBlockBytes);
     gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
-    if (cells) {
+    if (pruned) {
         GpuSdfCellHeader header;
         header.originSize = glm::vec4(grid.origin, grid.size);
         header.info =

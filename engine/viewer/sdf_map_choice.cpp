@@ -3,6 +3,7 @@
 // warmer builds the better ones (see view_renderer.hpp).
 #include "view_renderer.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <utility>
 
@@ -43,12 +44,19 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     if (maps.draw.empty() || (!sceneChanged_ && !gpuScene_))
         return; // nothing ready for the newest scene: the old picture stays
     const bool sameMap = gpuScene_ && gpuScene_->sdfMap == maps.draw;
-    const bool bounded = maps.kind == editor::EditingMapKind::Interpreter;
+    const bool cells = maps.kind == editor::EditingMapKind::Cells;
+    const bool bounded = cells || maps.kind == editor::EditingMapKind::Interpreter;
     if (sameMap && !sceneChanged_) return;
     std::optional<GpuScene> fresh; // a new upload: a newer scene, or the other program
-    if (sceneChanged_ || bounded != drawnBounded_) {
+    if (sceneChanged_ || bounded != drawnBounded_ || cells != drawnCells_) {
         if (bounded) std::swap(prepared_->sdf, boundedSdf_);
-        fresh = uploadScene(*prepared_, SdfStrategy::Buffer);
+        if (cells) {
+            const SdfCellGrid grid = pruneCells(frameNumber);
+            fresh = uploadScene(*prepared_, SdfStrategy::Cells, &grid);
+        } else {
+            fresh =
+                uploadScene(*prepared_, bounded ? SdfStrategy::Interpreter : SdfStrategy::Buffer);
+        }
         if (bounded) std::swap(prepared_->sdf, boundedSdf_);
     }
     GpuScene& next = fresh ? *fresh : *gpuScene_;
@@ -66,6 +74,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     if (fresh) {
         gpuScene_ = std::move(*fresh);
         drawnBounded_ = bounded;
+        drawnCells_ = cells;
         if (sceneChanged_) sceneError.clear();
         sceneChanged_ = false;
         lastRenderedRevision_ = 0; // the picture may show an older scene: render again
@@ -85,6 +94,30 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
                  : compileMs > 0 ? "built here"
                                  : "built before");
     drawnMap_ = maps.kind;
+}
+
+} // namespace rmsc::app
+
+namespace rmsc::app {
+
+// The cells of prepared_->sdf (the interpreter's program, swapped in): pruned again from the
+// kept state when the edit changed only numbers and the content stays in the grid's cube,
+// else pruned anew (sdf/cell_pruning.hpp).
+SdfCellGrid ViewRenderer::pruneCells(int frameNumber) {
+    const auto start = std::chrono::steady_clock::now();
+    const Aabb content = prepared_->scene.sdf ? sdfContentBox(*prepared_->scene.sdf) : Aabb{};
+    SdfCellGrid grid;
+    bool again = cellState_ && repruneSdfCells(*cellState_, prepared_->sdf, grid);
+    if (again && !content.empty() &&
+        (glm::any(glm::lessThan(content.min, grid.origin)) ||
+         glm::any(glm::greaterThan(content.max, grid.origin + glm::vec3(grid.size)))))
+        again = false; // moved out of the cube: a new one
+    if (!again) grid = buildSdfCells(prepared_->sdf, content, {}, &cellState_);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "rmsc view: frame %d: pruned %zu cells in %.0f ms (%s)\n", frameNumber,
+                 grid.stats.prunedCells, ms, again ? "again, after an edit of numbers" : "all");
+    return grid;
 }
 
 } // namespace rmsc::app

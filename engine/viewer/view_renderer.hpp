@@ -16,6 +16,7 @@
 #include "render/light_gizmo_pass.hpp"
 #include "render/renderer.hpp"
 #include "render/shader_warmer.hpp"
+#include "sdf/cell_pruning.hpp"
 #include "window.hpp"
 
 #include <cstdint>
@@ -93,6 +94,7 @@ class ViewRenderer {
 
   private:
     void startWarmer();
+    SdfCellGrid pruneCells(int frameNumber);
 
     ShaderFiles shaderFiles_;
     std::optional<Renderer> renderer_;
@@ -105,6 +107,8 @@ class ViewRenderer {
     bool sceneChanged_ = false; // `prepared_` is newer than what is drawn: it shows once a map
                                 // for it is ready
     bool drawnBounded_ = false; // gpuScene_ holds boundedSdf_ (the interpreter draws)
+    bool drawnCells_ = false;   // and its cells (the cells map draws)
+    SdfCellStatePtr cellState_; // what they were pruned from, to prune them again after an edit
     std::uint64_t uploadedRevision_ = 0;
     // The SDF map drawn: the best one that is ready; the warmer builds better ones on its
     // hidden window's context meanwhile.

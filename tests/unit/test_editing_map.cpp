@@ -85,20 +85,28 @@ TEST(EditingMap, TheBestReadyMapIsDrawnAndTheOthersBuilt) {
     EXPECT_NE(interpreted.draw, interpreter);
 }
 
-TEST(EditingMap, ScenesTooLargeForGeneratedCodeOnlyHaveTheInterpreter) {
+TEST(EditingMap, ScenesTooLargeForGeneratedCodeHaveTheCellsMapThenTheInterpreter) {
     std::string children;
     for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
         children += std::string(i ? ", " : "") + R"({"shape": "sphere", "radius": 0.1})";
     const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
+    const std::string cells = generateSdfMap(large, SdfStrategy::Cells);
     const std::string interpreter = generateSdfMap(large, SdfStrategy::Interpreter);
+    ASSERT_NE(cells, interpreter);
     const editor::EditingMaps maps = editor::chooseEditingMaps(
         large, large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return false; });
     EXPECT_EQ(maps.draw, "");
-    EXPECT_EQ(maps.build, std::vector<std::string>{interpreter});
+    EXPECT_EQ(maps.build, (std::vector<std::string>{cells, interpreter}));
     const editor::EditingMaps ready = editor::chooseEditingMaps(
         large, large, {kSdfIdBase + 1, kSdfIdBase + 1}, [](const std::string&) { return true; });
-    EXPECT_EQ(ready.draw, interpreter);
+    EXPECT_EQ(ready.draw, cells);
+    EXPECT_EQ(ready.kind, editor::EditingMapKind::Cells);
     EXPECT_TRUE(ready.build.empty()) << "nothing to build in the background";
+    // Until the cells map is built, the interpreter draws.
+    const editor::EditingMaps fallback = editor::chooseEditingMaps(
+        large, large, {}, [&](const std::string& map) { return map == interpreter; });
+    EXPECT_EQ(fallback.draw, interpreter);
+    EXPECT_EQ(fallback.build, std::vector<std::string>{cells});
 }
 
 // The live range is the selected node and its subtree, inclusive, and nothing for a selection

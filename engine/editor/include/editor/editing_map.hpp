@@ -3,7 +3,9 @@
 // changes buffer contents only and the rest of the scene runs baked; then the buffer map; then
 // the interpreter, whose text depends only on the kinds of shapes used, so it is usually ready
 // after a structural edit (add, delete, duplicate, regroup) and draws the edited scene in the
-// edit's own frame. The maps that are not ready are built in the background meanwhile.
+// edit's own frame. Scenes too large for generated code draw with the cells map (the program
+// pruned per cell, sdf/cell_pruning.hpp), whose text too depends only on the kinds of shapes,
+// then the interpreter. The maps that are not ready are built in the background meanwhile.
 #pragma once
 
 #include "editor/selection.hpp"
@@ -21,6 +23,7 @@ enum class EditingMapKind {
     Baked,       // baked, the selection live
     Buffer,      // every number from the buffer
     Interpreter, // the interpreter
+    Cells,       // the interpreter on the program pruned per cell (scenes too large for the rest)
 };
 
 struct EditingMaps {
@@ -41,11 +44,12 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection);
 // interpreter runs it, with the hierarchy (the interpreter's text does not depend on the order,
 // and the hierarchy lets it skip parts). `live`: the selection's object ids (empty when nothing
 // in the SDF is selected). `isReady`: are a map's programs built (or warm in the driver's
-// cache)? Scenes too large for generated code only have the interpreter.
+// cache)? Scenes too large for generated code have the cells map and the interpreter, both of
+// `interpreted`.
 EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& interpreted,
                               const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady);
 
-std::string_view editingMapName(EditingMapKind kind); // "baked", "buffer", "interpreter"
+std::string_view editingMapName(EditingMapKind kind); // "baked", "buffer", "interpreter", "cells"
 
 } // namespace rmsc::editor

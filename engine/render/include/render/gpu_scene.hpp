@@ -76,6 +76,9 @@ struct GpuScene {
     void bindBuffers() const;
 };
 
-GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfStrategy::Baked);
+// Under the Cells strategy the program is pruned here, unless `cells` gives the grid already
+// pruned for prepared.sdf (the viewer's, pruned again after an edit: sdf/cell_pruning.hpp).
+GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfStrategy::Baked,
+                     const SdfCellGrid* cells = nullptr);
 
 } // namespace rmsc
