@@ -23,7 +23,7 @@ bool dragFloat(const char* label, float& value, float step, const ParamRange& ra
 
 // The sky type combo; an image sky without a file is refused (then the file field shows).
 void chooseSkyType(editor::Document& document, EnvironmentFields& fields) {
-    const char* names[] = {"none (background, ambient)", "constant", "gradient", "image"};
+    const char* names[] = {"none", "constant", "gradient", "image"};
     static_assert(int(SkyType::Image) == 3 && kSkyTypeNames.size() == 3);
     Environment& environment = document.editScene().environment;
     int type = int(environment.sky);

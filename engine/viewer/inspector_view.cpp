@@ -21,9 +21,9 @@ namespace {
 bool editCameraFrame(Camera& camera, std::string& refusal) {
     Camera wanted = camera;
     ImGui::PushID("camera"); // the View section has a "target" of its own
-    bool edited = ImGui::DragFloat3("position", &wanted.position.x, 0.01f, 0.0f, 0.0f, "%.3f");
-    edited |= ImGui::DragFloat3("target", &wanted.target.x, 0.01f, 0.0f, 0.0f, "%.3f");
-    edited |= ImGui::DragFloat3("up", &wanted.up.x, 0.01f, 0.0f, 0.0f, "%.3f");
+    bool edited = ImGui::DragFloat3("position", &wanted.position.x, 0.01f, 0.0f, 0.0f, "%.2f");
+    edited |= ImGui::DragFloat3("target", &wanted.target.x, 0.01f, 0.0f, 0.0f, "%.2f");
+    edited |= ImGui::DragFloat3("up", &wanted.up.x, 0.01f, 0.0f, 0.0f, "%.2f");
     ImGui::PopID();
     helpTooltip("The scene's camera looks from its position at its target; up is the "
                 "direction shown upwards. \"Save camera to scene\" sets all three from the view.");
