@@ -27,7 +27,7 @@ void chooseSkyType(editor::Document& document, EnvironmentFields& fields) {
     static_assert(int(SkyType::Image) == 3 && kSkyTypeNames.size() == 3);
     Environment& environment = document.editScene().environment;
     int type = int(environment.sky);
-    if (!ImGui::Combo("sky", &type, names, 4)) return;
+    if (!ImGui::Combo("sky", &type, names, 4) || SkyType(type) == environment.sky) return;
     std::string error;
     if (editor::setSkyType(environment, SkyType(type), error)) {
         fields.skyRefusal.clear();
