@@ -99,6 +99,65 @@ constexpr KeyControl kAoKeys[] = {
     {"strength", "AO strength"},
 };
 
+// engine/viewer/inspector_view.cpp: the scene camera.
+constexpr KeyControl kCameraKeys[] = {
+    {"position", "Camera: position (and Save camera to scene)"},
+    {"target", "Camera: target (and Save camera to scene)"},
+    {"up", "Camera: up (and Save camera to scene)"},
+    {"fov", "fov"},
+    {"near", "near"},
+    {"far", "far"},
+};
+
+// engine/viewer/inspector_mesh.cpp.
+constexpr KeyControl kMeshKeys[] = {
+    {"name", "name"},
+    {"file", "file (applied when it loads)"},
+    {"material", "material"},
+    {"position", "position"},
+    {"rotation", "rotation"},
+    {"scale", "scale"},
+    {"quaternion", "rotation (the same rotation; a save writes it as this exact quaternion)"},
+};
+
+// engine/viewer/inspector_environment.cpp.
+constexpr KeyControl kEnvironmentKeys[] = {
+    {"sky", "Environment: sky"},
+    {"intensity", "Environment: intensity"},
+    {"fog", "Environment: fog"},
+};
+constexpr KeyControl kSkyConstantKeys[] = {
+    {"type", "Environment: sky"},
+    {"color", "Environment: colour"},
+};
+constexpr KeyControl kSkyGradientKeys[] = {
+    {"type", "Environment: sky"},
+    {"zenith", "Environment: zenith"},
+    {"horizon", "Environment: horizon"},
+    {"ground", "Environment: ground"},
+};
+constexpr KeyControl kSkyImageKeys[] = {
+    {"type", "Environment: sky"},
+    {"file", "Environment: file (applied when it loads)"},
+    {"rotation", "Environment: rotation"},
+};
+constexpr KeyControl kFogKeys[] = {
+    {"color", "Environment: fog colour"},
+    {"density", "Environment: fog / density"},
+};
+
+// The scene's top level: each key is a part of the editor of its own.
+constexpr KeyControl kSceneKeysElsewhere[] = {
+    {"version", "the format version: every save writes the version it reads"},
+    {"camera", "the Render tab's Camera section"},
+    {"render", "the Render tab's render settings"},
+    {"materials", "an object's material: choose or create one (the inspector edits it there)"},
+    {"lights", "+ Light and the Add menu; the Object tab edits the selected light"},
+    {"meshes", "the Add menu's glTF mesh; the Object tab edits the selected mesh"},
+    {"environment", "the Render tab's Environment section"},
+    {"sdf", "the Scene panel (+ Shape, + Group); the Object tab edits the selected node"},
+};
+
 void add(std::vector<InspectorKey>& keys, const std::string& object,
          std::span<const KeyControl> rows) {
     for (const KeyControl& row : rows)
@@ -166,6 +225,13 @@ std::vector<InspectorKey> inspectorKeys() {
     add(keys, "render", kRenderKeys);
     add(keys, "shadows", kShadowKeys);
     add(keys, "ao", kAoKeys);
+    add(keys, "camera", kCameraKeys);
+    add(keys, "mesh", kMeshKeys);
+    add(keys, "environment", kEnvironmentKeys);
+    add(keys, "sky_constant", kSkyConstantKeys);
+    add(keys, "sky_gradient", kSkyGradientKeys);
+    add(keys, "sky_image", kSkyImageKeys);
+    add(keys, "fog", kFogKeys);
     return keys;
 }
 
@@ -174,6 +240,7 @@ std::vector<InspectorKey> keysNotInInspector() {
     keys.push_back({"group", "children",
                     "the Scene panel edits the hierarchy (+ Shape, + Group, drag and drop, "
                     "Ctrl+D, Delete)"});
+    add(keys, kSceneObject, kSceneKeysElsewhere);
     return keys;
 }
 

@@ -3,6 +3,7 @@
 // at most 90 degrees, inner below outer).
 #include "lighting_json.hpp"
 
+#include "scene/environment_spec.hpp"
 #include "scene/render_spec.hpp"
 
 #include "core/limits.hpp"
@@ -34,7 +35,12 @@ const std::vector<std::string> kShadowKeys = {"enabled",      "steps",         "
                                               "pcf_radius",   "normal_offset", "slope_bias"};
 const std::vector<std::string> kAoKeys = {"samples", "distance", "strength"};
 const std::vector<std::string> kEnvironmentKeys = {"sky", "intensity", "fog"};
-const std::vector<std::string> kSkyTypes = {"constant", "gradient", "image"};
+const std::vector<std::string> kSkyTypes = [] {
+    std::vector<std::string> names;
+    for (const SkyTypeName& sky : kSkyTypeNames)
+        names.emplace_back(sky.name);
+    return names;
+}();
 const std::vector<std::string> kFogKeys = {"color", "density"};
 
 constexpr int kDefaultAoSamples = 5;
@@ -107,7 +113,7 @@ void readSky(const JsonReader& json, const Json& object, const std::string& poin
             }
         }
         readNumberField(json, object, pointer, "rotation", &environment.rotationDegrees,
-                        NumberRange::closed(-360.0, 360.0));
+                        numberRange(kSkyRotationRange));
     } else {
         json.error(typePointer,
                    "unknown sky type \"" + *name + "\"; known sky types: " + quotedList(kSkyTypes));
@@ -223,7 +229,7 @@ void readEnvironment(const JsonReader& json, const Json& object,
     if (const Json* sky = findMember(object, "sky"))
         readSky(json, *sky, childPointer(pointer, "sky"), sceneFolder, environment);
     readNumberField(json, object, pointer, "intensity", &environment.intensity,
-                    NumberRange::atLeast(0.0));
+                    numberRange(kEnvironmentIntensityRange));
     if (const Json* fog = findMember(object, "fog")) {
         const std::string fogPointer = childPointer(pointer, "fog");
         if (expectObject(json, *fog, fogPointer)) {
@@ -234,7 +240,7 @@ void readEnvironment(const JsonReader& json, const Json& object,
                                        "extinction per world unit)");
             }
             readNumberField(json, *fog, fogPointer, "density", &environment.fogDensity,
-                            NumberRange::closed(0.0, 10.0));
+                            numberRange(kFogDensityRange));
         }
     }
 }

@@ -8,6 +8,8 @@
 #include "json_reader.hpp"
 #include "lighting_json.hpp"
 #include "material_texture_json.hpp"
+#include "param_json.hpp"
+#include "scene/camera_spec.hpp"
 #include "sdf_json.hpp"
 #include "transform_json.hpp"
 
@@ -71,45 +73,19 @@ void readCamera(const SceneReader& r, const Json& object, Camera& camera) {
     const bool targetOk = readVec3Field(r.json, object, pointer, "target", &camera.target);
     const bool upOk = readVec3Field(r.json, object, pointer, "up", &camera.up);
     readNumberField(r.json, object, pointer, "fov", &camera.fovYDegrees,
-                    NumberRange::open(0.0, 180.0));
+                    numberRange(kCameraFovRange));
     const bool nearOk = readNumberField(r.json, object, pointer, "near", &camera.nearPlane,
-                                        NumberRange::above(0.0));
-    const bool farOk =
-        readNumberField(r.json, object, pointer, "far", &camera.farPlane, NumberRange::above(0.0));
+                                        numberRange(kCameraNearRange));
+    const bool farOk = readNumberField(r.json, object, pointer, "far", &camera.farPlane,
+                                       numberRange(kCameraFarRange));
     if (nearOk && farOk && !(camera.farPlane > camera.nearPlane)) {
         r.json.error(childPointer(pointer, "far"), "expected \"far\" > \"near\" (" +
                                                        formatNumber(camera.nearPlane) + "), got " +
                                                        formatNumber(camera.farPlane));
     }
     if (!positionOk || !targetOk || !upOk) return;
-    const glm::vec3 view = camera.target - camera.position;
-    if (view == glm::vec3(0.0f)) {
-        r.json.error(childPointer(pointer, "target"),
-                     "the camera's \"target\" equals its \"position\"; it must look somewhere");
-        return;
-    }
-    // Normalizing a float vector squares its components: from about 1.8e19 on they overflow.
-    if (!std::isfinite(glm::length(view))) {
-        r.json.error(childPointer(pointer, "target"),
-                     "target - position is too long for float arithmetic (its length overflows "
-                     "to infinity); expected \"target\" and \"position\" less than 1e19 apart");
-        return;
-    }
-    const float upLength = glm::length(camera.up);
-    if (!std::isfinite(upLength)) {
-        r.json.error(childPointer(pointer, "up"),
-                     "the \"up\" vector is too long for float arithmetic (its length overflows "
-                     "to infinity); expected components below 1e19, e.g. [0, 1, 0]");
-        return;
-    }
-    const float sine = upLength > 0.0f
-                           ? glm::length(glm::cross(camera.up / upLength, glm::normalize(view)))
-                           : 0.0f;
-    if (!(sine > 1e-4f)) {
-        r.json.error(childPointer(pointer, "up"),
-                     "expected an \"up\" vector that is non-zero and not parallel to the view "
-                     "direction (target - position)");
-    }
+    if (const std::optional<CameraProblem> problem = cameraFrameProblem(camera))
+        r.json.error(childPointer(pointer, problem->key), problem->message);
 }
 
 void readRender(const SceneReader& r, const Json& object, RenderSettings& render) {

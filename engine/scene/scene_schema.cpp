@@ -12,6 +12,8 @@
 #include "core/limits.hpp"
 #include "json_reader.hpp"
 #include "param_json.hpp"
+#include "scene/camera_spec.hpp"
+#include "scene/environment_spec.hpp"
 #include "scene/light_spec.hpp"
 #include "scene/scene_json.hpp"
 #include "sdf/modifiers.hpp"
@@ -252,9 +254,9 @@ std::vector<ObjectDef> objectDefs() {
          {{"position", numbers(3)},
           {"target", numbers(3)},
           {"up", numbers(3)},
-          {"fov", described(number(NumberRange::open(0.0, 180.0)), "vertical, degrees")},
-          {"near", number(NumberRange::above(0.0))},
-          {"far", described(number(NumberRange::above(0.0)), "greater than near")}},
+          {"fov", described(number(numberRange(kCameraFovRange)), "vertical, degrees")},
+          {"near", number(numberRange(kCameraNearRange))},
+          {"far", described(number(numberRange(kCameraFarRange)), "greater than near")}},
          {},
          "a pinhole camera"},
         {"render",
@@ -364,7 +366,7 @@ std::vector<ObjectDef> objectDefs() {
          "/environment",
          Json::object(),
          {{"sky", ref("sky")},
-          {"intensity", number(numberRange(kLightIntensityRange))},
+          {"intensity", number(numberRange(kEnvironmentIntensityRange))},
           {"fog", ref("fog")}},
          {},
          "sky and fog"},
@@ -388,7 +390,7 @@ std::vector<ObjectDef> objectDefs() {
          {{"type", "image"}},
          {{"type", string()},
           {"file", path("an equirectangular .hdr image")},
-          {"rotation", described(number(NumberRange::closed(-360.0, 360.0)), "degrees")}},
+          {"rotation", described(number(numberRange(kSkyRotationRange)), "degrees")}},
          {"type", "file"},
          "an equirectangular image"},
         {"fog",
@@ -396,7 +398,7 @@ std::vector<ObjectDef> objectDefs() {
          "/environment/fog",
          {{"density", 0.1}},
          {{"color", color()},
-          {"density", described(number(NumberRange::closed(0.0, 10.0)), "extinction per metre")}},
+          {"density", described(number(numberRange(kFogDensityRange)), "extinction per metre")}},
          {"density"},
          "exponential fog"},
         {"group",

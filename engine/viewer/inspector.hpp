@@ -7,6 +7,7 @@
 
 #include "editor/document.hpp"
 #include "editor_session.hpp"
+#include "file_field.hpp"
 #include "panel_layout.hpp"
 #include "view_settings.hpp"
 #include "viewer_commands.hpp"
@@ -28,12 +29,23 @@ struct TextureFileField {
 };
 using TextureFileFields = std::array<TextureFileField, 3>; // one per slot
 
+// The environment's fields that outlive a frame: the sky image's file being typed, and why the
+// last sky type was refused (an image sky chosen before its file, which then shows).
+struct EnvironmentFields {
+    FileField skyFile;
+    std::string skyRefusal;
+    bool choosingImage = false;
+};
+
 struct InspectorState {
     // Positions shown in world coordinates, and gesture axes the world's (otherwise the
     // object's own).
     bool worldCoordinates = false;
     TextureFileFields textureFiles;
     std::string modifierRefusal; // why the last modifier edit was undone ("" = it was not)
+    FileField meshFile;          // the selected mesh's glTF file
+    EnvironmentFields environment;
+    std::string cameraRefusal; // why the last camera position / target / up was not taken
 };
 
 void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSettings& view,
@@ -42,7 +54,7 @@ void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSetti
 // The Object tab, by the kind of the selection.
 void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& path,
                           InspectorState& state, ViewerCommands& commands);
-void drawMeshInspector(editor::Document& document, int mesh, bool& worldCoordinates,
+void drawMeshInspector(editor::Document& document, int mesh, InspectorState& state,
                        ViewerCommands& commands);
 void drawLightInspector(editor::Document& document, int light, ViewerCommands& commands);
 
@@ -60,7 +72,9 @@ void drawMaterialTextures(editor::Document& document, int material, TextureFileF
 
 // The Render tab.
 void drawRenderSettingsInspector(editor::Document& document);
-void drawCameraInspector(EditorSession& session);
+void drawEnvironmentInspector(editor::Document& document, EnvironmentFields& fields);
+// The scene camera; `refusal` says why the last position / target / up was not taken.
+void drawCameraInspector(EditorSession& session, std::string& refusal);
 void drawViewInspector(ViewSettings& view);
 
 } // namespace rmsc::app

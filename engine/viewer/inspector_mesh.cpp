@@ -1,7 +1,8 @@
-// The inspector for a mesh instance: name, its glTF file, transform and material override (see
-// inspector.hpp).
+// The inspector for a mesh instance: name, its glTF file (taken only when it loads,
+// editor/mesh_file_edits.hpp), transform and material override (see inspector.hpp).
 #include "inspector.hpp"
 
+#include "editor/mesh_file_edits.hpp"
 #include "panel_widgets.hpp"
 
 #include <imgui.h>
@@ -11,12 +12,28 @@
 
 namespace rmsc::app {
 
-void drawMeshInspector(editor::Document& document, int index, bool& worldCoordinates,
+void drawMeshInspector(editor::Document& document, int index, InspectorState& state,
                        ViewerCommands& commands) {
+    if (ImGui::InputText("name", &document.editScene().meshes[std::size_t(index)].name))
+        document.markChanged("Rename");
+    FileField& field = state.meshFile;
+    if (drawFileField("file", field, index, document.scene().meshes[std::size_t(index)].file,
+                      "A .gltf or .glb file, relative to the scene file's folder. Enter or apply "
+                      "loads it; a file that does not load changes nothing.")) {
+        Scene candidate = document.scene();
+        std::string error;
+        if (editor::setMeshFile(candidate, index, field.text, diskFileSource(), error)) {
+            document.apply("Mesh file",
+                           [&](Scene& scene, editor::Selection&) { scene = std::move(candidate); });
+            field.error.clear();
+        } else {
+            field.error = error;
+        }
+    }
+    drawRefusal(field.error);
     Scene& scene = document.editScene();
     MeshInstance& mesh = scene.meshes[std::size_t(index)];
-    if (ImGui::InputText("name", &mesh.name)) document.markChanged("Rename");
-    ImGui::TextDisabled("file: %s", mesh.file.c_str());
+    bool& worldCoordinates = state.worldCoordinates;
     ImGui::Checkbox("world coordinates", &worldCoordinates);
     helpTooltip("R / G with X, Y or Z: the world's axes when on, the mesh's own "
                 "axes when off.");

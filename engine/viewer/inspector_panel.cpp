@@ -14,7 +14,7 @@ void drawObjectTab(EditorSession& session, InspectorState& state, ViewerCommands
         drawSdfNodeInspector(session.document, selection.sdfPath, state, commands);
         break;
     case editor::SelectionKind::Mesh:
-        drawMeshInspector(session.document, selection.index, state.worldCoordinates, commands);
+        drawMeshInspector(session.document, selection.index, state, commands);
         break;
     case editor::SelectionKind::Light:
         drawLightInspector(session.document, selection.index, commands);
@@ -26,10 +26,12 @@ void drawObjectTab(EditorSession& session, InspectorState& state, ViewerCommands
     }
 }
 
-void drawRenderTab(EditorSession& session, ViewSettings& view) {
+void drawRenderTab(EditorSession& session, InspectorState& state, ViewSettings& view) {
     drawRenderSettingsInspector(session.document);
     ImGui::Separator();
-    drawCameraInspector(session);
+    drawEnvironmentInspector(session.document, state.environment);
+    ImGui::Separator();
+    drawCameraInspector(session, state.cameraRefusal);
     ImGui::Separator();
     drawViewInspector(view);
 }
@@ -51,7 +53,7 @@ void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSetti
             ImGui::EndTabItem();
         }
         if (ImGui::BeginTabItem("Render")) {
-            drawRenderTab(session, view);
+            drawRenderTab(session, state, view);
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();

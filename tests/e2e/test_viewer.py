@@ -13,8 +13,8 @@ and moves it again, adds a revolution and a chamfer union group, and saves; the 
 the saved file and that the window shows the lights' markers.
 A third run marks both children of the root group as cut with the inspector's cut checkbox (a
 group whose every child is cut does not compile), presses Ctrl+S and checks the save is refused
-(the log names /sdf, the problems panel shows it, the file is unchanged), then undoes one cut
-and saves successfully.
+(the log names /sdf, the problems panel shows it, the file is unchanged), then undoes one cut,
+turns the fog on in the Render tab's Environment section and saves successfully.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -186,6 +186,9 @@ def refuse_run(rmsc, source, tmp, xvfb_run, check):
     children = json.load(open(scene))["sdf"]["children"]
     check("the file holds the scene after the undo: the ball cut, the base not",
           [c.get("cut", False) for c in children] == [True, False], children)
+    fog = json.load(open(scene)).get("environment", {}).get("fog", {})
+    check("the Render tab's fog checkbox turned the fog on in the saved file",
+          abs(fog.get("density", 0) - 0.05) < 1e-6, fog)
     path = os.path.join(folder, "refused.png")
     check("third run: window shot refused written", os.path.exists(path))
     if os.path.exists(path):

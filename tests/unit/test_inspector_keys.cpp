@@ -1,8 +1,9 @@
-// Every key of the SDF node, group, shape, modifier, profile, shell, light, material, texture and
-// render-settings objects the scene schema defines has a control in the inspector
-// (editor/inspector_keys.hpp) or is listed as left to another part of the editor, with why. The
-// schema is the generator's own output, so a key added to the format fails here until the
-// inspector edits it.
+// Every key of every object the scene schema defines (its top level and each "$defs" entry with
+// properties: SDF nodes, groups, shapes, modifiers, profiles, shells, lights, materials,
+// textures, render settings, the camera, meshes, the environment, skies and fog) has a control
+// in the inspector (editor/inspector_keys.hpp) or is listed as left to another part of the
+// editor, with why. The schema is the generator's own output, so a key added to the format
+// fails here until the inspector edits it.
 #include "editor/inspector_keys.hpp"
 #include "scene/scene_schema.hpp"
 
@@ -18,13 +19,14 @@ using nlohmann::ordered_json;
 
 namespace {
 
-// The schema definitions the inspector covers: these names, or these prefixes.
-bool inspected(const std::string& def) {
-    static const std::set<std::string> names = {"group",          "shell",  "material", "texture",
-                                                "normal_texture", "render", "shadows",  "ao"};
-    for (const char* prefix : {"shape_", "modifier_", "profile_", "light_"})
-        if (def.rfind(prefix, 0) == 0) return true;
-    return names.count(def) > 0;
+// Every object of the schema that has keys: the top level (editor::kSceneObject) and each
+// "$defs" entry with "properties" (the others, such as "node" or "sky", are unions of these).
+std::map<std::string, ordered_json> schemaObjects(const ordered_json& schema) {
+    std::map<std::string, ordered_json> objects;
+    objects[editor::kSceneObject] = schema["properties"];
+    for (const auto& [def, body] : schema["$defs"].items())
+        if (body.contains("properties")) objects[def] = body["properties"];
+    return objects;
 }
 
 std::map<std::string, std::set<std::string>>
@@ -43,10 +45,9 @@ TEST(InspectorKeys, EverySchemaKeyHasAControl) {
     const auto leftOut = byObject(editor::keysNotInInspector());
     int objects = 0;
     int keys = 0;
-    for (const auto& [def, body] : schema["$defs"].items()) {
-        if (!inspected(def) || !body.contains("properties")) continue;
+    for (const auto& [def, properties] : schemaObjects(schema)) {
         ++objects;
-        for (const auto& [key, value] : body["properties"].items()) {
+        for (const auto& [key, value] : properties.items()) {
             ++keys;
             const bool hasControl = edited.count(def) && edited.at(def).count(key);
             const bool excused = leftOut.count(def) && leftOut.at(def).count(key);
@@ -57,21 +58,26 @@ TEST(InspectorKeys, EverySchemaKeyHasAControl) {
         }
     }
     // Every kind of object was found: a renamed definition would otherwise check nothing.
-    EXPECT_GT(objects, 60);
-    EXPECT_GT(keys, 500);
-    for (const char* def : {"group", "shape_sphere", "shape_revolution", "modifier_repeat",
-                            "profile_polygon", "light_spot", "material", "render", "shell"})
+    EXPECT_GT(objects, 70);
+    EXPECT_GT(keys, 550);
+    for (const char* def :
+         {"group", "shape_sphere", "shape_revolution", "modifier_repeat", "profile_polygon",
+          "light_spot", "material", "render", "shell", "camera", "mesh", "environment",
+          "sky_constant", "sky_gradient", "sky_image", "fog"})
         EXPECT_TRUE(schema["$defs"].contains(def)) << def;
+    // Only the unions of other objects are left out of the walk.
+    for (const auto& [def, body] : schema["$defs"].items())
+        EXPECT_TRUE(body.contains("properties") || body.contains("oneOf")) << def;
 }
 
 // Neither list names a key the schema does not have (a stale row after a key was renamed).
 TEST(InspectorKeys, EveryListedKeyIsInTheSchema) {
     const ordered_json schema = ordered_json::parse(generateSceneSchema().text);
+    const auto objects = schemaObjects(schema);
     for (const auto& rows : {editor::inspectorKeys(), editor::keysNotInInspector()})
         for (const editor::InspectorKey& row : rows) {
-            ASSERT_TRUE(schema["$defs"].contains(row.object)) << row.object;
-            EXPECT_TRUE(schema["$defs"][row.object]["properties"].contains(row.key))
-                << row.object << "." << row.key;
+            ASSERT_TRUE(objects.count(row.object)) << row.object;
+            EXPECT_TRUE(objects.at(row.object).contains(row.key)) << row.object << "." << row.key;
             EXPECT_FALSE(row.control.empty()) << row.object << "." << row.key;
         }
 }
@@ -81,4 +87,18 @@ TEST(InspectorKeys, BlendAndCutHaveControls) {
     EXPECT_TRUE(edited.at("group").count("blend"));
     EXPECT_TRUE(edited.at("group").count("cut"));
     EXPECT_TRUE(edited.at("shape_box").count("cut"));
+}
+
+// The keys issue 18 found without a control: the camera's frame, a mesh's file, the sky of each
+// type, its intensity and the fog.
+TEST(InspectorKeys, CameraMeshEnvironmentAndFogHaveControls) {
+    const auto edited = byObject(editor::inspectorKeys());
+    for (const char* key : {"position", "target", "up", "fov", "near", "far"})
+        EXPECT_TRUE(edited.at("camera").count(key)) << key;
+    EXPECT_TRUE(edited.at("mesh").count("file"));
+    EXPECT_TRUE(edited.at("environment").count("intensity"));
+    EXPECT_TRUE(edited.at("sky_image").count("file"));
+    EXPECT_TRUE(edited.at("sky_image").count("rotation"));
+    EXPECT_TRUE(edited.at("sky_gradient").count("zenith"));
+    EXPECT_TRUE(edited.at("fog").count("density"));
 }

@@ -1,0 +1,29 @@
+// The valid values of the scene camera's keys (`camera`): the ranges of its lens and the rule
+// its position, target and up must follow. The scene reader (scene/scene_json.cpp), the schema
+// and the editor's camera fields take them from here, so none of them can disagree.
+#pragma once
+
+#include "scene/scene.hpp"
+#include "sdf/param_spec.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace rmsc {
+
+inline constexpr ParamRange kCameraFovRange = {0.0, 180.0, true, true}; // degrees, vertical
+inline constexpr ParamRange kCameraNearRange = {0.0, ParamRange{}.max, true, false}; // > 0
+inline constexpr ParamRange kCameraFarRange = {0.0, ParamRange{}.max, true, false};  // > near
+
+// What is wrong with a camera's position, target and up: the key to blame and why.
+struct CameraProblem {
+    std::string_view key; // "target" or "up"
+    std::string message;
+};
+
+// The target must differ from the position (and lie less than about 1e19 from it, or float
+// arithmetic overflows), and up must be finite, non-zero and not parallel to the view.
+std::optional<CameraProblem> cameraFrameProblem(const Camera& camera);
+
+} // namespace rmsc
