@@ -5,6 +5,7 @@
 
 #include "gltf_files.hpp"
 #include "gltf_json_checks.hpp"
+#include "gltf_unsupported.hpp"
 #include "gltf_validate.hpp"
 #include "scene/gltf_budget.hpp"
 #include "scene/gltf_geometry.hpp"
@@ -475,6 +476,7 @@ std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSourc
     if (report.errors > 0) return std::nullopt;
 
     if (!gltf::validateModel(model, report)) return std::nullopt;
+    gltf::warnUnsupportedFeatures(model, report);
     if (!loadExternalImages(model, context)) return std::nullopt;
 
     MeshAsset asset;
