@@ -1,12 +1,13 @@
 // glTF extension reporting: an extension marked required that rmsc lacks refuses the file,
 // naming it; one used but not supported gets exactly one warning naming it, wherever it is used
-// and however often; the supported ones load without a word.
+// and however often; the supported ones load without a word; the docs list the same table.
 #include "gltf_builder.hpp"
 #include "scene/gltf_extensions.hpp"
 #include "scene/mesh_asset.hpp"
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 
 using namespace rmsc;
@@ -105,4 +106,21 @@ TEST(GltfExtensions, SampleModelsNeedNoWarningAboutExtensions) {
         EXPECT_TRUE(loadGltf(gltfSamples() / name, diskFileSource(), d)) << d.format();
         EXPECT_EQ(naming(d, "extension").size(), 0u) << name << ": " << d.format();
     }
+}
+
+TEST(GltfExtensions, DocsListExactlyTheSupportedExtensions) {
+    // docs/gltf.md "## Extensions": one "- `NAME`: what rmsc reads of it" line per row of the
+    // table, in its order.
+    std::ifstream file(std::string(RMSC_TEST_SOURCE_DIR) + "/docs/gltf.md");
+    ASSERT_TRUE(file) << "docs/gltf.md is missing";
+    std::vector<std::string> listed;
+    bool inSection = false;
+    for (std::string line; std::getline(file, line);) {
+        if (line.rfind("## ", 0) == 0) inSection = line == "## Extensions";
+        if (inSection && line.rfind("- `", 0) == 0) listed.push_back(line);
+    }
+    std::vector<std::string> expected;
+    for (const GltfExtensionInfo& e : gltfExtensions())
+        expected.push_back("- `" + std::string(e.name) + "`: " + std::string(e.reads));
+    EXPECT_EQ(listed, expected);
 }
