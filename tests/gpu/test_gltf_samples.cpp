@@ -12,8 +12,6 @@
 #include "render/frame.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 using namespace rmsc;
 using namespace rmsc::test;
@@ -158,9 +156,10 @@ TEST(GltfSamples, TextureSettingsTestCullsSingleSidedBackFaces) {
         const auto [lo, hi] = materialBounds(assetOf(*s), material);
         const Rect rect = screenRect(*s, lo, hi, 0);
         // Red-dominant pixels: only the X is red (the checks are green, the board blue).
-        EXPECT_EQ(countPixels(*s, rect,
-                              [](int r, int g, int b) { return r > 100 && r > g + 40 && r > b + 40; }),
-                  0)
+        EXPECT_EQ(
+            countPixels(*s, rect,
+                        [](int r, int g, int b) { return r > 100 && r > g + 40 && r > b + 40; }),
+            0)
             << material << ": a red X";
         EXPECT_GT(rect.x1 - rect.x0, 2) << material << ": the cell is not in view";
     }
@@ -192,10 +191,6 @@ TEST(GltfSamples, AlphaBlendModeTestMaskPanelsEndAtTheirCutoffs) {
         for (float f = 0.02f; f < 0.99f; f += 0.02f) {
             const glm::vec2 p = project(*s, {x, lo.y + f * (hi.y - lo.y), hi.z});
             if (isStripe(s->display.at(int(p.x), int(p.y)))) top = f;
-            if (std::getenv("RMSC_DEBUG_SAMPLES")) {
-                const std::uint8_t* c = s->display.at(int(p.x), int(p.y));
-                std::printf("%s %.2f: %d %d %d\n", material, f, c[0], c[1], c[2]);
-            }
             ++samples;
         }
         EXPECT_NEAR(top, 1.0f - cutoff, 0.07f) << material;
