@@ -1,6 +1,7 @@
 // Picking by CPU ray casts (see picking.hpp).
 #include "editor/picking.hpp"
 
+#include "editor/mesh_coverage.hpp"
 #include "editor/ray_triangle.hpp"
 #include "editor/scene_edits.hpp"
 #include "sdf/cpu_eval.hpp"
@@ -10,9 +11,11 @@
 namespace rmsc::editor {
 namespace {
 
-// The nearest triangle of one asset along a ray given in the asset's own space.
+// The nearest drawn triangle point of one asset along a ray given in the asset's own space:
+// back faces of single-sided materials and MASK cut-outs are skipped (editor/mesh_coverage),
+// unless a scene material replaces the glTF's (drawn opaque from both sides).
 std::optional<float> nearestTriangle(const MeshAsset& asset, glm::vec3 origin, glm::vec3 direction,
-                                     float tMin, float tMax) {
+                                     float tMin, float tMax, bool materialOverride) {
     // A little room around the bounds so a flat mesh (zero thickness) is not culled by rounding.
     const glm::vec3 pad =
         glm::vec3(1e-4f) * (1.0f + glm::length(asset.boundsMax - asset.boundsMin));
@@ -24,10 +27,14 @@ std::optional<float> nearestTriangle(const MeshAsset& asset, glm::vec3 origin, g
             const std::uint32_t ia = primitive.indices[i], ib = primitive.indices[i + 1],
                                 ic = primitive.indices[i + 2];
             if (std::max({ia, ib, ic}) >= primitive.vertices.size()) continue;
-            const std::optional<float> t = rayTriangle(
-                origin, direction, primitive.vertices[ia].position, primitive.vertices[ib].position,
-                primitive.vertices[ic].position, tMin, nearest ? *nearest : tMax);
-            if (t) nearest = t;
+            const MeshVertex &a = primitive.vertices[ia], &b = primitive.vertices[ib],
+                             &c = primitive.vertices[ic];
+            const std::optional<TriangleHit> hit =
+                rayTriangleHit(origin, direction, a.position, b.position, c.position, tMin,
+                               nearest ? *nearest : tMax);
+            if (hit && (materialOverride ||
+                        meshPointDrawn(asset, primitive, a, b, c, hit->u, hit->v, hit->frontFace)))
+                nearest = hit->t;
         }
     }
     return nearest;
@@ -47,8 +54,9 @@ std::optional<PickHit> pickMesh(const PreparedScene& prepared, const PickRay& ra
         const glm::vec3 origin = glm::vec3(toAsset * glm::vec4(ray.origin, 1.0f));
         const glm::vec3 direction = glm::vec3(toAsset * glm::vec4(ray.direction, 0.0f));
         const float tMax = best ? best->t : ray.tMax;
-        const std::optional<float> t = nearestTriangle(prepared.assets[std::size_t(assetIndex)],
-                                                       origin, direction, ray.tMin, tMax);
+        const std::optional<float> t =
+            nearestTriangle(prepared.assets[std::size_t(assetIndex)], origin, direction, ray.tMin,
+                            tMax, meshes[i].materialOverride >= 0);
         if (t) {
             const std::uint32_t id = kMeshIdBase + std::uint32_t(i);
             best = PickHit{id, *t, Selection::mesh(int(i))};

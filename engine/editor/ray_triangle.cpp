@@ -6,8 +6,8 @@
 
 namespace rmsc::editor {
 
-std::optional<float> rayTriangle(glm::vec3 origin, glm::vec3 direction, glm::vec3 a, glm::vec3 b,
-                                 glm::vec3 c, float tMin, float tMax) {
+std::optional<TriangleHit> rayTriangleHit(glm::vec3 origin, glm::vec3 direction, glm::vec3 a,
+                                          glm::vec3 b, glm::vec3 c, float tMin, float tMax) {
     // Möller–Trumbore: solve origin + t * direction = a + u * (b - a) + v * (c - a) by Cramer's
     // rule, with the determinants written as scalar triple products.
     const glm::vec3 edge1 = b - a;
@@ -27,7 +27,16 @@ std::optional<float> rayTriangle(glm::vec3 origin, glm::vec3 direction, glm::vec
     if (v < 0.0f || u + v > 1.0f) return std::nullopt;
     const float t = glm::dot(edge2, q) * inverse;
     if (t < tMin || t > tMax) return std::nullopt;
-    return t;
+    // determinant = -dot(direction, cross(edge1, edge2)): positive when the ray meets the side
+    // from which a, b, c run counter-clockwise.
+    return TriangleHit{t, u, v, determinant > 0.0f};
+}
+
+std::optional<float> rayTriangle(glm::vec3 origin, glm::vec3 direction, glm::vec3 a, glm::vec3 b,
+                                 glm::vec3 c, float tMin, float tMax) {
+    const std::optional<TriangleHit> hit = rayTriangleHit(origin, direction, a, b, c, tMin, tMax);
+    if (!hit) return std::nullopt;
+    return hit->t;
 }
 
 bool rayHitsBox(glm::vec3 origin, glm::vec3 direction, glm::vec3 boxMin, glm::vec3 boxMax,

@@ -18,16 +18,24 @@ GpuMesh uploadMesh(const MeshAsset& asset) {
             GLsizeiptr(source.indices.size() * sizeof(std::uint32_t)), source.indices.data());
         p.indexCount = GLsizei(source.indices.size());
         p.material = source.material;
+        if (!source.vertices.empty()) {
+            glm::vec3 lo = source.vertices[0].position, hi = lo;
+            for (const MeshVertex& v : source.vertices) {
+                lo = glm::min(lo, v.position);
+                hi = glm::max(hi, v.position);
+            }
+            p.centre = 0.5f * (lo + hi);
+        }
         p.vertexArray = gl::createVertexArray();
         const GLuint vao = p.vertexArray.id();
         glVertexArrayVertexBuffer(vao, 0, p.vertices.id(), 0, sizeof(MeshVertex));
         glVertexArrayElementBuffer(vao, p.indices.id());
         // Attribute locations as in shaders/passes/raster.vert.
         const GLuint offsets[] = {offsetof(MeshVertex, position), offsetof(MeshVertex, normal),
-                                  offsetof(MeshVertex, uv), offsetof(MeshVertex, uv1),
-                                  offsetof(MeshVertex, tangent)};
-        const GLint sizes[] = {3, 3, 2, 2, 4};
-        for (GLuint a = 0; a < 5; ++a) {
+                                  offsetof(MeshVertex, uv),       offsetof(MeshVertex, uv1),
+                                  offsetof(MeshVertex, tangent),  offsetof(MeshVertex, color)};
+        const GLint sizes[] = {3, 3, 2, 2, 4, 4};
+        for (GLuint a = 0; a < 6; ++a) {
             glEnableVertexArrayAttrib(vao, a);
             glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
             glVertexArrayAttribBinding(vao, a, 0);

@@ -1,11 +1,29 @@
-// Raster pass: depth-tested, back faces kept (glTF double-sided or not, lit from both sides).
+// Raster pass: depth-tested; back faces culled for single-sided glTF materials and lit with
+// flipped normals for double-sided ones; MASK cut out in the shader; BLEND drawn last, sorted.
 #include "render/raster_pass.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <array>
 
 namespace rmsc {
+
+namespace {
+
+// The material of a primitive as drawn: the glTF material, or nullptr for a scene material
+// override or the glTF default material (opaque, single-sided).
+const MeshMaterial* materialOf(const GpuScene& scene, const GpuMeshInstance& instance,
+                               const GpuMeshPrimitive& primitive) {
+    if (instance.materialOverride >= 0 || primitive.material < 0) return nullptr;
+    return &scene.meshMaterials[std::size_t(instance.mesh)][std::size_t(primitive.material)];
+}
+
+bool isBlended(const MeshMaterial* m) {
+    return m && m->alphaMode == AlphaMode::Blend;
+}
+
+} // namespace
 
 std::optional<RasterPass> RasterPass::create(const ShaderFiles& files, std::string& error) {
     std::optional<gl::Program> program =
@@ -19,8 +37,70 @@ std::optional<RasterPass> RasterPass::create(const ShaderFiles& files, std::stri
     pass.metallicRoughness_ = uniformLocation(pass.program_, "uMetallicRoughness");
     pass.emissive_ = uniformLocation(pass.program_, "uEmissive");
     pass.texCoord_ = uniformLocation(pass.program_, "uTexCoord");
+    pass.uvTransform_ = uniformLocation(pass.program_, "uUvTransform");
+    pass.alpha_ = uniformLocation(pass.program_, "uAlpha");
     pass.objectId_ = uniformLocation(pass.program_, "uObjectId");
     return pass;
+}
+
+void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& instance,
+                               const GpuMeshPrimitive& primitive) const {
+    const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
+    glm::vec4 baseColor(1.0f);
+    // metallic, roughness, normal scale, occlusion strength
+    glm::vec4 metallicRoughness(1.0f, 1.0f, 1.0f, 1.0f);
+    glm::vec3 emissive(0.0f);
+    // alpha mode (0 opaque, 1 mask, 2 blend), alpha cutoff, unlit (0 or 1)
+    glm::vec4 alpha(0.0f, 0.5f, 0.0f, 0.0f);
+    // Per texture unit 0..4 (raster.frag): the texture and the TEXCOORD set it reads.
+    std::array<int, 5> textures{-1, -1, -1, -1, -1};
+    std::array<GLint, 5> texCoords{-1, -1, -1, -1, -1};
+    std::array<glm::mat3, 5> uvTransforms{};
+    uvTransforms.fill(glm::mat3(1.0f));
+    bool doubleSided = true;
+    if (instance.materialOverride >= 0) {
+        const Material& m = scene.materials[std::size_t(instance.materialOverride)];
+        baseColor = glm::vec4(m.baseColor, 1.0f);
+        metallicRoughness = {m.metallic, m.roughness, 1.0f, 1.0f};
+        emissive = m.emissive;
+    } else if (const MeshMaterial* m = materialOf(scene, instance, primitive)) {
+        const std::size_t index = std::size_t(primitive.material);
+        baseColor = m->baseColorFactor;
+        metallicRoughness = {m->metallicFactor, m->roughnessFactor, m->normalScale,
+                             m->occlusionStrength};
+        emissive = m->emissiveFactor * m->emissiveStrength;
+        alpha = {float(int(m->alphaMode)), m->alphaCutoff, m->unlit ? 1.0f : 0.0f, 0.0f};
+        doubleSided = m->doubleSided;
+        if (index < mesh.materialTextures.size()) {
+            const GpuMeshMaterialTextures& t = mesh.materialTextures[index];
+            textures = {t.baseColor, t.metallicRoughness, t.normal, t.emissive, t.occlusion};
+            const MeshTextureRef* refs[] = {&m->baseColorTexture, &m->metallicRoughnessTexture,
+                                            &m->normalTexture, &m->emissiveTexture,
+                                            &m->occlusionTexture};
+            for (std::size_t u = 0; u < 5; ++u)
+                if (textures[u] >= 0) {
+                    texCoords[u] = refs[u]->texCoord;
+                    uvTransforms[u] = refs[u]->transform.matrix();
+                }
+        }
+    } else {
+        doubleSided = false; // the glTF default material
+    }
+    if (doubleSided) {
+        glDisable(GL_CULL_FACE);
+    } else {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+    }
+    glUniform4fv(baseColorFactor_, 1, glm::value_ptr(baseColor));
+    glUniform4fv(metallicRoughness_, 1, glm::value_ptr(metallicRoughness));
+    glUniform3fv(emissive_, 1, glm::value_ptr(emissive));
+    glUniform4fv(alpha_, 1, glm::value_ptr(alpha));
+    glUniform1iv(texCoord_, 5, texCoords.data());
+    glUniformMatrix3fv(uvTransform_, 5, GL_FALSE, glm::value_ptr(uvTransforms[0]));
+    for (std::size_t u = 0; u < 5; ++u)
+        glBindTextureUnit(GLuint(u),
+                          textures[u] >= 0 ? mesh.textures[std::size_t(textures[u])].id() : 0);
 }
 
 void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
@@ -32,61 +112,82 @@ void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glUseProgram(program_.id());
 
     for (const GpuMeshInstance& instance : scene.instances) {
         if (instance.mesh < 0) continue;
         const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
-        const std::vector<MeshMaterial>& meshMaterials =
-            scene.meshMaterials[std::size_t(instance.mesh)];
         glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
         glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
         glUniform1ui(objectId_, instance.objectId);
+        // A mirroring instance transform turns counter-clockwise triangles clockwise.
+        glFrontFace(glm::determinant(glm::mat3(instance.model)) < 0.0f ? GL_CW : GL_CCW);
         for (const GpuMeshPrimitive& primitive : mesh.primitives) {
-            glm::vec4 baseColor(1.0f);
-            // metallic, roughness, normal scale, occlusion strength
-            glm::vec4 metallicRoughness(1.0f, 1.0f, 1.0f, 1.0f);
-            glm::vec3 emissive(0.0f);
-            // Per texture unit 0..4 (raster.frag): the texture and the TEXCOORD set it reads.
-            std::array<int, 5> textures{-1, -1, -1, -1, -1};
-            std::array<GLint, 5> texCoords{-1, -1, -1, -1, -1};
-            if (instance.materialOverride >= 0) {
-                const Material& m = scene.materials[std::size_t(instance.materialOverride)];
-                baseColor = glm::vec4(m.baseColor, 1.0f);
-                metallicRoughness = {m.metallic, m.roughness, 1.0f, 1.0f};
-                emissive = m.emissive;
-            } else if (primitive.material >= 0) {
-                const std::size_t index = std::size_t(primitive.material);
-                const MeshMaterial& m = meshMaterials[index];
-                baseColor = m.baseColorFactor;
-                metallicRoughness = {m.metallicFactor, m.roughnessFactor, m.normalScale,
-                                     m.occlusionStrength};
-                emissive = m.emissiveFactor * m.emissiveStrength;
-                if (index < mesh.materialTextures.size()) {
-                    const GpuMeshMaterialTextures& t = mesh.materialTextures[index];
-                    textures = {t.baseColor, t.metallicRoughness, t.normal, t.emissive,
-                                t.occlusion};
-                    const MeshTextureRef* refs[] = {&m.baseColorTexture,
-                                                    &m.metallicRoughnessTexture, &m.normalTexture,
-                                                    &m.emissiveTexture, &m.occlusionTexture};
-                    for (std::size_t u = 0; u < 5; ++u)
-                        if (textures[u] >= 0) texCoords[u] = refs[u]->texCoord;
-                }
-            }
-            glUniform4fv(baseColorFactor_, 1, glm::value_ptr(baseColor));
-            glUniform4fv(metallicRoughness_, 1, glm::value_ptr(metallicRoughness));
-            glUniform3fv(emissive_, 1, glm::value_ptr(emissive));
-            glUniform1iv(texCoord_, 5, texCoords.data());
-            for (std::size_t u = 0; u < 5; ++u)
-                glBindTextureUnit(
-                    GLuint(u), textures[u] >= 0 ? mesh.textures[std::size_t(textures[u])].id() : 0);
+            if (isBlended(materialOf(scene, instance, primitive))) continue;
+            bindPrimitive(scene, instance, primitive);
             glBindVertexArray(primitive.vertexArray.id());
             glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
         }
     }
     glBindVertexArray(0);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    for (GLuint unit = 0; unit < 5; ++unit)
+        glBindTextureUnit(unit, 0);
+}
+
+void RasterPass::drawBlended(const GpuScene& scene, const FrameCamera& camera,
+                             const GBuffer& target) const {
+    struct Item {
+        const GpuMeshInstance* instance;
+        const GpuMeshPrimitive* primitive;
+        float distance; // of the primitive's centre from the camera
+    };
+    std::vector<Item> items;
+    for (const GpuMeshInstance& instance : scene.instances) {
+        if (instance.mesh < 0) continue;
+        for (const GpuMeshPrimitive& primitive :
+             scene.meshes[std::size_t(instance.mesh)].primitives)
+            if (isBlended(materialOf(scene, instance, primitive))) {
+                const glm::vec3 centre = glm::vec3(instance.model * glm::vec4(primitive.centre, 1));
+                items.push_back({&instance, &primitive, glm::length(centre - camera.position)});
+            }
+    }
+    if (items.empty()) return;
+    // Far to near; equal distances keep the file's order.
+    std::stable_sort(items.begin(), items.end(),
+                     [](const Item& a, const Item& b) { return a.distance > b.distance; });
+
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
+    glViewport(0, 0, target.width, target.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    // Colour only, "over" compositing of straight alpha; the other attachments are kept.
+    glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glUseProgram(program_.id());
+    for (const Item& item : items) {
+        const GpuMeshInstance& instance = *item.instance;
+        glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
+        glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
+        glUniform1ui(objectId_, instance.objectId);
+        glFrontFace(glm::determinant(glm::mat3(instance.model)) < 0.0f ? GL_CW : GL_CCW);
+        bindPrimitive(scene, instance, *item.primitive);
+        glBindVertexArray(item.primitive->vertexArray.id());
+        glDrawElements(GL_TRIANGLES, item.primitive->indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    glBindVertexArray(0);
+    glDisablei(GL_BLEND, 0);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glDepthMask(GL_TRUE);
+    for (GLuint a = 1; a < 4; ++a)
+        glColorMaski(a, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     for (GLuint unit = 0; unit < 5; ++unit)
         glBindTextureUnit(unit, 0);
 }

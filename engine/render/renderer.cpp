@@ -163,6 +163,8 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     timed(Pass::Grid, [&] {
         if (groundGrid_) grid_.draw(targets.combined);
     });
+    // BLEND surfaces over everything the march finished (SDF objects behind glass show).
+    timed(Pass::Blend, [&] { sdf.raster.drawBlended(scene, frameCamera, targets.combined); });
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
     glBindTextureUnit(kShadowMapUnit, 0);
     glBindTextureUnit(kSkyImageUnit, 0);

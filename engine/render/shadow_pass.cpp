@@ -1,5 +1,6 @@
-// Shadow pass: depth only, both faces drawn (closed and open meshes alike), with a
-// slope-scaled polygon offset as the depth bias (the shader adds a normal offset).
+// Shadow pass: depth only, both faces drawn (closed and open meshes alike, single-sided or
+// not), with a slope-scaled polygon offset as the depth bias (the shader adds a normal offset).
+// MASK materials cast through their cut-outs; BLEND ones cast where their alpha is >= 0.5.
 #include "render/shadow_pass.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -16,6 +17,8 @@ std::optional<ShadowPass> ShadowPass::create(const ShaderFiles& files, std::stri
     pass.program_ = std::move(*program);
     pass.model_ = uniformLocation(pass.program_, "uModel");
     pass.lightViewProjection_ = uniformLocation(pass.program_, "uLightViewProjection");
+    pass.alphaTest_ = uniformLocation(pass.program_, "uAlphaTest");
+    pass.uvTransform_ = uniformLocation(pass.program_, "uUvTransform");
     pass.framebuffer_ = gl::createFramebuffer();
     glNamedFramebufferDrawBuffer(pass.framebuffer_.id(), GL_NONE);
     glNamedFramebufferReadBuffer(pass.framebuffer_.id(), GL_NONE);
@@ -45,6 +48,32 @@ void ShadowPass::allocate(int size, int layers) {
     }
 }
 
+void ShadowPass::bindAlphaTest(const GpuScene& scene, const GpuMeshInstance& instance,
+                               const GpuMeshPrimitive& primitive) const {
+    glm::vec3 test(-1.0f, 1.0f, -1.0f);
+    glm::mat3 uvTransform(1.0f);
+    GLuint texture = 0;
+    if (instance.materialOverride < 0 && primitive.material >= 0) {
+        const std::size_t index = std::size_t(primitive.material);
+        const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
+        const MeshMaterial& m = scene.meshMaterials[std::size_t(instance.mesh)][index];
+        if (m.alphaMode != AlphaMode::Opaque) {
+            test.x = m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.5f;
+            test.y = m.baseColorFactor.w;
+            const int t =
+                index < mesh.materialTextures.size() ? mesh.materialTextures[index].baseColor : -1;
+            if (t >= 0) {
+                test.z = float(m.baseColorTexture.texCoord);
+                uvTransform = m.baseColorTexture.transform.matrix();
+                texture = mesh.textures[std::size_t(t)].id();
+            }
+        }
+    }
+    glUniform3fv(alphaTest_, 1, glm::value_ptr(test));
+    glUniformMatrix3fv(uvTransform_, 1, GL_FALSE, glm::value_ptr(uvTransform));
+    glBindTextureUnit(0, texture);
+}
+
 void ShadowPass::draw(const GpuScene& scene, std::span<const ShellPass* const> shellPasses) {
     if (scene.shadowViews.empty() || scene.shadowMapSize <= 0) return;
     allocate(scene.shadowMapSize, int(scene.shadowViews.size()));
@@ -72,8 +101,9 @@ void ShadowPass::draw(const GpuScene& scene, std::span<const ShellPass* const> s
         for (const GpuMeshInstance& instance : scene.instances) {
             if (instance.mesh < 0) continue;
             glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
-            for (const GpuMeshPrimitive& primitive :
-                 scene.meshes[std::size_t(instance.mesh)].primitives) {
+            const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
+            for (const GpuMeshPrimitive& primitive : mesh.primitives) {
+                bindAlphaTest(scene, instance, primitive);
                 glBindVertexArray(primitive.vertexArray.id());
                 glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
             }
@@ -83,6 +113,7 @@ void ShadowPass::draw(const GpuScene& scene, std::span<const ShellPass* const> s
                                       scene.shadowSlopeBias);
     }
     glBindVertexArray(0);
+    glBindTextureUnit(0, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

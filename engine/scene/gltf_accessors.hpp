@@ -1,6 +1,6 @@
 // glTF accessors: element sizes, the overflow-checked range check of an accessor against its
 // buffer view, and typed reads of vertex attributes and indices that refuse unexpected types,
-// sparse accessors and non-finite values.
+// non-finite values and sparse indices out of order.
 #pragma once
 
 #include "core/limits.hpp"
@@ -26,15 +26,31 @@ const char* typeName(int type);
 const char* componentTypeName(int componentType);
 
 // Checks accessor `index` (type, count, alignment, stride and that its data lies inside its
-// buffer view); reports at "/accessors/<index>". Buffer views must already be checked.
+// buffer view, and a sparse accessor's indices and values inside theirs); reports at
+// "/accessors/<index>". Buffer views must already be checked.
 bool checkAccessor(const tinygltf::Model& model, int index, Reporter& report);
 
-// Reads a float attribute with `components` components (2 or 3). Accepts FLOAT data, and
-// normalized UNSIGNED_BYTE / UNSIGNED_SHORT where `allowNormalized`. `usage` names the user in
-// messages ("POSITION of /meshes/0/primitives/1").
-bool readFloatAttribute(const tinygltf::Model& model, int index, int components,
-                        bool allowNormalized, const std::string& usage, std::vector<float>& out,
-                        Reporter& report);
+// The storage formats a vertex attribute may use: glTF 2.0 section 3.7.2.1, and the integer
+// formats KHR_mesh_quantization adds. A bit set of them says what one attribute accepts.
+enum AttributeFormat : unsigned {
+    kFloat = 1u << 0,
+    kUnorm8 = 1u << 1,  // normalized UNSIGNED_BYTE: c / 255
+    kUnorm16 = 1u << 2, // normalized UNSIGNED_SHORT: c / 65535
+    kSnorm8 = 1u << 3,  // normalized BYTE: max(c / 127, -1)
+    kSnorm16 = 1u << 4, // normalized SHORT: max(c / 32767, -1)
+    kUint8 = 1u << 5,   // UNSIGNED_BYTE as its integer value
+    kSint8 = 1u << 6,   // BYTE
+    kUint16 = 1u << 7,  // UNSIGNED_SHORT
+    kSint16 = 1u << 8,  // SHORT
+};
+
+// Reads a float attribute with `components` components (2, 3 or 4) stored in one of the
+// `formats` (a set of AttributeFormat bits), sparse accessors included. `usage` names the user
+// in messages ("POSITION of /meshes/0/primitives/1"); `hint`, when not empty, is added to the
+// refusal of a format outside `formats` (what would allow it).
+bool readFloatAttribute(const tinygltf::Model& model, int index, int components, unsigned formats,
+                        const std::string& usage, std::vector<float>& out, Reporter& report,
+                        const std::string& hint = "");
 
 // Reads a SCALAR UNSIGNED_BYTE/SHORT/INT index accessor.
 bool readIndices(const tinygltf::Model& model, int index, const std::string& usage,

@@ -3,12 +3,14 @@
 #include "gltf_lights.hpp"
 
 #include "gltf_accessors.hpp"
+#include "gltf_texcoord.hpp"
 #include "gltf_validate.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -26,6 +28,7 @@ struct SourcePrimitive {
     std::vector<glm::vec2> uvs;           // TEXCOORD_0, zeros when absent
     std::vector<glm::vec2> uvs1;          // TEXCOORD_1, zeros when absent
     std::vector<glm::vec4> tangents;      // empty when the file has none
+    std::vector<glm::vec4> colors;        // COLOR_0 as RGBA, empty when the file has none
     std::vector<std::uint32_t> triangles; // 3 indices per triangle
     int material = -1;
     int tangentUvSet = 0; // the TEXCOORD set of the material's normal texture
@@ -37,18 +40,18 @@ std::array<std::string, 2> texCoordUsers(const tinygltf::Model& model, int mater
     if (material < 0 || std::size_t(material) >= model.materials.size()) return users;
     const tinygltf::Material& m = model.materials[std::size_t(material)];
     const std::string pointer = "/materials/" + std::to_string(material);
-    const auto use = [&](int index, int texCoord, const std::string& name) {
-        if (index >= 0 && (texCoord == 0 || texCoord == 1) && users[std::size_t(texCoord)].empty())
+    const auto use = [&](const auto& info, const std::string& name) {
+        const int texCoord = textureTexCoord(info);
+        if (info.index >= 0 && (texCoord == 0 || texCoord == 1) &&
+            users[std::size_t(texCoord)].empty())
             users[std::size_t(texCoord)] = pointer + name;
     };
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
-    use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-        "/pbrMetallicRoughness/baseColorTexture");
-    use(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-        "/pbrMetallicRoughness/metallicRoughnessTexture");
-    use(m.normalTexture.index, m.normalTexture.texCoord, "/normalTexture");
-    use(m.emissiveTexture.index, m.emissiveTexture.texCoord, "/emissiveTexture");
-    use(m.occlusionTexture.index, m.occlusionTexture.texCoord, "/occlusionTexture");
+    use(pbr.baseColorTexture, "/pbrMetallicRoughness/baseColorTexture");
+    use(pbr.metallicRoughnessTexture, "/pbrMetallicRoughness/metallicRoughnessTexture");
+    use(m.normalTexture, "/normalTexture");
+    use(m.emissiveTexture, "/emissiveTexture");
+    use(m.occlusionTexture, "/occlusionTexture");
     return users;
 }
 
@@ -121,17 +124,27 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
             return false;
         }
     }
+    // glTF 2.0 section 3.7.2.1, and what KHR_mesh_quantization adds when the file uses it.
+    const bool quantized = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                     "KHR_mesh_quantization") != model.extensionsUsed.end();
+    const std::string hint =
+        quantized ? "" : "KHR_mesh_quantization allows more, but the file does not use it";
+    const unsigned allIntegers =
+        kUnorm8 | kUnorm16 | kSnorm8 | kSnorm16 | kUint8 | kSint8 | kUint16 | kSint16;
+    const unsigned positionFormats = quantized ? kFloat | allIntegers : kFloat;
+    const unsigned directionFormats = quantized ? kFloat | kSnorm8 | kSnorm16 : kFloat;
+    const unsigned uvFormats = quantized ? kFloat | allIntegers : kFloat | kUnorm8 | kUnorm16;
     std::vector<float> values;
-    if (!readFloatAttribute(model, positionAccessor, 3, false, "POSITION of " + pointer, values,
-                            report))
+    if (!readFloatAttribute(model, positionAccessor, 3, positionFormats, "POSITION of " + pointer,
+                            values, report, hint))
         return false;
     out.positions.resize(vertexCount);
     for (std::size_t i = 0; i < vertexCount; ++i)
         out.positions[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
 
     if (const int normalAccessor = accessorOf("NORMAL"); normalAccessor >= 0) {
-        if (!readFloatAttribute(model, normalAccessor, 3, false, "NORMAL of " + pointer, values,
-                                report))
+        if (!readFloatAttribute(model, normalAccessor, 3, directionFormats, "NORMAL of " + pointer,
+                                values, report, hint))
             return false;
         out.normals.resize(vertexCount);
         for (std::size_t i = 0; i < vertexCount; ++i)
@@ -153,15 +166,15 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
             }
             continue;
         }
-        if (!readFloatAttribute(model, uvAccessor, 2, true, name + " of " + pointer, values,
-                                report))
+        if (!readFloatAttribute(model, uvAccessor, 2, uvFormats, name + " of " + pointer, values,
+                                report, hint))
             return false;
         for (std::size_t i = 0; i < vertexCount; ++i)
             uvs[i] = {values[2 * i], values[2 * i + 1]};
     }
     if (const int tangentAccessor = accessorOf("TANGENT"); tangentAccessor >= 0) {
-        if (!readFloatAttribute(model, tangentAccessor, 4, false, "TANGENT of " + pointer, values,
-                                report))
+        if (!readFloatAttribute(model, tangentAccessor, 4, directionFormats,
+                                "TANGENT of " + pointer, values, report, hint))
             return false;
         out.tangents.resize(vertexCount);
         for (std::size_t i = 0; i < vertexCount; ++i) {
@@ -169,8 +182,22 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
                                values[4 * i + 3] < 0.0f ? -1.0f : 1.0f};
         }
     }
+    // COLOR_0 (glTF 2.0 section 3.7.2.1): VEC3 or VEC4, FLOAT or normalized UNSIGNED_BYTE /
+    // UNSIGNED_SHORT, linear; multiplies the base colour.
+    if (const int colorAccessor = accessorOf("COLOR_0"); colorAccessor >= 0) {
+        const int components =
+            model.accessors[std::size_t(colorAccessor)].type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+        if (!readFloatAttribute(model, colorAccessor, components, kFloat | kUnorm8 | kUnorm16,
+                                "COLOR_0 of " + pointer, values, report))
+            return false;
+        out.colors.resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i) {
+            const float* c = &values[std::size_t(components) * i];
+            out.colors[i] = glm::vec4(c[0], c[1], c[2], components == 4 ? c[3] : 1.0f);
+        }
+    }
     if (prim.material >= 0 && std::size_t(prim.material) < model.materials.size()) {
-        const int set = model.materials[std::size_t(prim.material)].normalTexture.texCoord;
+        const int set = textureTexCoord(model.materials[std::size_t(prim.material)].normalTexture);
         out.tangentUvSet = set == 1 ? 1 : 0;
     }
 
@@ -294,7 +321,10 @@ bool bake(const SourcePrimitive& source, const glm::dmat4& world, const std::str
         }
     }
     for (std::size_t i = 0; i < out.vertices.size(); ++i)
-        out.vertices[i] = {positions[i], normals[i], source.uvs[i], source.uvs1[i], tangents[i]};
+        out.vertices[i] = {
+            positions[i],  normals[i],
+            source.uvs[i], source.uvs1[i],
+            tangents[i],   source.colors.empty() ? glm::vec4(1.0f) : source.colors[i]};
     asset.primitives.push_back(std::move(out));
     return true;
 }

@@ -5,6 +5,7 @@
 
 #include "gltf_files.hpp"
 #include "gltf_json_checks.hpp"
+#include "gltf_unsupported.hpp"
 #include "gltf_validate.hpp"
 #include "scene/gltf_budget.hpp"
 #include "scene/gltf_geometry.hpp"
@@ -218,13 +219,36 @@ bool loadExternalImages(tinygltf::Model& model, LoadContext& context) {
     return ok;
 }
 
+// KHR_texture_transform of a textureInfo (values checked by validateModel): its transform,
+// and its texCoord in place of the textureInfo's when it has one.
+void readTextureTransform(const tinygltf::ExtensionMap& extensions, MeshTextureRef& out,
+                          int& texCoord) {
+    const auto ext = extensions.find("KHR_texture_transform");
+    if (ext == extensions.end() || !ext->second.IsObject()) return;
+    const tinygltf::Value& v = ext->second;
+    const auto pair = [&](const char* key, glm::vec2& into) {
+        if (!v.Has(key)) return;
+        const tinygltf::Value& a = v.Get(key);
+        if (a.IsArray() && a.ArrayLen() == 2 && a.Get(0).IsNumber() && a.Get(1).IsNumber())
+            into =
+                glm::vec2(float(a.Get(0).GetNumberAsDouble()), float(a.Get(1).GetNumberAsDouble()));
+    };
+    pair("offset", out.transform.offset);
+    pair("scale", out.transform.scale);
+    if (v.Has("rotation") && v.Get("rotation").IsNumber())
+        out.transform.rotation = float(v.Get("rotation").GetNumberAsDouble());
+    if (v.Has("texCoord") && v.Get("texCoord").IsNumber())
+        texCoord = int(v.Get("texCoord").GetNumberAsDouble());
+}
+
 // One textureInfo of a material: resolves texture -> image and sampler. Indices were range
 // checked on the JSON and by validateModel; what is left here is what rmsc cannot use.
 MeshTextureRef convertTexture(const tinygltf::Model& model, const std::vector<int>& imageSlots,
-                              int index, int texCoord, const std::string& pointer,
-                              Reporter& report) {
+                              int index, int texCoord, const tinygltf::ExtensionMap& extensions,
+                              const std::string& pointer, Reporter& report) {
     MeshTextureRef out;
     if (index < 0) return out;
+    readTextureTransform(extensions, out, texCoord);
     if (std::size_t(index) >= model.textures.size()) {
         report.error(pointer + "/index", "refers to a texture that does not exist");
         return out;
@@ -268,23 +292,24 @@ void convertMaterials(const tinygltf::Model& model, const std::vector<int>& imag
         out.emissiveFactor =
             glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
         out.doubleSided = m.doubleSided;
-        out.baseColorTexture = convertTexture(
-            model, imageSlots, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-            pointer + "/pbrMetallicRoughness/baseColorTexture", report);
+        const auto texture = [&](const auto& info, const std::string& name) {
+            return convertTexture(model, imageSlots, info.index, info.texCoord, info.extensions,
+                                  pointer + name, report);
+        };
+        out.baseColorTexture =
+            texture(pbr.baseColorTexture, "/pbrMetallicRoughness/baseColorTexture");
         out.metallicRoughnessTexture =
-            convertTexture(model, imageSlots, pbr.metallicRoughnessTexture.index,
-                           pbr.metallicRoughnessTexture.texCoord,
-                           pointer + "/pbrMetallicRoughness/metallicRoughnessTexture", report);
-        out.normalTexture =
-            convertTexture(model, imageSlots, m.normalTexture.index, m.normalTexture.texCoord,
-                           pointer + "/normalTexture", report);
+            texture(pbr.metallicRoughnessTexture, "/pbrMetallicRoughness/metallicRoughnessTexture");
+        out.normalTexture = texture(m.normalTexture, "/normalTexture");
         out.normalScale = float(m.normalTexture.scale);
-        out.emissiveTexture =
-            convertTexture(model, imageSlots, m.emissiveTexture.index, m.emissiveTexture.texCoord,
-                           pointer + "/emissiveTexture", report);
-        out.occlusionTexture =
-            convertTexture(model, imageSlots, m.occlusionTexture.index, m.occlusionTexture.texCoord,
-                           pointer + "/occlusionTexture", report);
+        out.emissiveTexture = texture(m.emissiveTexture, "/emissiveTexture");
+        out.occlusionTexture = texture(m.occlusionTexture, "/occlusionTexture");
+        // glTF 2.0 section 3.9.4 (alpha coverage); the mode was checked by validateModel.
+        out.alphaMode = m.alphaMode == "MASK"    ? AlphaMode::Mask
+                        : m.alphaMode == "BLEND" ? AlphaMode::Blend
+                                                 : AlphaMode::Opaque;
+        out.alphaCutoff = float(m.alphaCutoff);
+        out.unlit = m.extensions.find("KHR_materials_unlit") != m.extensions.end();
         out.occlusionStrength = float(m.occlusionTexture.strength);
         // KHR_materials_emissive_strength; the value was checked by validateModel.
         if (const auto ext = m.extensions.find("KHR_materials_emissive_strength");
@@ -475,6 +500,7 @@ std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSourc
     if (report.errors > 0) return std::nullopt;
 
     if (!gltf::validateModel(model, report)) return std::nullopt;
+    gltf::warnUnsupportedFeatures(model, report);
     if (!loadExternalImages(model, context)) return std::nullopt;
 
     MeshAsset asset;

@@ -1,13 +1,19 @@
 // JSON-level checks of a glTF document (see gltf_json_checks.hpp).
 #include "gltf_json_checks.hpp"
 
+#include "scene/gltf_extensions.hpp"
+
 #include "gltf_files.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <set>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace rmsc::gltf {
 
@@ -365,6 +371,69 @@ void checkReferences(const json& root, Reporter& report) {
     });
 }
 
+// Every "extensions" object below `value`: the first pointer at which each name appears.
+void collectExtensionUses(const json& value, const std::string& pointer,
+                          std::map<std::string, std::string>& firstUse) {
+    if (value.is_array()) {
+        for (std::size_t i = 0; i < value.size(); ++i)
+            collectExtensionUses(value[i], pointer + "/" + std::to_string(i), firstUse);
+        return;
+    }
+    if (!value.is_object()) return;
+    for (auto it = value.begin(); it != value.end(); ++it) {
+        const std::string child = pointer + "/" + pointerToken(it.key());
+        if (it.key() == "extras") continue;
+        if (it.key() == "extensions" && it.value().is_object()) {
+            for (auto e = it.value().begin(); e != it.value().end(); ++e)
+                firstUse.try_emplace(e.key(), child + "/" + pointerToken(e.key()));
+        }
+        collectExtensionUses(it.value(), child, firstUse);
+    }
+}
+
+// extensionsRequired: every name rmsc lacks is an error naming it. extensionsUsed and the
+// "extensions" objects of the file: every unsupported name gets one warning, at its entry in
+// extensionsUsed or, when the file does not declare it, where it is first used.
+void checkExtensions(const json& root, Reporter& report) {
+    std::set<std::string> refused;
+    const auto required = root.find("extensionsRequired");
+    if (required != root.end() && required->is_array()) {
+        for (std::size_t i = 0; i < required->size(); ++i) {
+            const json& name = (*required)[i];
+            const std::string pointer = "/extensionsRequired/" + std::to_string(i);
+            if (!name.is_string()) {
+                report.error(pointer, "expected an extension name, got " + shortDump(name));
+            } else if (!gltfExtensionSupported(name.get_ref<const std::string&>())) {
+                report.error(pointer, "the file requires extension " +
+                                          name.get_ref<const std::string&>() +
+                                          ", which rmsc does not support");
+                refused.insert(name.get<std::string>());
+            }
+        }
+    }
+    std::map<std::string, std::string> firstUse; // name -> pointer, in name order
+    std::vector<std::pair<std::string, std::string>> declared;
+    const auto used = root.find("extensionsUsed");
+    if (used != root.end() && used->is_array()) {
+        for (std::size_t i = 0; i < used->size(); ++i)
+            if ((*used)[i].is_string())
+                declared.emplace_back((*used)[i].get<std::string>(),
+                                      "/extensionsUsed/" + std::to_string(i));
+    }
+    collectExtensionUses(root, "", firstUse);
+    std::set<std::string> warned = refused;
+    const auto warn = [&](const std::string& name, const std::string& pointer) {
+        if (gltfExtensionSupported(name) || !warned.insert(name).second) return;
+        report.warning(pointer, "extension " + name +
+                                    " is not supported; what it adds is "
+                                    "ignored");
+    };
+    for (const auto& [name, pointer] : declared)
+        warn(name, pointer);
+    for (const auto& [name, pointer] : firstUse)
+        warn(name, pointer);
+}
+
 } // namespace
 
 bool checkGltfJson(const json& root, const JsonCheckInput& input, Reporter& report) {
@@ -384,13 +453,7 @@ bool checkGltfJson(const json& root, const JsonCheckInput& input, Reporter& repo
     else if (version->get_ref<const std::string&>().rfind("2.", 0) != 0)
         report.error("/asset/version",
                      "glTF version " + version->get<std::string>() + ", expected 2.x");
-    const auto required = root.find("extensionsRequired");
-    if (required != root.end() && required->is_array()) {
-        for (std::size_t i = 0; i < required->size(); ++i)
-            report.error("/extensionsRequired/" + std::to_string(i),
-                         "the file requires extension " + shortDump((*required)[i]) +
-                             ", which rmsc does not support");
-    }
+    checkExtensions(root, report);
     walk(root, "", report);
     checkReferences(root, report);
     checkBuffers(root, input, report);

@@ -22,6 +22,16 @@ Scene sceneFromGltf(const std::filesystem::path& gltfPath, const MeshAsset& asse
     sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
     sun.intensity = 3.0f;
     scene.lights.push_back(sun);
+    // A neutral studio around a model opened by itself (scenes keep their own environment), as
+    // glTF viewers show one by default: a grey gradient sky, bright above, dark below, that
+    // lights every surface from all sides (the fill to the sun's key) and gives metals
+    // something to reflect.
+    Environment& studio = scene.environment;
+    studio.sky = SkyType::Gradient;
+    studio.zenith = glm::vec3(0.9f);
+    studio.horizon = glm::vec3(0.5f);
+    studio.ground = glm::vec3(0.18f);
+    studio.intensity = 0.8f;
 
     // Fit the bounding sphere into the vertical field of view, with 20% to spare.
     const glm::vec3 centre = 0.5f * (asset.boundsMin + asset.boundsMax);

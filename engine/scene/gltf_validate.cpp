@@ -151,6 +151,37 @@ void checkHierarchy(const tinygltf::Model& model, Reporter& report) {
     }
 }
 
+// KHR_texture_transform of one textureInfo at `pointer`: offset and scale two finite
+// numbers, rotation a finite number, texCoord a TEXCOORD set index.
+void checkTextureTransform(const tinygltf::ExtensionMap& extensions, const std::string& pointer,
+                           Reporter& report) {
+    const auto ext = extensions.find("KHR_texture_transform");
+    if (ext == extensions.end()) return;
+    const std::string p = pointer + "/extensions/KHR_texture_transform";
+    const tinygltf::Value& v = ext->second;
+    if (!v.IsObject()) {
+        report.error(p, "expected an object");
+        return;
+    }
+    const auto finite = [](const tinygltf::Value& x) {
+        return x.IsNumber() && std::isfinite(x.GetNumberAsDouble());
+    };
+    for (const char* key : {"offset", "scale"}) {
+        if (!v.Has(key)) continue;
+        const tinygltf::Value& a = v.Get(key);
+        if (!a.IsArray() || a.ArrayLen() != 2 || !finite(a.Get(0)) || !finite(a.Get(1)))
+            report.error(p + "/" + key, "expected 2 finite numbers");
+    }
+    if (v.Has("rotation") && !finite(v.Get("rotation")))
+        report.error(p + "/rotation", "expected a finite number (radians)");
+    if (v.Has("texCoord")) {
+        const tinygltf::Value& t = v.Get("texCoord");
+        const double d = t.IsNumber() ? t.GetNumberAsDouble() : -1.0;
+        if (!(d >= 0 && d <= 1024 && d == std::floor(d)))
+            report.error(p + "/texCoord", "expected a TEXCOORD set index (an integer >= 0)");
+    }
+}
+
 void checkMaterials(const tinygltf::Model& model, Reporter& report) {
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
@@ -173,6 +204,20 @@ void checkMaterials(const tinygltf::Model& model, Reporter& report) {
         if (m.occlusionTexture.index >= 0 &&
             !(m.occlusionTexture.strength >= 0 && m.occlusionTexture.strength <= 1))
             report.error(pointer + "/occlusionTexture/strength", "expected a number from 0 to 1");
+        if (m.alphaMode != "OPAQUE" && m.alphaMode != "MASK" && m.alphaMode != "BLEND")
+            report.error(pointer + "/alphaMode",
+                         "expected \"OPAQUE\", \"MASK\" or \"BLEND\", got \"" +
+                             m.alphaMode.substr(0, 40) + "\"");
+        if (!std::isfinite(m.alphaCutoff) || m.alphaCutoff < 0)
+            report.error(pointer + "/alphaCutoff", "expected a finite number >= 0");
+        const auto transform = [&](const auto& info, const std::string& name) {
+            if (info.index >= 0) checkTextureTransform(info.extensions, pointer + name, report);
+        };
+        transform(pbr.baseColorTexture, "/pbrMetallicRoughness/baseColorTexture");
+        transform(pbr.metallicRoughnessTexture, "/pbrMetallicRoughness/metallicRoughnessTexture");
+        transform(m.normalTexture, "/normalTexture");
+        transform(m.emissiveTexture, "/emissiveTexture");
+        transform(m.occlusionTexture, "/occlusionTexture");
         if (const auto ext = m.extensions.find("KHR_materials_emissive_strength");
             ext != m.extensions.end() && ext->second.Has("emissiveStrength")) {
             const tinygltf::Value& strength = ext->second.Get("emissiveStrength");

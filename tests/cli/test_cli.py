@@ -246,6 +246,25 @@ with tempfile.TemporaryDirectory() as tmp:
                stderr_has=["many_lights.gltf", "16 (the limit)"])
     check("glTF with 17 lights: no image", not os.path.exists(os.path.join(tmp, "lights.png")))
 
+    # glTF extensions: one used but not supported is one warning naming it (validate prints it,
+    # --strict fails on it); one required but not supported refuses the file, naming it.
+    with open(os.path.join(SAMPLES, "assets", "plane.gltf")) as f:
+        extended = json.load(f)
+    extended["extensionsUsed"] = ["KHR_materials_sheen"]
+    extended["materials"][0]["extensions"] = {"KHR_materials_sheen": {"sheenColorFactor": [1, 0, 0]}}
+    sheen = write(tmp, "sheen.gltf", json.dumps(extended))
+    r = expect("glTF extension used but unsupported", ["validate", sheen], 0,
+               stderr_has=["sheen.gltf: /extensionsUsed/0: warning: extension KHR_materials_sheen "
+                           "is not supported"])
+    check("glTF extension warned once", r.stderr.count("KHR_materials_sheen") == 1, r.stderr)
+    expect("glTF extension warning with --strict", ["validate", "--strict", sheen], 1,
+           stderr_has=["KHR_materials_sheen"])
+    extended["extensionsRequired"] = ["KHR_materials_sheen"]
+    required = write(tmp, "sheen_required.gltf", json.dumps(extended))
+    expect("glTF extension required but unsupported", ["validate", required], 1,
+           stderr_has=["sheen_required.gltf: /extensionsRequired/0: the file requires extension "
+                       "KHR_materials_sheen, which rmsc does not support"])
+
     # glTF buffer and image URIs must stay inside the glTF file's folder once symbolic links are
     # resolved (a link inside the folder reached any file, and validate said "ok"). A link that
     # stays inside still works.

@@ -379,6 +379,10 @@ TEST(GltfImport, SceneFromGltfFramesTheBounds) {
     EXPECT_FLOAT_EQ(scene.lights[0].intensity, 3.0f);
     EXPECT_NEAR(glm::length(scene.lights[0].direction), 1.0f, 1e-5f);
     EXPECT_LT(scene.lights[0].direction.y, 0.0f);
+    // The neutral studio sky: grey (no tint), brighter above than below.
+    EXPECT_EQ(scene.environment.sky, SkyType::Gradient);
+    EXPECT_EQ(scene.environment.zenith.x, scene.environment.zenith.z);
+    EXPECT_GT(scene.environment.zenith.x, scene.environment.ground.x);
     EXPECT_FALSE(scene.sdf.has_value());
 
     const Camera& camera = scene.camera;

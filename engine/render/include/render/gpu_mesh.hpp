@@ -13,7 +13,8 @@ struct GpuMeshPrimitive {
     gl::Buffer indices;
     gl::VertexArray vertexArray;
     GLsizei indexCount = 0;
-    int material = -1; // index into MeshAsset::materials
+    int material = -1;      // index into MeshAsset::materials
+    glm::vec3 centre{0.0f}; // of the primitive's bounds, in the asset's space (blend order)
 };
 
 // A material's textures as indices into GpuMesh::textures (-1 = none).

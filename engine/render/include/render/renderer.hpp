@@ -32,10 +32,10 @@ struct FrameTargets {
 
 FrameTargets createFrameTargets(int width, int height);
 
-enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Grid, Count };
+enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Grid, Blend, Count };
 // Names of the passes, in Pass order (what `rmsc bench` prints).
 constexpr std::array<const char*, std::size_t(Pass::Count)> kPassNames = {
-    "raster", "march", "post", "shadow", "shell", "cone", "grid"};
+    "raster", "march", "post", "shadow", "shell", "cone", "grid", "blend"};
 
 // Fragments whose march took at least one step in the last frame, per pass.
 struct MarchStatistics {

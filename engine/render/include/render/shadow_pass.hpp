@@ -1,6 +1,7 @@
 // Shadow pass: renders the depth of every mesh instance and every shell into the layers of a
 // shadow-map array, one layer per GpuScene::shadowViews entry. The fullscreen SDF objects are
-// not drawn: they cast shadows by marching (shaders/common/shadows.glsl).
+// not drawn: they cast shadows by marching (shaders/common/shadows.glsl). MASK and BLEND
+// materials are alpha-tested (passes/shadow.frag).
 #pragma once
 
 #include "gl/program.hpp"
@@ -26,12 +27,15 @@ class ShadowPass {
 
   private:
     gl::Program program_;
-    GLint model_ = -1, lightViewProjection_ = -1;
+    GLint model_ = -1, lightViewProjection_ = -1, alphaTest_ = -1, uvTransform_ = -1;
     gl::Texture maps_;
     gl::Framebuffer framebuffer_;
     int size_ = 0, layers_ = 0;
 
     void allocate(int size, int layers);
+    // The alpha test of one primitive's material (MASK, BLEND) and its base colour texture.
+    void bindAlphaTest(const GpuScene& scene, const GpuMeshInstance& instance,
+                       const GpuMeshPrimitive& primitive) const;
 };
 
 } // namespace rmsc

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -22,9 +23,10 @@ namespace rmsc {
 struct MeshVertex {
     glm::vec3 position;
     glm::vec3 normal;
-    glm::vec2 uv;      // TEXCOORD_0, (0, 0) when absent
-    glm::vec2 uv1;     // TEXCOORD_1, (0, 0) when absent
-    glm::vec4 tangent; // xyz = unit tangent (direction of +u), w = +-1 bitangent sign
+    glm::vec2 uv;          // TEXCOORD_0, (0, 0) when absent
+    glm::vec2 uv1;         // TEXCOORD_1, (0, 0) when absent
+    glm::vec4 tangent;     // xyz = unit tangent (direction of +u), w = +-1 bitangent sign
+    glm::vec4 color{1.0f}; // COLOR_0 as linear RGBA (alpha 1 for a VEC3), (1, 1, 1, 1) when absent
 };
 
 // An 8-bit RGBA image, rows top to bottom.
@@ -43,15 +45,36 @@ struct MeshSampler {
     int wrapT = 0x2901;
 };
 
+// KHR_texture_transform of one texture slot: uv' = T(offset) * R(rotation) * S(scale) * uv,
+// with the extension's rotation matrix (counter-clockwise in UV space, radians).
+struct TextureTransform {
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;
+    glm::vec2 scale{1.0f};
+
+    // The extension's translation * rotation * scale, column-major (as GLSL takes it):
+    // u' = ox + cos(r) sx u + sin(r) sy v, v' = oy - sin(r) sx u + cos(r) sy v.
+    glm::mat3 matrix() const {
+        const float c = std::cos(rotation), s = std::sin(rotation);
+        return glm::mat3(glm::vec3(c * scale.x, -s * scale.x, 0.0f),
+                         glm::vec3(s * scale.y, c * scale.y, 0.0f), glm::vec3(offset, 1.0f));
+    }
+    glm::vec2 apply(glm::vec2 uv) const { return glm::vec2(matrix() * glm::vec3(uv, 1.0f)); }
+};
+
 // One texture slot of a material (a glTF textureInfo): the image, its sampler and the
 // TEXCOORD set it reads. image = -1: the slot is empty.
 struct MeshTextureRef {
     int image = -1;   // index into MeshAsset::images
-    int texCoord = 0; // 0 = TEXCOORD_0, 1 = TEXCOORD_1
+    int texCoord = 0; // 0 = TEXCOORD_0, 1 = TEXCOORD_1 (KHR_texture_transform may override it)
     MeshSampler sampler;
+    TextureTransform transform; // KHR_texture_transform; the identity without it
 
     bool present() const { return image >= 0; }
 };
+
+// glTF alphaMode (glTF 2.0 section 3.9.4).
+enum class AlphaMode { Opaque, Mask, Blend };
 
 // A glTF metallic-roughness material with every texture of the core specification.
 struct MeshMaterial {
@@ -68,7 +91,10 @@ struct MeshMaterial {
     MeshTextureRef emissiveTexture;          // sRGB, multiplies the emissive factor
     MeshTextureRef occlusionTexture;         // linear: R = ambient occlusion
     float occlusionStrength = 1.0f;          // occlusionTexture.strength: 0 = no effect
-    bool doubleSided = false;
+    bool doubleSided = false; // false: back faces are culled; true: lit with flipped normals
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f; // MASK: drawn where alpha >= alphaCutoff
+    bool unlit = false;       // KHR_materials_unlit: the base colour as it is, no lighting
 };
 
 // Triangles in the asset's root space (node transforms applied), always indexed.
