@@ -402,11 +402,11 @@ std::uint64_t hashList(std::span<const std::uint32_t> list) {
 }
 
 // The whole program's list (the identity) after everything else, for points outside the grid.
-void appendOutsideList(SdfCellGrid& grid, std::size_t instructions) {
+void appendOutsideList(SdfCellGrid& grid, std::size_t instructions, std::uint32_t first = 0) {
     grid.outsideOffset = std::uint32_t(grid.words.size());
     grid.outsideLength = std::uint32_t(instructions);
     for (std::uint32_t i = 0; i < instructions; ++i)
-        grid.words.push_back(i);
+        grid.words.push_back(first + i);
 }
 
 } // namespace
@@ -430,6 +430,9 @@ struct SdfCellState {
     std::vector<std::uint32_t> identity;
     std::vector<std::uint32_t> constants; // kFarSteps per level
     SdfCellOptions options;
+    // Where the program run outside the grid starts in `code` and its length: the program
+    // itself, or the one given to run there (after the constants).
+    std::uint32_t outsideFirst = 0, outsideLength = 0;
     int levels = 0;
     glm::vec3 origin{0.0f};
     float size = 0.0f;
@@ -690,12 +693,28 @@ void packGrid(const SdfCellState& s, SdfCellGrid& grid) {
     while (!grid.stats.cellsPerLevel.empty() && grid.stats.cellsPerLevel.back() == 0)
         grid.stats.cellsPerLevel.pop_back();
     std::copy(s.lists.begin(), s.lists.end(), grid.words.begin() + base);
-    appendOutsideList(grid, s.program.instructions.size());
+    appendOutsideList(grid, s.outsideLength, s.outsideFirst);
     grid.stats.uniquePrograms = s.uniquePrograms;
     grid.stats.prunedCells = s.prunedCells;
     grid.stats.meanLength = grid.stats.leafCells ? double(totalLength) / grid.stats.leafCells : 0.0;
     grid.stats.meanLeaves = grid.stats.leafCells ? double(totalLeaves) / grid.stats.leafCells : 0.0;
     grid.stats.bytes = grid.words.size() * sizeof(std::uint32_t);
+}
+
+// `outside` after the constants (when it reads the same data as the program: a bounding
+// hierarchy orders the same parts otherwise), else the program itself, for points outside.
+void setOutsideProgram(SdfCellState& s, std::size_t treeCode, const SdfProgram* outside) {
+    s.code.resize(treeCode);
+    if (outside && !outside->instructions.empty() && outside->data == s.program.data) {
+        s.outsideFirst = std::uint32_t(treeCode);
+        s.outsideLength = std::uint32_t(outside->instructions.size());
+        s.code.insert(s.code.end(), outside->instructions.begin(), outside->instructions.end());
+    } else {
+        s.outsideFirst = 0;
+        s.outsideLength = std::uint32_t(s.program.instructions.size());
+    }
+    s.identity.resize(s.code.size());
+    std::iota(s.identity.begin(), s.identity.end(), 0u);
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -706,7 +725,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 } // namespace
 
 SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
-                          const SdfCellOptions& options, SdfCellStatePtr* keep) {
+                          const SdfCellOptions& options, SdfCellStatePtr* keep,
+                          const SdfProgram* outside) {
     const auto started = std::chrono::steady_clock::now();
     if (keep) keep->reset();
     SdfCellGrid grid;
@@ -742,8 +762,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
             s.constants.push_back(std::uint32_t(s.code.size()));
             s.code.push_back(constantInstruction(float(m) * cellEdge(s, level)));
         }
-    s.identity.resize(s.code.size());
-    std::iota(s.identity.begin(), s.identity.end(), 0u);
+    setOutsideProgram(s, s.code.size(), outside);
 
     PrunedTree whole(s.tree.nodes.size());
     for (std::size_t i = 0; i < s.tree.nodes.size(); ++i)
@@ -757,7 +776,8 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     return grid;
 }
 
-bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& grid) {
+bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& grid,
+                     const SdfProgram* outside) {
     const auto started = std::chrono::steady_clock::now();
     const std::vector<GpuSdfInstruction>& before = s.program.instructions;
     const std::vector<GpuSdfInstruction>& after = edited.instructions;
@@ -790,6 +810,7 @@ bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& gri
     s.program.data = edited.data;
     std::copy(after.begin(), after.end(), s.code.begin());
     std::copy(after.begin(), after.end(), s.program.instructions.begin());
+    setOutsideProgram(s, s.constants.back() + 1, outside);
     s.prunedCells = 0;
     if (any) {
         pruneBlocks(s, {{0u, false}}, changed);

@@ -45,7 +45,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
         return; // nothing ready for the newest scene: the old picture stays
     const bool sameMap = gpuScene_ && gpuScene_->sdfMap == maps.draw;
     const bool cells = maps.kind == editor::EditingMapKind::Cells;
-    const bool bounded = cells || maps.kind == editor::EditingMapKind::Interpreter;
+    const bool bounded = maps.kind == editor::EditingMapKind::Interpreter;
     if (sameMap && !sceneChanged_) return;
     std::optional<GpuScene> fresh; // a new upload: a newer scene, or the other program
     if (sceneChanged_ || bounded != drawnBounded_ || cells != drawnCells_) {
@@ -100,19 +100,21 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
 
 namespace rmsc::app {
 
-// The cells of prepared_->sdf (the interpreter's program, swapped in): pruned again from the
-// kept state when the edit changed only numbers and the content stays in the grid's cube,
-// else pruned anew (sdf/cell_pruning.hpp).
+// The cells of prepared_->sdf, the tree without the bounding hierarchy (whose order follows
+// where things are: a move would change many instructions), with the interpreter's program
+// (the hierarchy's box tests) for points outside the grid: pruned again from the kept state
+// when the edit changed only numbers and the content stays in the grid's cube, else pruned
+// anew (sdf/cell_pruning.hpp).
 SdfCellGrid ViewRenderer::pruneCells(int frameNumber) {
     const auto start = std::chrono::steady_clock::now();
     const Aabb content = prepared_->scene.sdf ? sdfContentBox(*prepared_->scene.sdf) : Aabb{};
     SdfCellGrid grid;
-    bool again = cellState_ && repruneSdfCells(*cellState_, prepared_->sdf, grid);
+    bool again = cellState_ && repruneSdfCells(*cellState_, prepared_->sdf, grid, &boundedSdf_);
     if (again && !content.empty() &&
         (glm::any(glm::lessThan(content.min, grid.origin)) ||
          glm::any(glm::greaterThan(content.max, grid.origin + glm::vec3(grid.size)))))
         again = false; // moved out of the cube: a new one
-    if (!again) grid = buildSdfCells(prepared_->sdf, content, {}, &cellState_);
+    if (!again) grid = buildSdfCells(prepared_->sdf, content, {}, &cellState_, &boundedSdf_);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "rmsc view: frame %d: pruned %zu cells in %.0f ms (%s)\n", frameNumber,

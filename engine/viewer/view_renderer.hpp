@@ -107,7 +107,7 @@ class ViewRenderer {
     bool sceneChanged_ = false; // `prepared_` is newer than what is drawn: it shows once a map
                                 // for it is ready
     bool drawnBounded_ = false; // gpuScene_ holds boundedSdf_ (the interpreter draws)
-    bool drawnCells_ = false;   // and its cells (the cells map draws)
+    bool drawnCells_ = false;   // gpuScene_ holds the cells of prepared_->sdf (the cells map)
     SdfCellStatePtr cellState_; // what they were pruned from, to prune them again after an edit
     std::uint64_t uploadedRevision_ = 0;
     // The SDF map drawn: the best one that is ready; the warmer builds better ones on its

@@ -329,6 +329,64 @@ TEST(CellPruning, MovingOneShapePrunesFewCellsAgain) {
     EXPECT_FALSE(repruneSdfCells(*state, more->program, grid));
 }
 
+// Cells pruned from the tree without its bounding hierarchy, the hierarchy's program run outside
+// the grid: outside, the list is that program (its box tests), giving the whole distance and
+// surface; inside, the cells agree with the whole program; an edit keeps both.
+TEST(CellPruning, TheOutsideRunsTheProgramGivenForIt) {
+    const auto text = [](float moved) {
+        std::ostringstream s;
+        s << R"({"children": [{"shape": "plane", "normal": [0, 1, 0], "offset": 1})";
+        for (int i = 0; i < 16; ++i)
+            s << R"(, {"shape": ")" << (i % 2 ? "sphere" : "box") << R"(", "position": [)"
+              << (i % 4) * 0.8f + (i == 5 ? moved : 0.0f) << ", 0, " << (i / 4) * 0.8f
+              << R"(], "material": "m)" << i % 3 << "\"}";
+        s << "]}";
+        return s.str();
+    };
+    const std::string sdf = text(0.0f);
+    const std::optional<Compiled> flat = compileText(sdf, false), bounded = compileText(sdf, true);
+    ASSERT_TRUE(flat && bounded);
+    ASSERT_NE(flat->program.instructions.size(), bounded->program.instructions.size());
+    const Aabb box = sdfContentBox(*flat->scene.sdf);
+    SdfCellOptions options;
+    options.levels = 2;
+    SdfCellStatePtr state;
+    SdfCellGrid grid = buildSdfCells(flat->program, box, options, &state, &bounded->program);
+    ASSERT_GT(grid.levels, 0);
+    const auto expectOutside = [&](const SdfProgram& whole, const SdfProgram& withBoxes) {
+        const std::span<const std::uint32_t> outside =
+            std::span(grid.words).subspan(grid.outsideOffset, grid.outsideLength);
+        ASSERT_EQ(outside.size(), withBoxes.instructions.size());
+        for (std::size_t i = 0; i < outside.size(); ++i)
+            ASSERT_EQ(std::memcmp(&grid.code[outside[i]], &withBoxes.instructions[i],
+                                  sizeof(GpuSdfInstruction)),
+                      0);
+        const std::vector<Material> materials = testMaterials();
+        for (const glm::vec3 p :
+             {grid.origin - glm::vec3(1.0f), grid.origin + glm::vec3(grid.size * 1.1f),
+              glm::vec3(0.0f, 0.0f, grid.origin.z - 3.0f)}) {
+            const SdfCellRange range = sdfCellRange(grid, p);
+            EXPECT_EQ(range.level, 0);
+            const std::span<const std::uint32_t> list =
+                std::span(grid.words).subspan(range.offset, range.length);
+            EXPECT_FLOAT_EQ(sdfDistanceOrdered(whole, grid.code, list, p), sdfDistance(whole, p));
+            EXPECT_EQ(sdfSurfaceOrdered(whole, grid.code, list, materials, p).objectId,
+                      sdfSurface(whole, materials, p).objectId);
+        }
+    };
+    expectOutside(flat->program, bounded->program);
+    std::mt19937 rng(4);
+    EXPECT_EQ(expectCellsAgree(*flat, grid, rng, 1000, "flat"), 1000);
+    // The sphere moved: both programs change; the outside is the new hierarchy's.
+    const std::string movedText = text(0.3f);
+    const std::optional<Compiled> movedFlat = compileText(movedText, false),
+                                  movedBounded = compileText(movedText, true);
+    ASSERT_TRUE(movedFlat && movedBounded);
+    ASSERT_TRUE(repruneSdfCells(*state, movedFlat->program, grid, &movedBounded->program));
+    expectOutside(movedFlat->program, movedBounded->program);
+    EXPECT_EQ(expectCellsAgree(*movedFlat, grid, rng, 1000, "moved"), 1000);
+}
+
 TEST(CellPruning, OperationRulesHoldAtTheirEdges) {
     // Union of a near and a far operand: only the near one where the far one cannot reach.
     EXPECT_EQ(sdfOperationPrune(SdfOp::Union, {2, 3}, {0, 1}, 0), SdfPruneSide::B);

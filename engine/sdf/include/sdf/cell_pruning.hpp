@@ -79,7 +79,8 @@ struct SdfCellStats {
 // blocks of 64 cells of 2 words each (block 0: the cells of the first level, x + 4 y + 16 z),
 // then the programs' index lists. A cell is (offset in words of its list, length) or, when
 // refined, (kSdfCellRefined | the index of its block of 64, 0). Indices refer to `code`: the
-// program's instructions followed by the instructions the pruning adds.
+// program's instructions followed by the instructions the pruning adds (and the outside
+// program's, when one is given).
 constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
 
 struct SdfCellGrid {
@@ -107,9 +108,13 @@ using SdfCellStatePtr = std::unique_ptr<SdfCellState, SdfCellStateDeleter>;
 
 // Prunes `program` (with or without its bounding hierarchy) over the cube around `content`.
 // No grid (levels 0) when `content` is empty or the program cannot be split into a tree.
-// With `keep`, what it was built from goes there (null when there is no grid).
+// With `keep`, what it was built from goes there (null when there is no grid). `outside`, when
+// given, is what points outside the grid run instead of `program`: the same tree with its
+// bounding hierarchy, so the cells can be pruned from a program whose order does not follow
+// where things are (an edit moves no instruction) while the outside keeps its box tests.
 SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
-                          const SdfCellOptions& options = {}, SdfCellStatePtr* keep = nullptr);
+                          const SdfCellOptions& options = {}, SdfCellStatePtr* keep = nullptr,
+                          const SdfProgram* outside = nullptr);
 
 // Prunes `grid` again for `edited`: the program the state was built from with only numbers
 // changed (the parameters, transforms and materials of shapes, the kind of a shape, the
@@ -119,7 +124,8 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
 // is what a full build gives but for the order in which the cell budget is spent. False when
 // the structure differs (or a cell's program would be deeper than the stack): build again,
 // the state is spent.
-bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid& grid);
+bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid& grid,
+                     const SdfProgram* outside = nullptr);
 
 // The list of the program that runs at p (the cell's, or the whole program's outside the
 // grid): its offset in grid.words and its length, computed as the shader does.
