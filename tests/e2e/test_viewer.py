@@ -200,6 +200,47 @@ def refuse_run(rmsc, source, tmp, xvfb_run, check):
         check("the refusal is shown in the problems panel", red > 300, red)
 
 
+def large_scene_run(rmsc, source, tmp, xvfb_run, check):
+    """The fourth run (tests/e2e/viewer_large_script.txt): a shape of the 10,000-shape grid moved,
+    drawn with the cells map, whose cells are pruned again from the kept state."""
+    folder = os.path.join(tmp, "large")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "samples/bench/grid_10000.json"), scene)
+    original = json.load(open(scene))
+    script = os.path.join(folder, "script.txt")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_large_script.txt"), script)
+    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script", script,
+               "--size", "480x300", "--embedded-shaders"]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
+    print(run.stderr[-2000:])
+    check("fourth run: viewer exits 0", run.returncode == 0, run.returncode)
+    check("the 10,000-shape grid is drawn with the cells map",
+          re.search(r"frame \d+: drawing with the cells map", run.stderr) is not None, run.stderr[-2000:])
+    full = re.search(r"frame 0: pruned (\d+) cells in \d+ ms \(all\)", run.stderr)
+    again = re.findall(r"frame (\d+): pruned (\d+) cells in \d+ ms \(again, after an edit of numbers\)",
+                       run.stderr)
+    check("its cells are pruned once when it opens", full is not None, run.stderr[-2000:])
+    check("the move prunes them again from the kept state, nothing anew",
+          bool(again) and "(all)" not in run.stderr[full.end():] if full else False, run.stderr[-2000:])
+    if full and again:
+        most = max(int(cells) for _, cells in again)
+        check("each edit prunes a small part of the cells again", most * 5 < int(full.group(1)),
+              (most, full.group(1)))
+    saved = json.load(open(scene))
+    before, after = original["sdf"]["children"], saved["sdf"]["children"]
+    check("the grid still has its 10,000 shapes", len(after) == len(before) == 10000, len(after))
+    # (The writer may spell a rotation another way: positions and shapes are compared.)
+    changed = [i for i, (a, b) in enumerate(zip(before, after))
+               if a["shape"] != b["shape"] or
+               any(abs(x - y) > 1e-6 for x, y in zip(a["position"], b["position"]))]
+    check("only the first shape moved", changed == [0], changed[:10])
+    if changed == [0]:
+        p, q = before[0]["position"], after[0]["position"]
+        check("it moved along +X only", q[0] > p[0] + 0.01 and abs(q[1] - p[1]) < 1e-6 and
+              abs(q[2] - p[2]) < 1e-6, (p, q))
+
+
 def main():
     rmsc, source = sys.argv[1], sys.argv[2]
     xvfb_run = shutil.which("xvfb-run")
@@ -287,6 +328,7 @@ def main():
             check("flying changed the view", len(differing_pixels(shots["before"], shots["undone"])) > 200)
         create_run(rmsc, source, tmp, xvfb_run, check)
         refuse_run(rmsc, source, tmp, xvfb_run, check)
+        large_scene_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1
