@@ -45,6 +45,10 @@ constexpr Limit kLimits[] = {
      "distinct texture files the SDF materials use (a file used as base colour and as a linear "
      "map counts twice)",
      "refused at the texture over the limit", "kSdfMaterialTextures"},
+    {"SDF material texels", double(kSdfTextureTexels), "texels",
+     "decoded pixels of the SDF materials' textures together, from the image headers before "
+     "decoding",
+     "refused at the texture that goes over", "kSdfTextureTexels"},
     {"March steps", kMarchSteps, "",
      "`render.max_steps`: each GPU ray stops after this many steps, so no scene can hang the GPU",
      "refused at `/render/max_steps`", "kMarchSteps"},
@@ -115,9 +119,10 @@ constexpr Limit kLimits[] = {
     {"Scene glTF indices", double(kSceneGltfIndices), "",
      "triangle indices of all the glTF files of a scene after instancing",
      "refused at the node that goes over, in the file that goes over", "kSceneGltfIndices"},
-    {"Scene glTF texels", double(kSceneGltfTexels), "texels",
-     "decoded pixels of the images of all the glTF files of a scene",
-     "refused at the image that goes over, in the file that goes over", "kSceneGltfTexels"},
+    {"Scene texels", double(kSceneTexels), "texels",
+     "decoded pixels of everything a scene shows: the images of all its glTF files, its "
+     "material textures and its sky image, from the image headers before decoding",
+     "refused at the image that goes over (in the file that goes over)", "kSceneTexels"},
     {"Messages per input", kDiagnosticsKept, "",
      "errors and warnings kept and printed for one input (every one is still counted)",
      "the rest are summed up as \"... and N more errors\"", "kDiagnosticsKept"},

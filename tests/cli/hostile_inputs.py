@@ -196,6 +196,27 @@ case("png-60000-gltf-image", ["validate", "{dir}/image.gltf"], 1,
      ["image.gltf: /images/0/uri: image \"huge.png\": image is 60000x60000, expected at most 8192"],
      {"image.gltf": json.dumps(triangle_gltf(images=[{"uri": "huge.png"}])), "huge.png": huge})
 
+sky = {"sky": {"type": "image", "file": "huge.png"}}
+case("png-60000-sky", ["validate", "{dir}/sky.json"], 1,
+     ["sky.json: /environment/sky/file: the sky image is 60000x60000, expected at most 8192"],
+     {"sky.json": scene(environment=sky), "huge.png": huge})
+
+# A decompression bomb: a few bytes stating 20000x20000 (1.6 GB of RGBA), which stb_image would
+# describe and decode; refused from the header on every image path.
+bomb = png(20000, 20000, rows=False)
+case("png-bomb-20000-texture", ["validate", "{dir}/texture.json"], 1,
+     ["texture.json: /materials/m/base_color_texture/file",
+      "image is 20000x20000, expected at most 8192 on each side"],
+     {"texture.json": scene(materials={"m": {"base_color_texture": {"file": "huge.png"}}},
+                            sdf={"shape": "sphere", "material": "m"}),
+      "huge.png": bomb})
+case("png-bomb-20000-sky", ["validate", "{dir}/sky.json"], 1,
+     ["sky.json: /environment/sky/file: the sky image is 20000x20000, expected at most 8192"],
+     {"sky.json": scene(environment=sky), "huge.png": bomb})
+case("png-bomb-20000-gltf-image", ["validate", "{dir}/image.gltf"], 1,
+     ["image.gltf: /images/0/uri: image \"huge.png\": image is 20000x20000, expected at most"],
+     {"image.gltf": json.dumps(triangle_gltf(images=[{"uri": "huge.png"}])), "huge.png": bomb})
+
 case("camera-view-overflow", ["validate", "{dir}/camera.json"], 1,
      ["camera.json: /camera/target: target - position is too long for float arithmetic"],
      {"camera.json": scene(camera={"position": [3e38, 0, 0], "target": [-3e38, 0, 0]})})

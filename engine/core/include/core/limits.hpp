@@ -67,7 +67,11 @@ constexpr std::uint64_t kGltfBufferBytes = std::uint64_t(1) << 30; // buffers of
 // What the glTF files of one scene (meshes and shell proxies) may hold together.
 constexpr std::uint64_t kSceneGltfVertices = 32u << 20;
 constexpr std::uint64_t kSceneGltfIndices = 96u << 20;
-constexpr std::uint64_t kSceneGltfTexels = std::uint64_t(1) << 28;
+// Decoded texels of everything a scene shows: its glTF files' images, its material textures
+// and its sky image.
+constexpr std::uint64_t kSceneTexels = std::uint64_t(1) << 28;
+// Decoded texels of the SDF materials' textures together (scene/material_textures.hpp).
+constexpr std::uint64_t kSdfTextureTexels = std::uint64_t(1) << 26;
 
 // ---- Diagnostics (core/diagnostics.cpp) ----
 // Problems kept and printed for one input; the rest are counted ("... and 5 more errors").
