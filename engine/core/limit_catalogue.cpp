@@ -75,6 +75,19 @@ constexpr Limit kLimits[] = {
      "the tree is drawn by its per-cell programs instead (the `cells` strategy: no shader build "
      "that grows with the scene)",
      "kGeneratedCodeShapes"},
+    {"Generated code statements", kGeneratedCodeStatements, "",
+     "statements of the generated code of an SDF tree or a shell (about one per instruction, "
+     "box tests left out); each costs the shader compiler time and memory at every place the "
+     "shaders evaluate the map",
+     "the tree is drawn by its per-cell programs instead; a shell over it is refused at its "
+     "`shell` key",
+     "kGeneratedCodeStatements"},
+    {"SDF cost per pixel", double(kSdfPixelCost), "instructions",
+     "the worst-case cost of one pixel's march: the costliest march step (every instruction "
+     "run, neighbour checks and polar copies as emitted, a fractal one per iteration; under "
+     "the cells strategy the longest cell program) times `render.max_steps`, the scene's shells "
+     "added; a frame costs this times its pixels at most",
+     "refused at the node that costs most, with the cost and the budget", "kSdfPixelCost"},
     {"Pruning cells", kSdfCells, "",
      "cells of the `cells` strategy's hierarchy (8 bytes each on the GPU, plus their programs)",
      "refinement stops: the cells near the surface are refined first, the rest keep their "

@@ -196,13 +196,27 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     return prepared;
 }
 
+namespace {
+
+// What openScene opens is also checked for its drawing cost (prepare/sdf_cost.hpp); the
+// editor's own prepares of a scene it edits are not (they would prune large scenes on every
+// edit).
+std::optional<PreparedScene> costChecked(std::optional<PreparedScene> prepared,
+                                         Diagnostics& diagnostics) {
+    if (prepared && !checkSdfCost(*prepared, diagnostics)) return std::nullopt;
+    return prepared;
+}
+
+} // namespace
+
 std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagnostics& diagnostics,
                                        ShellMode shellMode) {
     if (path.empty()) {
         const FileSource embedded = embeddedFileSource();
         std::optional<Scene> scene = loadScene(kDemoScenePath, embedded, diagnostics);
         if (!scene) return std::nullopt;
-        return prepareScene(std::move(*scene), embedded, diagnostics, shellMode);
+        return costChecked(prepareScene(std::move(*scene), embedded, diagnostics, shellMode),
+                           diagnostics);
     }
     const FileSource disk = diskFileSource();
     std::string extension = path.extension().string();
@@ -225,7 +239,7 @@ std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagno
     }
     std::optional<Scene> scene = loadScene(path, disk, diagnostics);
     if (!scene) return std::nullopt;
-    return prepareScene(std::move(*scene), disk, diagnostics, shellMode);
+    return costChecked(prepareScene(std::move(*scene), disk, diagnostics, shellMode), diagnostics);
 }
 
 } // namespace rmsc

@@ -66,7 +66,14 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy) {
     // the few the pruning adds) are the scene's in the buffer.
     const bool cells = effectiveSdfStrategy(prepared.sdf, strategy) == SdfStrategy::Cells;
     SdfCellGrid grid;
-    if (cells)
+    // The cost check (prepare/sdf_cost.hpp) may have pruned this program already.
+    const std::vector<GpuSdfInstruction>& code = prepared.sdf.instructions;
+    const bool pruned = prepared.sdfCells && prepared.sdfCells->code.size() >= code.size() &&
+                        std::memcmp(prepared.sdfCells->code.data(), code.data(),
+                                    code.size() * sizeof(GpuSdfInstruction)) == 0;
+    if (cells && pruned)
+        grid = *prepared.sdfCells;
+    else if (cells)
         grid = buildSdfCells(prepared.sdf,
                              prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
     std::vector<GpuSdfInstruction> instructions = cells ? grid.code : prepared.sdf.instructions;

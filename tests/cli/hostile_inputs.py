@@ -183,6 +183,34 @@ case("buffer-400MiB-listed-3-times", ["validate", "{dir}/buffers.gltf"], 1,
       "\"glTF buffer bytes\""],
      {"buffers.gltf": json.dumps(gltf), "big.bin": ("sparse", 400 << 20)})
 
+# ---- 19.7: the cost of a march step ----
+
+def nested_repeats(depth):
+    """A sphere in `depth` groups, each repeating its child with the neighbour check."""
+    node = {"shape": "sphere", "radius": 0.2}
+    for _ in range(depth):
+        node = {"op": "union", "children": [node], "modifiers": [
+            {"type": "repeat", "period": [1, 1, 1], "neighbours": True}]}
+    return node
+
+
+# 22 k instructions a step: 77 s for a 160x90 image before it was refused.
+case("sdf-neighbour-repeats-4", ["validate", "{dir}/repeats.json"], 1,
+     ["repeats.json: /sdf/children/0/children/0/children/0: the SDF objects cost up to 6.0 M "
+      "instructions a pixel (23.4 k a march step times max_steps 256)",
+      "\"SDF cost per pixel\""],
+     {"repeats.json": scene(sdf=nested_repeats(4))})
+
+# 150 twisted shapes: generated code of about 750 statements took 3.5 GB and 24 s to compile cold;
+# drawn by the per-cell programs now (a 32x18 render: 0.8 GB).
+twisted = [{"shape": "box", "half_extents": [0.2, 0.4, 0.2], "position": [i % 15, 0, i // 15],
+            "modifiers": [{"type": "twist", "amount": 40, "radius": 0.5}]} for i in range(150)]
+case("sdf-twist-150", ["validate", "{dir}/twist.json"], 0,
+     ["twist.json: ok", "statements of generated code (drawn by its per-cell programs "
+      "instead)"],
+     {"twist.json": scene(camera={"position": [7, 6, -8], "target": [7, 0, 5]},
+                          sdf={"op": "union", "children": twisted})})
+
 # ---- 19.11: smaller defects ----
 
 huge = png(60000, 60000, rows=False)

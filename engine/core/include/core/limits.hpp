@@ -36,6 +36,13 @@ constexpr int kShellShapes = 160;         // shapes in one shell (its map is gen
 // Shapes of a tree drawn by generated code; above it the renderer draws the tree with the
 // per-cell programs (generated code costs compile time in proportion to the scene).
 constexpr int kGeneratedCodeShapes = 160;
+// Statements of generated code (the baked and buffer strategies: about one per instruction,
+// sdf/cost_model.hpp); above it the tree is drawn by its per-cell programs too, and a shell
+// (always generated code) is refused.
+constexpr int kGeneratedCodeStatements = 400;
+// The worst-case cost of one pixel's march, in instructions (sdf/cost_model.hpp): the costliest
+// march step (the longest cell program under the cells strategy) times render.max_steps.
+constexpr std::int64_t kSdfPixelCost = std::int64_t(1) << 20;
 // Cells of the per-cell pruning (sdf/cell_pruning.hpp) in all, and its levels.
 constexpr int kSdfCells = 1 << 21;
 constexpr int kSdfCellLevels = 6;
