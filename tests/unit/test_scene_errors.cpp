@@ -66,13 +66,13 @@ TEST(SceneErrors, RangesHoldForTheFloatANumberIsKeptAs) {
                    "expected a number in [0.001, 10000], got 0.00099999");
     expectOneError(withSdf(R"({"op": "smooth_union", "smoothness": 1e-46,
         "children": [{"shape": "sphere"}]})"),
-                   "/sdf/smoothness", "expected a number >= 0.0001, got 1e-46");
-    // A tenth of a millimetre is the least smoothness: the seams' formulas divide by it.
-    expectOneError(withSdf(R"({"op": "smooth_union", "smoothness": 0.000099,
+                   "/sdf/smoothness", "expected a number >= 0.001, got 1e-46");
+    // A millimetre is the least smoothness: the seams' formulas divide by it.
+    expectOneError(withSdf(R"({"op": "smooth_union", "smoothness": 0.00099,
         "children": [{"shape": "sphere"}]})"),
-                   "/sdf/smoothness", "expected a number >= 0.0001, got 9.9e-05");
+                   "/sdf/smoothness", "expected a number >= 0.001, got 0.00099");
     Diagnostics least;
-    EXPECT_TRUE(parseScene(withSdf(R"({"op": "smooth_union", "smoothness": 0.0001,
+    EXPECT_TRUE(parseScene(withSdf(R"({"op": "smooth_union", "smoothness": 0.001,
         "children": [{"shape": "sphere"}]})"),
                            "least.json", least))
         << least.format();
@@ -221,7 +221,7 @@ TEST(SceneErrors, SmoothOpNeedsSmoothness) {
                    "op \"smooth_union\" needs \"smoothness\"");
     expectOneError(withSdf(R"({"op": "smooth_subtraction", "smoothness": 0,
         "children": [{"shape": "sphere"}]})"),
-                   "/sdf/smoothness", "expected a number >= 0.0001, got 0");
+                   "/sdf/smoothness", "expected a number >= 0.001, got 0");
 }
 
 TEST(SceneErrors, NodeIsAShapeOrAGroupNotBoth) {
