@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the scene reader, the glTF importer and the importer's accessor and image paths under
 # a small load budget (fuzz_gltf_accessors, a structured harness: its inputs are parameters,
-# not files) with libFuzzer (clang, AddressSanitizer and UndefinedBehaviorSanitizer) for
+# not files; tests/fuzz/make_accessor_seeds.py writes its seeds) with libFuzzer (clang, AddressSanitizer and UndefinedBehaviorSanitizer) for
 # SECONDS each, starting from the samples, the seed inputs in tests/fuzz/seeds and the
 # regression inputs in tests/fuzz/regressions. Fails when a fuzzer finds a crash, a sanitizer
 # report, a leak, a hang (an input taking over 10 s) or a memory bomb (over 2 GiB resident, or

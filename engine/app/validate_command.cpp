@@ -51,11 +51,16 @@ int runValidate(const ParsedArgs& args) {
     int failed = 0;
     for (const std::string& path : args.positionals) {
         Diagnostics diagnostics;
-        const bool loaded = openScene(path, diagnostics).has_value();
+        const std::optional<PreparedScene> prepared = openScene(path, diagnostics);
+        const bool loaded = prepared.has_value();
         std::fputs(diagnostics.format().c_str(), stderr);
         const int warnings = strict ? warningCount(diagnostics) : 0;
         if (loaded && warnings == 0) {
             std::printf("%s: ok\n", path.c_str());
+            if (!prepared->sdf.instructions.empty() || !prepared->shells.empty())
+                std::printf(
+                    "%s: %s\n", path.c_str(),
+                    sdfCostSummary(prepared->sdfCost, prepared->scene.render.maxSteps).c_str());
             continue;
         }
         std::vector<std::string> counts;

@@ -84,10 +84,11 @@ std::optional<std::filesystem::path> openedFile(int fd) {
 // that grows while being read is refused at maxBytes. The opened file must lie inside every
 // folder of `confinements` (checked where the system tells which file was opened: a link
 // changed between the caller's check and the open is caught here).
-std::optional<std::string> readRegularFile(const std::filesystem::path& path,
-                                           std::uintmax_t maxBytes,
-                                           const std::vector<Confinement>& confinements,
-                                           std::string& error) {
+// Bytes: std::string or std::vector<unsigned char>, read into directly (no copy).
+template <class Bytes>
+std::optional<Bytes> readRegularFile(const std::filesystem::path& path, std::uintmax_t maxBytes,
+                                     const std::vector<Confinement>& confinements,
+                                     std::string& error) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0) {
         error = openError(errno);
@@ -126,12 +127,12 @@ std::optional<std::string> readRegularFile(const std::filesystem::path& path,
                 std::to_string(maxBytes);
         return std::nullopt;
     }
-    std::string bytes;
+    Bytes bytes;
     bytes.resize(std::size_t(info.st_size));
     std::size_t done = 0;
     char chunk[65536];
     for (;;) {
-        char* target = done < bytes.size() ? bytes.data() + done : chunk;
+        char* target = done < bytes.size() ? reinterpret_cast<char*>(bytes.data()) + done : chunk;
         const std::size_t room = done < bytes.size() ? bytes.size() - done : sizeof chunk;
         const ssize_t n = ::read(fd, target, room);
         if (n < 0 && errno == EINTR) continue;
@@ -140,7 +141,7 @@ std::optional<std::string> readRegularFile(const std::filesystem::path& path,
             return std::nullopt;
         }
         if (n == 0) break;
-        if (target == chunk) bytes.append(chunk, std::size_t(n)); // the file grew
+        if (target == chunk) bytes.insert(bytes.end(), chunk, chunk + n); // the file grew
         done += std::size_t(n);
         if (done > maxBytes) {
             error = "file grew past the limit of " + std::to_string(maxBytes) +
@@ -154,10 +155,11 @@ std::optional<std::string> readRegularFile(const std::filesystem::path& path,
 
 // Reads `path` if it resolves inside every folder of `confinements`, checked before opening
 // it (so nothing outside is even opened) and on the opened file.
-std::optional<std::string> readConfined(const std::filesystem::path& path, std::uintmax_t maxBytes,
-                                        const std::vector<Confinement>& confinements,
-                                        std::string& error) {
-    if (confinements.empty()) return readRegularFile(path, maxBytes, confinements, error);
+template <class Bytes = std::string>
+std::optional<Bytes> readConfined(const std::filesystem::path& path, std::uintmax_t maxBytes,
+                                  const std::vector<Confinement>& confinements,
+                                  std::string& error) {
+    if (confinements.empty()) return readRegularFile<Bytes>(path, maxBytes, confinements, error);
     const std::optional<std::filesystem::path> target = resolvedPath(path, error);
     if (!target) return std::nullopt;
     for (const Confinement& c : confinements) {
@@ -166,7 +168,7 @@ std::optional<std::string> readConfined(const std::filesystem::path& path, std::
             return std::nullopt;
         }
     }
-    return readRegularFile(*target, maxBytes, confinements, error);
+    return readRegularFile<Bytes>(*target, maxBytes, confinements, error);
 }
 
 std::filesystem::path& sandboxFolder() {
@@ -194,6 +196,16 @@ std::optional<std::string> readInsideFolder(const FileSource& source,
                                             std::string& error) {
     if (source.readInside) return source.readInside(folder, relative, error);
     return source.read(folder / relative, error);
+}
+
+bool readInsideFolderBytes(const FileSource& source, const std::filesystem::path& folder,
+                           const std::filesystem::path& relative, std::vector<unsigned char>& out,
+                           std::string& error) {
+    if (source.readInsideBytes) return source.readInsideBytes(folder, relative, out, error);
+    const std::optional<std::string> bytes = readInsideFolder(source, folder, relative, error);
+    if (!bytes) return false;
+    out.assign(bytes->begin(), bytes->end());
+    return true;
 }
 
 std::optional<std::filesystem::path> resolveInside(const std::filesystem::path& folder,
@@ -228,6 +240,20 @@ FileSource diskFileSource(std::uintmax_t maxBytes, const std::filesystem::path& 
         std::vector<Confinement> inside = confinements;
         inside.insert(inside.begin(), {*resolved, kFolderRule});
         return readConfined(*resolved / relative, maxBytes, inside, error);
+    };
+    source.readInsideBytes = [maxBytes, confinements](const std::filesystem::path& folder,
+                                                      const std::filesystem::path& relative,
+                                                      std::vector<unsigned char>& out,
+                                                      std::string& error) {
+        const std::optional<std::filesystem::path> resolved = resolvedPath(folder, error);
+        if (!resolved) return false;
+        std::vector<Confinement> inside = confinements;
+        inside.insert(inside.begin(), {*resolved, kFolderRule});
+        std::optional<std::vector<unsigned char>> bytes =
+            readConfined<std::vector<unsigned char>>(*resolved / relative, maxBytes, inside, error);
+        if (!bytes) return false;
+        out = std::move(*bytes);
+        return true;
     };
     return source;
 }

@@ -45,6 +45,10 @@ constexpr Limit kLimits[] = {
      "distinct texture files the SDF materials use (a file used as base colour and as a linear "
      "map counts twice)",
      "refused at the texture over the limit", "kSdfMaterialTextures"},
+    {"SDF material texels", double(kSdfTextureTexels), "texels",
+     "decoded pixels of the SDF materials' textures together, from the image headers before "
+     "decoding",
+     "refused at the texture that goes over", "kSdfTextureTexels"},
     {"March steps", kMarchSteps, "",
      "`render.max_steps`: each GPU ray stops after this many steps, so no scene can hang the GPU",
      "refused at `/render/max_steps`", "kMarchSteps"},
@@ -71,6 +75,19 @@ constexpr Limit kLimits[] = {
      "the tree is drawn by its per-cell programs instead (the `cells` strategy: no shader build "
      "that grows with the scene)",
      "kGeneratedCodeShapes"},
+    {"Generated code statements", kGeneratedCodeStatements, "",
+     "statements of the generated code of an SDF tree or a shell (about one per instruction, "
+     "box tests left out); each costs the shader compiler time and memory at every place the "
+     "shaders evaluate the map",
+     "the tree is drawn by its per-cell programs instead; a shell over it is refused at its "
+     "`shell` key",
+     "kGeneratedCodeStatements"},
+    {"SDF cost per pixel", double(kSdfPixelCost), "instructions",
+     "the worst-case cost of one pixel's march: the costliest march step (every instruction "
+     "run, neighbour checks and polar copies as emitted, a fractal one per iteration; under "
+     "the cells strategy the longest cell program) times `render.max_steps`, the scene's shells "
+     "added; a frame costs this times its pixels at most",
+     "refused at the node that costs most, with the cost and the budget", "kSdfPixelCost"},
     {"Pruning cells", kSdfCells, "",
      "cells of the `cells` strategy's hierarchy (8 bytes each on the GPU, plus their programs)",
      "refinement stops: the cells near the surface are refined first, the rest keep their "
@@ -115,9 +132,10 @@ constexpr Limit kLimits[] = {
     {"Scene glTF indices", double(kSceneGltfIndices), "",
      "triangle indices of all the glTF files of a scene after instancing",
      "refused at the node that goes over, in the file that goes over", "kSceneGltfIndices"},
-    {"Scene glTF texels", double(kSceneGltfTexels), "texels",
-     "decoded pixels of the images of all the glTF files of a scene",
-     "refused at the image that goes over, in the file that goes over", "kSceneGltfTexels"},
+    {"Scene texels", double(kSceneTexels), "texels",
+     "decoded pixels of everything a scene shows: the images of all its glTF files, its "
+     "material textures and its sky image, from the image headers before decoding",
+     "refused at the image that goes over (in the file that goes over)", "kSceneTexels"},
     {"Messages per input", kDiagnosticsKept, "",
      "errors and warnings kept and printed for one input (every one is still counted)",
      "the rest are summed up as \"... and N more errors\"", "kDiagnosticsKept"},

@@ -279,6 +279,7 @@ int duplicateMesh(Scene& scene, int index) {
 }
 
 int duplicateLight(Scene& scene, int index) {
+    if (int(scene.lights.size()) >= limits::kLights) return -1;
     Light copy = scene.lights.at(std::size_t(index));
     copy.name += " copy";
     scene.lights.insert(scene.lights.begin() + index + 1, copy);
@@ -335,7 +336,9 @@ Selection duplicateSelected(Scene& scene, const Selection& selection) {
     case SelectionKind::Mesh:
         return Selection::mesh(duplicateMesh(scene, selection.index));
     case SelectionKind::Light:
-        return Selection::light(duplicateLight(scene, selection.index));
+        if (const int copy = duplicateLight(scene, selection.index); copy >= 0)
+            return Selection::light(copy);
+        return selection; // the scene has limits::kLights lights already
     case SelectionKind::None:
         break;
     }

@@ -135,7 +135,8 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     const std::string sceneFile = scene.file.string();
 
     std::map<std::filesystem::path, int> assetByPath;
-    GltfBudget gltfBudget; // shared by the meshes and the shells' proxy meshes
+    // Shared by the meshes, the shells' proxy meshes, the material textures and the sky image.
+    GltfBudget gltfBudget;
     for (const MeshInstance& instance : scene.meshes) {
         auto found = assetByPath.find(instance.path);
         if (found != assetByPath.end()) {
@@ -163,7 +164,8 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
 
     prepared.materials = scene.materials;
     prepared.materials.push_back(defaultMaterial());
-    loadMaterialTextures(prepared.materials, sceneFile, files, diagnostics, prepared.textures);
+    loadMaterialTextures(prepared.materials, sceneFile, files, diagnostics, prepared.textures,
+                         &gltfBudget);
     if (scene.sdf && shellMode == ShellMode::Fullscreen) {
         std::optional<SdfProgram> program =
             compileSdf(*scene.sdf, std::uint32_t(scene.materials.size()), sceneFile, diagnostics,
@@ -184,8 +186,9 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     }
     prepared.lights = gatherLights(scene, prepared.assets, prepared.instanceAsset, diagnostics);
     if (scene.environment.sky == SkyType::Image && !scene.environment.imagePath.empty()) {
-        std::optional<SkyImage> sky = loadSkyImage(scene.environment.imagePath, files, sceneFile,
-                                                   "/environment/sky/file", diagnostics);
+        std::optional<SkyImage> sky =
+            loadSkyImage(scene.environment.imagePath, files, sceneFile, "/environment/sky/file",
+                         diagnostics, &gltfBudget);
         if (sky) prepared.skyImage = std::move(*sky);
     }
     if (diagnostics.errorCount() > errorsBefore) return std::nullopt;
@@ -193,13 +196,27 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     return prepared;
 }
 
+namespace {
+
+// What openScene opens is also checked for its drawing cost (prepare/sdf_cost.hpp); the
+// editor's own prepares of a scene it edits are not (they would prune large scenes on every
+// edit).
+std::optional<PreparedScene> costChecked(std::optional<PreparedScene> prepared,
+                                         Diagnostics& diagnostics) {
+    if (prepared && !checkSdfCost(*prepared, diagnostics)) return std::nullopt;
+    return prepared;
+}
+
+} // namespace
+
 std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagnostics& diagnostics,
                                        ShellMode shellMode) {
     if (path.empty()) {
         const FileSource embedded = embeddedFileSource();
         std::optional<Scene> scene = loadScene(kDemoScenePath, embedded, diagnostics);
         if (!scene) return std::nullopt;
-        return prepareScene(std::move(*scene), embedded, diagnostics, shellMode);
+        return costChecked(prepareScene(std::move(*scene), embedded, diagnostics, shellMode),
+                           diagnostics);
     }
     const FileSource disk = diskFileSource();
     std::string extension = path.extension().string();
@@ -222,7 +239,7 @@ std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagno
     }
     std::optional<Scene> scene = loadScene(path, disk, diagnostics);
     if (!scene) return std::nullopt;
-    return prepareScene(std::move(*scene), disk, diagnostics, shellMode);
+    return costChecked(prepareScene(std::move(*scene), disk, diagnostics, shellMode), diagnostics);
 }
 
 } // namespace rmsc

@@ -66,11 +66,17 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
     // The Cells strategy: the program pruned per cell, whose instructions (the program's and
     // the few the pruning adds) are the scene's in the buffer.
     const bool pruned = effectiveSdfStrategy(prepared.sdf, strategy) == SdfStrategy::Cells;
+    // The grid given, or the one the cost check (prepare/sdf_cost.hpp) pruned for this program.
+    const std::vector<GpuSdfInstruction>& code = prepared.sdf.instructions;
+    const bool costed = !cells && prepared.sdfCells &&
+                        prepared.sdfCells->code.size() >= code.size() &&
+                        std::memcmp(prepared.sdfCells->code.data(), code.data(),
+                                    code.size() * sizeof(GpuSdfInstruction)) == 0;
     SdfCellGrid built;
-    if (pruned && !cells)
+    if (pruned && !cells && !costed)
         built = buildSdfCells(prepared.sdf,
                               prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
-    const SdfCellGrid& grid = cells ? *cells : built;
+    const SdfCellGrid& grid = cells ? *cells : costed ? *prepared.sdfCells : built;
     std::vector<GpuSdfInstruction> instructions = pruned ? grid.code : prepared.sdf.instructions;
     std::vector<glm::vec4> sdfData = prepared.sdf.data;
     for (const PreparedShell& shell : prepared.shells) {

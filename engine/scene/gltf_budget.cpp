@@ -40,10 +40,10 @@ FileBudget fileBudget(const GltfBudget& scene) {
                       0};
     budget.texels = {"texels",
                      "glTF texels",
-                     "Scene glTF texels",
+                     "Scene texels",
                      limits::kGltfTexels,
                      scene.texels,
-                     limits::kSceneGltfTexels,
+                     limits::kSceneTexels,
                      0};
     // Buffers are freed once the file is loaded: they count per file only.
     budget.bufferBytes = {

@@ -107,11 +107,9 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
     std::string why;
     const auto relative = confinedPath(path, why);
     if (relative) {
-        const auto bytes = readInsideFolder(*context.files, context.folder, *relative, why);
-        if (bytes) {
-            out->assign(bytes->begin(), bytes->end());
+        // Straight into tinygltf's vector: a copy would hold a 1 GiB buffer twice.
+        if (readInsideFolderBytes(*context.files, context.folder, *relative, *out, why))
             return true;
-        }
     }
     const std::string name = relative ? relative->generic_string() : path;
     const auto pointer = context.bufferPointers.find(name);

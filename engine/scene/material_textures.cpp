@@ -10,7 +10,7 @@ namespace rmsc {
 
 bool loadMaterialTextures(std::vector<Material>& materials, const std::string& sceneFile,
                           const FileSource& files, Diagnostics& diagnostics,
-                          std::vector<TextureImage>& textures) {
+                          std::vector<TextureImage>& textures, GltfBudget* sceneBudget) {
     const int errorsBefore = diagnostics.errorCount();
     std::map<std::pair<std::filesystem::path, bool>, int> known; // -2: failed to load
     std::uint64_t texels = 0;
@@ -62,12 +62,26 @@ bool loadMaterialTextures(std::vector<Material>& materials, const std::string& s
             const std::uint64_t withThis =
                 texels + std::uint64_t(loaded.image.width) * std::uint64_t(loaded.image.height);
             if (withThis > kMaxSdfTextureTexels) {
-                diagnostics.error(
-                    sceneFile, texture->pointer,
-                    "texture \"" + texture->file + "\" (" + std::to_string(loaded.image.width) +
-                        "x" + std::to_string(loaded.image.height) +
-                        ") brings the SDF material textures over the limit of " +
-                        std::to_string(kMaxSdfTextureTexels >> 20) + " Mi texels in all");
+                diagnostics.error(sceneFile, texture->pointer,
+                                  "texture \"" + texture->file + "\" (" +
+                                      std::to_string(loaded.image.width) + "x" +
+                                      std::to_string(loaded.image.height) +
+                                      ") brings the SDF material textures over the limit of " +
+                                      std::to_string(kMaxSdfTextureTexels >> 20) +
+                                      " Mi texels in all (the limit \"SDF material texels\")");
+                continue;
+            }
+            const std::uint64_t own =
+                std::uint64_t(loaded.image.width) * std::uint64_t(loaded.image.height);
+            if (sceneBudget && own > sceneBudget->texels) {
+                diagnostics.error(sceneFile, texture->pointer,
+                                  "texture \"" + texture->file + "\" (" +
+                                      std::to_string(loaded.image.width) + "x" +
+                                      std::to_string(loaded.image.height) +
+                                      ") brings the scene's images over the limit \"Scene "
+                                      "texels\" of " +
+                                      std::to_string(limits::kSceneTexels >> 20) +
+                                      " Mi texels (glTF images, textures and the sky together)");
                 continue;
             }
             if (!gltf::decodeImage(data, bytes->size(), loaded.image, why)) {
@@ -77,6 +91,7 @@ bool loadMaterialTextures(std::vector<Material>& materials, const std::string& s
                 continue;
             }
             texels = withThis;
+            if (sceneBudget) sceneBudget->texels -= own;
             known[key] = int(textures.size());
             texture->image = int(textures.size());
             textures.push_back(std::move(loaded));

@@ -18,21 +18,22 @@
 
 namespace rmsc {
 
-bool readMaterialRef(const SceneReader& r, const Json& object, const std::string& pointer,
-                     int* out) {
+bool readMaterialRef(SceneReader& r, const Json& object, const std::string& pointer, int* out) {
     const Json* value = findMember(object, "material");
     if (!value) return true;
     const std::string valuePointer = childPointer(pointer, "material");
     const auto name = readString(r.json, *value, valuePointer);
     if (!name) return false;
-    const auto it = std::find(r.materialNames.begin(), r.materialNames.end(), *name);
-    if (it != r.materialNames.end()) {
-        *out = int(it - r.materialNames.begin());
+    const auto it = r.materialIndex.find(*name);
+    if (it != r.materialIndex.end()) {
+        *out = it->second;
         return true;
     }
     std::string message = "unknown material \"" + *name + "\"";
     if (r.materialNames.empty()) {
         message += "; the scene defines no materials (add them under \"materials\")";
+    } else if (r.unknownMaterialsExplained++ >= limits::kDiagnosticsKept) {
+        message += " (" + std::to_string(r.materialNames.size()) + " materials are defined)";
     } else {
         if (auto match = closeMatch(*name, r.materialNames)) {
             message += "; did you mean \"" + *match +
@@ -118,6 +119,7 @@ void readMaterials(SceneReader& r, const Json& object, std::vector<Material>& ma
     for (const auto& [name, value] : object.items()) {
         const std::string materialPointer = childPointer(pointer, name);
         // Known even when its fields are wrong, so references to it do not add errors.
+        r.materialIndex.emplace(name, int(r.materialNames.size()));
         r.materialNames.push_back(name);
         Material material;
         material.name = name;
@@ -159,7 +161,7 @@ void readLights(const SceneReader& r, const Json& array, std::vector<Light>& lig
     }
 }
 
-void readMeshes(const SceneReader& r, const Json& array, std::vector<MeshInstance>& meshes) {
+void readMeshes(SceneReader& r, const Json& array, std::vector<MeshInstance>& meshes) {
     const std::string pointer = "/meshes";
     if (!array.is_array()) {
         r.json.error(pointer, "expected an array of meshes, got " + jsonTypeName(array));
@@ -244,7 +246,7 @@ std::optional<Scene> readScene(const Json& root, const std::filesystem::path& pa
                            jsonTypeName(root));
         return std::nullopt;
     }
-    SceneReader r{json, path.parent_path(), {}, 0, false};
+    SceneReader r{json, path.parent_path(), {}, {}, 0, 0, false};
     Scene scene;
     scene.file = path;
     if (!readVersion(r, root, scene)) return std::nullopt;

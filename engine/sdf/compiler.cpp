@@ -6,6 +6,7 @@
 // whole program and the shells.
 #include "sdf/compiler.hpp"
 
+#include "sdf/cost_model.hpp"
 #include "sdf/modifiers.hpp"
 #include "sdf_emit.hpp"
 #include "sdf_plan.hpp"
@@ -159,6 +160,18 @@ std::optional<CompiledSdfScene> compileSdfScene(const SdfNode& root, std::uint32
                               "a shell holds at most " + std::to_string(kMaxShellShapes) +
                                   " shapes (its shader is generated), this one has " +
                                   std::to_string(leaves) + "; split it into several shells");
+            continue;
+        }
+        const long statements = sdfGeneratedStatements(*compiledShell);
+        if (statements > limits::kGeneratedCodeStatements) {
+            diagnostics.error(file, site.node->shell->pointer,
+                              "a shell's generated code is at most " +
+                                  std::to_string(limits::kGeneratedCodeStatements) +
+                                  " statements (the limit \"Generated code statements\"), this "
+                                  "one has " +
+                                  std::to_string(statements) +
+                                  " (about one per shape, operation and modifier); split it "
+                                  "into several shells");
             continue;
         }
         shell.program = std::move(*compiledShell);

@@ -3,6 +3,7 @@
 // stack becomes one variable per point frame; each instruction becomes one statement.
 #include "sdf/glsl_codegen.hpp"
 
+#include "sdf/cost_model.hpp"
 #include "sdf/primitives.hpp"
 #include "sdf/sdf_tree.hpp"
 
@@ -233,7 +234,10 @@ SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requeste
     for (const GpuSdfInstruction& in : program.instructions)
         leaves +=
             SdfOpcode(in.opcode) == SdfOpcode::Shape || SdfOpcode(in.opcode) == SdfOpcode::Profile;
-    return leaves > kMaxGeneratedLeaves ? SdfStrategy::Cells : requested;
+    return leaves > kMaxGeneratedLeaves ||
+                   sdfGeneratedStatements(program) > limits::kGeneratedCodeStatements
+               ? SdfStrategy::Cells
+               : requested;
 }
 
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,

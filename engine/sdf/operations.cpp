@@ -55,7 +55,9 @@ constexpr SdfParamSpec kSmoothness = {
     .key = "smoothness",
     .type = ParamType::Number,
     .required = true,
-    .range = {0.0, std::numeric_limits<double>::infinity(), true, false},
+    // At least a millimetre: the seam's formulas divide by it, and a tiny float
+    // (1e-38) overflows them on the GPU.
+    .range = closedRange(1e-3, std::numeric_limits<double>::infinity()),
     .description = "the width of the seam, in world units: the smooth minimum's `k`, the "
                    "chamfer's size, the rounding radius"};
 

@@ -1,6 +1,7 @@
 // The planning pass of the SDF compiler: see sdf_plan.hpp.
 #include "sdf_plan.hpp"
 
+#include "core/number_text.hpp"
 #include "core/object_ids.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/modifiers.hpp"
@@ -261,11 +262,14 @@ void Planner::checkGroup(const SdfNode& node) {
                            "a " + operationLabel(node.op) +
                                " needs at least two children (the shape and what to "
                                "subtract from it), got one");
-    if (takesSmoothness(node.op) && !(std::isfinite(node.smoothness) && node.smoothness > 0.0f))
-        diagnostics_.error(file_, node.pointer,
-                           "the smoothness (radius) of a " + operationLabel(node.op) +
-                               " must be a finite number > 0, got " +
-                               std::to_string(node.smoothness));
+    const double leastSmoothness = smoothnessParam().range.min;
+    if (takesSmoothness(node.op) &&
+        !(std::isfinite(node.smoothness) && node.smoothness >= leastSmoothness))
+        diagnostics_.error(
+            file_, node.pointer,
+            "the smoothness (radius) of a " + operationLabel(node.op) +
+                " must be a finite number >= " + shortestNumberText(leastSmoothness) + ", got " +
+                shortestNumberText(node.smoothness));
 }
 
 void Planner::order(SdfOp op, std::vector<PlannedNode>& children) {

@@ -47,6 +47,8 @@ bool canAddLight(const editor::Document& document) {
 }
 
 void duplicateSelection(editor::Document& document) {
+    // No copy of a light past the limit, and no empty step in the undo history.
+    if (document.selection.kind == editor::SelectionKind::Light && !canAddLight(document)) return;
     document.apply("Duplicate", [](Scene& scene, Selection& selection) {
         selection = editor::duplicateSelected(scene, selection);
     });

@@ -1,6 +1,6 @@
 // The editor model's commands for lights and profile solids: adding a light of each type where
-// asked (valid to save, undoable, refused at the light limit), moving and turning lights with
-// the gestures (each type only in the ways it has: no place for a directional light, no
+// asked (valid to save, undoable, refused at the light limit, and so is a copy), moving and turning
+// lights with the gestures (each type only in the ways it has: no place for a directional light, no
 // direction for a point light), clicking a light's marker, the lights' labels; adding an
 // extrusion and a revolution (valid, named after the solid, framed by their size) and changing
 // a profile's type (shared keys kept, the result still valid), each as one undo step.
@@ -115,6 +115,18 @@ TEST(EditorLights, NoLightIsAddedPastTheLimit) {
         ASSERT_GE(addLight(scene, LightType::Point, glm::vec3(0.0f)), 0);
     EXPECT_EQ(addLight(scene, LightType::Spot, glm::vec3(0.0f)), -1);
     EXPECT_EQ(int(scene.lights.size()), limits::kLights);
+    // Nor copied past it: the scene and the selection stay as they were.
+    EXPECT_EQ(duplicateLight(scene, 3), -1);
+    const Selection selected = Selection::light(3);
+    const Selection after = duplicateSelected(scene, selected);
+    EXPECT_EQ(int(scene.lights.size()), limits::kLights);
+    EXPECT_EQ(after.kind, SelectionKind::Light);
+    EXPECT_EQ(after.index, 3);
+    // One under the limit, the copy goes right after the original.
+    scene.lights.pop_back();
+    EXPECT_EQ(duplicateSelected(scene, selected).index, 4);
+    EXPECT_EQ(int(scene.lights.size()), limits::kLights);
+    EXPECT_EQ(scene.lights[4].name, scene.lights[3].name + " copy");
 }
 
 TEST(EditorLights, EachTypeTakesTheGesturesOfItsKeys) {

@@ -425,7 +425,7 @@ TEST_F(EditorFiles, AnInvalidSceneIsNotSavedAndTheErrorNamesItsPointer) {
 
     doc.apply("Smoothness", [](Scene& s, Selection&) { s.sdf->children[0].smoothness = 0.0f; });
     EXPECT_FALSE(doc.save(error));
-    EXPECT_NE(error.find("/sdf/children/0/smoothness: expected a number > 0, got 0"),
+    EXPECT_NE(error.find("/sdf/children/0/smoothness: expected a number >= 0.001, got 0"),
               std::string::npos)
         << error;
     EXPECT_EQ(readFile(path), before) << "the old file is untouched";

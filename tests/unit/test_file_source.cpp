@@ -135,6 +135,15 @@ TEST_F(FileSourceTest, DiskReadsStayInsideTheirFolderAndTheSandbox) {
     // A missing file inside the sandbox is simply missing.
     EXPECT_FALSE(boxed.read(box / "missing.json", error));
     EXPECT_EQ(error, "file not found");
+
+    // Read as bytes (glTF buffers), under the same rules.
+    std::vector<unsigned char> bytes;
+    ASSERT_TRUE(free.readInsideBytes);
+    EXPECT_TRUE(readInsideFolderBytes(free, box / "model", "alias.bin", bytes, error)) << error;
+    EXPECT_EQ(std::string(bytes.begin(), bytes.end()), "inside");
+    EXPECT_FALSE(readInsideFolderBytes(free, box / "model", "escape.bin", bytes, error));
+    EXPECT_NE(error.find("its URIs must stay inside that folder"), std::string::npos) << error;
+    EXPECT_FALSE(readInsideFolderBytes(boxed, box / "model", "up.bin", bytes, error));
 }
 
 // Sources without links (in memory, embedded) read folder / relative: the lexical rule of
@@ -146,4 +155,7 @@ TEST(FileSourceInside, SourcesWithoutLinksReadTheJoinedPath) {
     };
     std::string error;
     EXPECT_EQ(readInsideFolder(memory, "assets", "data/a.bin", error), "assets/data/a.bin");
+    std::vector<unsigned char> bytes;
+    EXPECT_TRUE(readInsideFolderBytes(memory, "assets", "data/a.bin", bytes, error));
+    EXPECT_EQ(std::string(bytes.begin(), bytes.end()), "assets/data/a.bin");
 }

@@ -2,9 +2,12 @@
 // budget (vertices, indices, texels, buffer bytes; per file and per scene) that is checked
 // before anything is allocated: accessors without buffer views, images listed many times or
 // larger than their bytes, buffers listed several times, roots listed thousands of times. Also
-// KHR_lights_punctual lights without a type.
+// KHR_lights_punctual lights without a type. The scene texel budget also holds material
+// textures and the sky image.
 #include "core/limits.hpp"
+#include "scene/material_textures.hpp"
 #include "scene/mesh_asset.hpp"
+#include "scene/sky_image.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -181,7 +184,7 @@ TEST(GltfHostile, TheSceneBudgetIsSharedByItsFiles) {
     ASSERT_TRUE(load(gltf, d, {}, &budget)) << d.format();
     EXPECT_EQ(budget.vertices, limits::kSceneGltfVertices - 6);
     EXPECT_EQ(budget.indices, limits::kSceneGltfIndices - 6);
-    EXPECT_EQ(budget.texels, limits::kSceneGltfTexels);
+    EXPECT_EQ(budget.texels, limits::kSceneTexels);
 
     // With 5 vertices left, the second instance goes over: refused there, nothing taken.
     budget.vertices = 5;
@@ -219,7 +222,7 @@ TEST(GltfHostile, AnImageListedManyTimesIsDecodedOnce) {
     const int expected[6] = {0, 0, 0, 1, 1, 2};
     for (int i = 0; i < 6; ++i)
         EXPECT_EQ(asset->materials[std::size_t(i)].baseColorTexture.image, expected[i]) << i;
-    EXPECT_EQ(budget.texels, limits::kSceneGltfTexels - (8 + 4 + 4));
+    EXPECT_EQ(budget.texels, limits::kSceneTexels - (8 + 4 + 4));
 }
 
 TEST(GltfHostile, TexelsAreCheckedFromTheHeaderBeforeDecoding) {
@@ -344,4 +347,68 @@ TEST(GltfHostile, LightsWithoutATypeAreRefusedAtTheirPointerWithTheOtherErrors) 
                                        "got nothing"),
               std::string::npos)
         << d.format();
+}
+
+// The scene's texel budget (limits::kSceneTexels) is shared by its glTF images, its material
+// textures and its sky image, each checked from its header before it is decoded.
+TEST(GltfHostile, MaterialTexturesAndTheSkyTakeFromTheSceneTexelBudget) {
+    MemoryFiles files;
+    files.files["mem/a.png"] = png(16, 8);
+    files.files["mem/b.png"] = png(4, 4);
+    std::vector<Material> materials(1);
+    materials[0].baseColorTexture.file = "a.png";
+    materials[0].baseColorTexture.path = "mem/a.png";
+    materials[0].baseColorTexture.pointer = "/materials/m/base_color_texture/file";
+    materials[0].normalTexture.file = "b.png";
+    materials[0].normalTexture.path = "mem/b.png";
+    materials[0].normalTexture.pointer = "/materials/m/normal_texture/file";
+
+    // Room for both: they are taken out of it.
+    GltfBudget budget;
+    budget.texels = 16 * 8 + 4 * 4 + 100;
+    std::vector<TextureImage> textures;
+    Diagnostics ok;
+    EXPECT_TRUE(loadMaterialTextures(materials, "s.json", files.source(), ok, textures, &budget))
+        << ok.format();
+    EXPECT_EQ(budget.texels, 100u);
+
+    // A sky of 16 x 8 no longer fits; one of 10 x 10 does.
+    Diagnostics sky;
+    EXPECT_FALSE(
+        loadSkyImage("mem/a.png", files.source(), "s.json", "/environment/sky/file", sky, &budget));
+    ASSERT_EQ(sky.errorCount(), 1);
+    EXPECT_EQ(sky.items[0].location, "/environment/sky/file");
+    EXPECT_NE(sky.items[0].message.find("(16x8) brings the scene's images over the limit "
+                                        "\"Scene texels\""),
+              std::string::npos)
+        << sky.items[0].message;
+    files.files["mem/c.png"] = png(10, 10);
+    Diagnostics fits;
+    EXPECT_TRUE(loadSkyImage("mem/c.png", files.source(), "s.json", "/environment/sky/file", fits,
+                             &budget));
+    EXPECT_EQ(budget.texels, 0u);
+
+    // Nothing is left for the textures of a second scene prepared with the same budget: the
+    // first texture over it is refused, before decoding, at its pointer.
+    std::vector<TextureImage> more;
+    Diagnostics over;
+    EXPECT_FALSE(loadMaterialTextures(materials, "s.json", files.source(), over, more, &budget));
+    EXPECT_TRUE(more.empty());
+    ASSERT_GE(over.errorCount(), 1);
+    EXPECT_EQ(over.items[0].location, "/materials/m/base_color_texture/file");
+    EXPECT_NE(over.items[0].message.find("\"Scene texels\""), std::string::npos)
+        << over.items[0].message;
+}
+
+// stb_image does not describe a 60000 x 60000 PNG; the sky names it too large, as the glTF
+// images and textures do.
+TEST(GltfHostile, ASkyTooLargeForTheDecoderIsCalledTooLarge) {
+    MemoryFiles files;
+    files.files["mem/huge.png"] = png(60000, 60000, true);
+    Diagnostics d;
+    EXPECT_FALSE(
+        loadSkyImage("mem/huge.png", files.source(), "s.json", "/environment/sky/file", d));
+    ASSERT_EQ(d.errorCount(), 1);
+    EXPECT_EQ(d.items[0].message,
+              "the sky image is 60000x60000, expected at most 8192 on each side");
 }

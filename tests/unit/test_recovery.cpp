@@ -96,7 +96,7 @@ TEST(Recovery, AnInvalidSceneIsNotWritten) {
 
     document.apply("Smoothness", [](Scene& s, Selection&) { s.sdf->smoothness = 0.0f; });
     EXPECT_FALSE(writeRecovery(document, error));
-    EXPECT_NE(error.find("/sdf/smoothness: expected a number > 0, got 0"), std::string::npos)
+    EXPECT_NE(error.find("/sdf/smoothness: expected a number >= 0.001, got 0"), std::string::npos)
         << error;
     std::ifstream in(recoveryPath(document.file()));
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), valid)

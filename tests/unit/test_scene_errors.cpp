@@ -66,7 +66,16 @@ TEST(SceneErrors, RangesHoldForTheFloatANumberIsKeptAs) {
                    "expected a number in [0.001, 10000], got 0.00099999");
     expectOneError(withSdf(R"({"op": "smooth_union", "smoothness": 1e-46,
         "children": [{"shape": "sphere"}]})"),
-                   "/sdf/smoothness", "expected a number > 0, got 1e-46");
+                   "/sdf/smoothness", "expected a number >= 0.001, got 1e-46");
+    // A millimetre is the least smoothness: the seams' formulas divide by it.
+    expectOneError(withSdf(R"({"op": "smooth_union", "smoothness": 0.00099,
+        "children": [{"shape": "sphere"}]})"),
+                   "/sdf/smoothness", "expected a number >= 0.001, got 0.00099");
+    Diagnostics least;
+    EXPECT_TRUE(parseScene(withSdf(R"({"op": "smooth_union", "smoothness": 0.001,
+        "children": [{"shape": "sphere"}]})"),
+                           "least.json", least))
+        << least.format();
 }
 
 TEST(SceneErrors, UnknownShapeSuggestsTheNearestAndListsKnownShapesNearestFirst) {
@@ -212,7 +221,7 @@ TEST(SceneErrors, SmoothOpNeedsSmoothness) {
                    "op \"smooth_union\" needs \"smoothness\"");
     expectOneError(withSdf(R"({"op": "smooth_subtraction", "smoothness": 0,
         "children": [{"shape": "sphere"}]})"),
-                   "/sdf/smoothness", "expected a number > 0, got 0");
+                   "/sdf/smoothness", "expected a number >= 0.001, got 0");
 }
 
 TEST(SceneErrors, NodeIsAShapeOrAGroupNotBoth) {

@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rmsc {
 
@@ -32,7 +33,18 @@ struct FileSource {
                                              const std::filesystem::path& relative,
                                              std::string& error)>
         readInside = {};
+    // readInside into a byte vector, for glTF buffers (tinygltf keeps them as vectors: a copy
+    // from the string would briefly hold a 1 GiB buffer twice). Unset: readInside's bytes are
+    // copied.
+    std::function<bool(const std::filesystem::path& folder, const std::filesystem::path& relative,
+                       std::vector<unsigned char>& out, std::string& error)>
+        readInsideBytes = {};
 };
+
+// source.readInsideBytes, or readInsideFolder's bytes copied into `out`.
+bool readInsideFolderBytes(const FileSource& source, const std::filesystem::path& folder,
+                           const std::filesystem::path& relative, std::vector<unsigned char>& out,
+                           std::string& error);
 
 // source.readInside, or source.read(folder / relative) for a source without it.
 std::optional<std::string> readInsideFolder(const FileSource& source,

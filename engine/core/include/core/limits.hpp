@@ -36,6 +36,13 @@ constexpr int kShellShapes = 160;         // shapes in one shell (its map is gen
 // Shapes of a tree drawn by generated code; above it the renderer draws the tree with the
 // per-cell programs (generated code costs compile time in proportion to the scene).
 constexpr int kGeneratedCodeShapes = 160;
+// Statements of generated code (the baked and buffer strategies: about one per instruction,
+// sdf/cost_model.hpp); above it the tree is drawn by its per-cell programs too, and a shell
+// (always generated code) is refused.
+constexpr int kGeneratedCodeStatements = 400;
+// The worst-case cost of one pixel's march, in instructions (sdf/cost_model.hpp): the costliest
+// march step (the longest cell program under the cells strategy) times render.max_steps.
+constexpr std::int64_t kSdfPixelCost = std::int64_t(1) << 20;
 // Cells of the per-cell pruning (sdf/cell_pruning.hpp) in all, and its levels.
 constexpr int kSdfCells = 1 << 21;
 constexpr int kSdfCellLevels = 6;
@@ -67,7 +74,11 @@ constexpr std::uint64_t kGltfBufferBytes = std::uint64_t(1) << 30; // buffers of
 // What the glTF files of one scene (meshes and shell proxies) may hold together.
 constexpr std::uint64_t kSceneGltfVertices = 32u << 20;
 constexpr std::uint64_t kSceneGltfIndices = 96u << 20;
-constexpr std::uint64_t kSceneGltfTexels = std::uint64_t(1) << 28;
+// Decoded texels of everything a scene shows: its glTF files' images, its material textures
+// and its sky image.
+constexpr std::uint64_t kSceneTexels = std::uint64_t(1) << 28;
+// Decoded texels of the SDF materials' textures together (scene/material_textures.hpp).
+constexpr std::uint64_t kSdfTextureTexels = std::uint64_t(1) << 26;
 
 // ---- Diagnostics (core/diagnostics.cpp) ----
 // Problems kept and printed for one input; the rest are counted ("... and 5 more errors").

@@ -56,6 +56,7 @@ int addLight(Scene& scene, LightType type = LightType::Directional,
 bool deleteMesh(Scene& scene, int index);
 bool deleteLight(Scene& scene, int index);
 int duplicateMesh(Scene& scene, int index);
+// The copy's index, or -1 (nothing added) when the scene already has limits::kLights lights.
 int duplicateLight(Scene& scene, int index);
 // Moves mesh instance / light `from` to position `to` in its list (the others keep their order;
 // moving down puts it after the one that was at `to`). Returns the new index, or -1 (nothing
@@ -63,7 +64,8 @@ int duplicateLight(Scene& scene, int index);
 int moveMesh(Scene& scene, int from, int to);
 int moveLight(Scene& scene, int from, int to);
 
-// Deletes / duplicates whatever is selected; returns the selection afterwards.
+// Deletes / duplicates whatever is selected; returns the selection afterwards (unchanged, and
+// the scene too, when a light is to be duplicated in a scene of limits::kLights lights).
 Selection deleteSelected(Scene& scene, const Selection& selection);
 Selection duplicateSelected(Scene& scene, const Selection& selection);
 

@@ -5,15 +5,18 @@
 
 #include "core/diagnostics.hpp"
 #include "core/file_source.hpp"
+#include "prepare/sdf_cost.hpp"
 #include "prepare/shell_proxy.hpp"
 #include "scene/material_textures.hpp"
 #include "scene/mesh_asset.hpp"
 #include "scene/scene.hpp"
 #include "scene/sky_image.hpp"
+#include "sdf/cell_pruning.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/program.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -47,6 +50,12 @@ struct PreparedScene {
     // What lights the scene: scene.lights, then the glTF KHR_lights_punctual lights of each mesh
     // instance (placed by the instance's transform); at most limits::kLights in all.
     std::vector<Light> lights;
+    // The worst-case cost of the SDF objects (prepare/sdf_cost.hpp), set by openScene.
+    SdfSceneCost sdfCost;
+    // The per-cell programs of `sdf` when the cost check had to prune it to know its cost; the
+    // renderer uses them instead of pruning again (SdfCellGrid::code starts with sdf's
+    // instructions: a grid that does not is not for this program).
+    std::shared_ptr<const SdfCellGrid> sdfCells;
 };
 
 // The material used where none is named.

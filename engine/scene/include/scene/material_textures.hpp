@@ -21,7 +21,7 @@ namespace rmsc {
 constexpr int kMaxSdfMaterialTextures = limits::kSdfMaterialTextures;
 // Decoded texels of all SDF material textures together (each is also limited to
 // limits::kTextureDimension a side).
-constexpr std::uint64_t kMaxSdfTextureTexels = std::uint64_t(64) << 20;
+constexpr std::uint64_t kMaxSdfTextureTexels = limits::kSdfTextureTexels;
 
 // A decoded texture and how the GPU must interpret its texels.
 struct TextureImage {
@@ -33,9 +33,12 @@ struct TextureImage {
 // Reads every texture of `materials`, sets each MaterialTexture::image to its index in
 // `textures` (shared by materials naming the same file in the same colour space) and reports
 // missing, unreadable, undecodable or oversized files and too many textures at the file name's
-// JSON pointer. Returns false if anything was reported.
+// JSON pointer. Each texture's texels are checked, from its header before it is decoded,
+// against kMaxSdfTextureTexels and what is left of `sceneBudget` (the scene's texel budget,
+// limits::kSceneTexels, shared with its glTF files and sky image; nullptr: none), and taken
+// out of it. Returns false if anything was reported.
 bool loadMaterialTextures(std::vector<Material>& materials, const std::string& sceneFile,
                           const FileSource& files, Diagnostics& diagnostics,
-                          std::vector<TextureImage>& textures);
+                          std::vector<TextureImage>& textures, GltfBudget* sceneBudget = nullptr);
 
 } // namespace rmsc

@@ -114,12 +114,14 @@ struct MeshAsset {
     glm::vec3 boundsMax{0.0f};
 };
 
-// What the glTF files of one scene may still hold together (limits::kSceneGltf*). Each file
-// loaded with it takes what it holds out of it; a file that would take more is refused.
+// What the glTF files of one scene may still hold together (limits::kSceneGltf*), and the
+// texels its images may still take (limits::kSceneTexels: glTF images, material textures and the
+// sky image). Each file or image loaded with it takes what it holds out of it; one that would
+// take more is refused.
 struct GltfBudget {
     std::uint64_t vertices = limits::kSceneGltfVertices;
     std::uint64_t indices = limits::kSceneGltfIndices;
-    std::uint64_t texels = limits::kSceneGltfTexels;
+    std::uint64_t texels = limits::kSceneTexels;
 };
 
 // Loads a .gltf or .glb through `files`. Every problem is reported to `diagnostics` with the

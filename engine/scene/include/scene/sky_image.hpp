@@ -5,6 +5,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/file_source.hpp"
+#include "scene/mesh_asset.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -20,9 +21,13 @@ struct SkyImage {
     std::vector<float> rgb;
 };
 
-// Loads `path`; problems are reported at `sceneFile` and `pointer` (the sky's "file").
+// Loads `path`; problems are reported at `sceneFile` and `pointer` (the sky's "file"). The
+// size its header states is checked before decoding: at most limits::kTextureDimension a side
+// (a PNG or JPEG too large for stb_image to read is still named too large) and within what is
+// left of `sceneBudget` (the scene's texel budget, limits::kSceneTexels, shared with its glTF
+// files and textures; nullptr: none), from which its texels are then taken.
 std::optional<SkyImage> loadSkyImage(const std::filesystem::path& path, const FileSource& files,
                                      const std::string& sceneFile, const std::string& pointer,
-                                     Diagnostics& diagnostics);
+                                     Diagnostics& diagnostics, GltfBudget* sceneBudget = nullptr);
 
 } // namespace rmsc

@@ -13,13 +13,6 @@
 
 namespace rmsc {
 
-// Compiles `root`. Group transforms are folded into each shape's world-to-local matrix;
-// material -1 inherits the parent's, and at the root means `defaultMaterial` (the renderer
-// appends a default material after the scene's). Children of commutative operations are
-// reordered so the deepest subtree comes first (Sethi-Ullman order), minimizing the stack.
-// Refuses (with diagnostics naming the node's JSON pointer and the limit) a program needing
-// more than kSdfMaxStack stack entries or kSdfMaxInstructions instructions, empty groups and
-// subtractions with fewer than two children.
 // The factor a node's modifiers divide its distance field by so that sphere tracing stays
 // safe (the step corrections): the product of the Lipschitz constants of its twists and bends
 // times 1 + the gradient bound of its displacements. 1 for a node with none of them. The
@@ -34,8 +27,18 @@ struct SdfCompileOptions {
     bool bounds = true;
 };
 
-// Shells (SdfNode::shell) are compiled like any other node: this is the program that draws the
-// whole tree in the fullscreen pass.
+// Compiles `root`. Group transforms are folded into each shape's world-to-local matrix;
+// material -1 inherits the parent's, and at the root means `defaultMaterial` (the renderer
+// appends a default material after the scene's). Children of commutative operations are
+// reordered so the deepest subtree comes first (Sethi-Ullman order), minimizing the stack.
+// Refuses, with diagnostics naming the node's JSON pointer and the limit: a program needing
+// more than kSdfMaxStack stack entries, kSdfMaxPointStack point-stack entries,
+// kSdfMaxInstructions instructions or kSdfMaxData polygon points; a group with no children (at
+// any depth, the root included: there is no empty SDF tree, a scene without SDF objects has no
+// "sdf" key); a subtraction with one child; a group whose children are all "cut"; a "cut"
+// root; a smooth operation without a finite smoothness > 0; a transform that cannot be
+// inverted. Shells (SdfNode::shell) are compiled like any other node: this is the program that
+// draws the whole tree in the fullscreen pass.
 std::optional<SdfProgram> compileSdf(const SdfNode& root, std::uint32_t defaultMaterial,
                                      const std::string& file, Diagnostics& diagnostics,
                                      const SdfCompileOptions& options = {});
@@ -62,7 +65,8 @@ struct SdfShellProgram {
 // The scene's fullscreen program without the shells, and each shell on its own. A shell must sit
 // in plain union groups without modifiers or cut children (it meets the rest of the scene
 // through the depth buffer), must not be cut and must not hold another shell; errors name the
-// shell's JSON pointer. `main` is empty when every shape is in a shell; main.nodePointers still
+// shell's JSON pointer. A group whose children are all shells is left out of `main` (it is not
+// an empty group); `main` is empty when every shape is in a shell; main.nodePointers still
 // lists every node of the tree.
 struct CompiledSdfScene {
     SdfProgram main;
