@@ -123,7 +123,7 @@ glm::vec3 gradient(const SdfField& field, glm::vec3 p, float h, std::int64_t& ev
 } // namespace
 
 std::uint64_t estimateDcTriangles(std::int64_t activeBlocks) {
-    return std::uint64_t(activeBlocks) * std::uint64_t(B * B) * 2 / 3;
+    return std::uint64_t(activeBlocks) * std::uint64_t(B * B) * 2;
 }
 
 DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& options) {

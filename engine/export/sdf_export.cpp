@@ -234,6 +234,8 @@ std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& set
     out.box = field->box;
     out.clipped = field->clipped;
     out.evaluations = result.evaluations;
+    out.estimatedTriangles = result.estimatedTriangles;
+    out.faceFlips = result.faceFlips;
     return out;
 }
 

@@ -53,9 +53,10 @@ struct DcResult {
 
 DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& options = {});
 
-// The triangles a surface through `activeBlocks` blocks near it is expected to make (measured
-// on spheres, boxes and the samples: the surface crosses about a third of a near block's
-// kDcBlock^2 columns, two triangles each), for the up-front refusal.
+// The triangles a surface through `activeBlocks` blocks near it may make, for the up-front
+// refusal: two per cell of a block's face (kDcBlock^2 columns, as if a sheet crossed each).
+// Measured at resolution 128: 1.6 times the pawn's triangles, 1.8 times the CSG sample's, 1.04
+// times the chessboard's; 0.93 times a sphere's at 24 cells.
 std::uint64_t estimateDcTriangles(std::int64_t activeBlocks);
 
 } // namespace rmsc

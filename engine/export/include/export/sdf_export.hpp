@@ -42,6 +42,8 @@ struct SdfExport {
     Aabb box;                        // the content's box the grid covers
     bool clipped = false;            // the content was cut at `box` (bounds or shell bound)
     std::int64_t evaluations = 0;
+    std::uint64_t estimatedTriangles = 0; // what the up-front limit check estimated
+    std::int64_t faceFlips = 0;           // checkerboard faces flipped to keep it manifold
     bool cancelled = false; // stopped by settings.cancel: nothing else is set
 };
 
