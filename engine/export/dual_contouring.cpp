@@ -25,6 +25,8 @@ using exporter::kEdgeCorners;
 using exporter::Qef;
 
 constexpr int B = kDcBlock;
+// How far (in cells) the steps onto the surface may take a vertex out of its cell.
+constexpr float kNewtonMargin = 0.25f;
 constexpr int kCornersPerSide = B + 1;
 
 struct Hermite {
@@ -424,7 +426,8 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
                                     rawGradient(field, p, gradientStep, block.evaluations);
                                 const float slope = glm::dot(g, g);
                                 if (!(slope > 1e-8f)) break;
-                                p = glm::clamp(p - d * g / slope, lo, hi);
+                                p = glm::clamp(p - d * g / slope, lo - kNewtonMargin * voxel,
+                                               hi + kNewtonMargin * voxel);
                             }
                             std::uint32_t material = 0;
                             glm::vec3 color(0.8f);

@@ -167,10 +167,13 @@ std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& set
                               shortestNumberText(voxel));
         return std::nullopt;
     }
-    // Two cells of margin on every side: the grid's outer corners lie outside the content.
+    // Two cells of margin on every side: the grid's outer corners lie outside the content. The
+    // grid is moved off round numbers by a few hundredths of a cell, so faces at round
+    // coordinates (a box at the origin) do not lie exactly on its corners, where the distance
+    // is 0 and the surface's crossings and corners fall on the cells' own corners.
     DcGrid grid;
     grid.voxel = voxel;
-    grid.origin = field->box.min - 2.0f * voxel;
+    grid.origin = field->box.min - 2.0f * voxel - voxel * glm::vec3(0.0131f, 0.0173f, 0.0191f);
     const glm::dvec3 cellsWanted = glm::ceil(glm::dvec3(extent) / double(voxel)) + 4.0;
     const glm::dvec3 cellsRounded = glm::ceil(cellsWanted / double(kDcBlock)) * double(kDcBlock);
     const double voxels = cellsRounded.x * cellsRounded.y * cellsRounded.z;
