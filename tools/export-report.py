@@ -30,6 +30,11 @@ def csg_subtraction_corners():
     return corners
 
 
+def small(value):
+    """A mean error: four decimals, or "< 0.0001"."""
+    return "< 0.0001" if value < 0.00005 else f"{value:.4f}"
+
+
 def measure(tool, scene, args, threads):
     cmd = [tool, scene, "--threads", str(threads)] + args
     out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
@@ -66,8 +71,8 @@ def main():
             corner = "—" if m["corner_error"] is None else f"{m['corner_error']:.3f}"
             lines.append(
                 f"| {name} | {method} | {m['grid'][0]}x{m['grid'][1]}x{m['grid'][2]} | "
-                f"{m['triangles']:,} | {m['max_vertex_error']:.3f} / {m['mean_vertex_error']:.4f} | "
-                f"{m['max_surface_error']:.3f} / {m['mean_surface_error']:.4f} | {corner} | "
+                f"{m['triangles']:,} | {m['max_vertex_error']:.3f} / {small(m['mean_vertex_error'])} | "
+                f"{m['max_surface_error']:.3f} / {small(m['mean_surface_error'])} | {corner} | "
                 f"{'yes' if m['closed_manifold'] else 'no'} | {m['seconds']:.2f} s |")
             print(lines[-1], flush=True)
     table = "\n".join(lines) + "\n"
