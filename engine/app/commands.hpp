@@ -28,5 +28,7 @@ extern const CommandSpec kSchemaSpec;
 int runSchema(const ParsedArgs& args);
 extern const CommandSpec kLimitsSpec;
 int runLimits(const ParsedArgs& args);
+extern const CommandSpec kExportSpec;
+int runExport(const ParsedArgs& args);
 
 } // namespace rmsc::app

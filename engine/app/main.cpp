@@ -16,7 +16,7 @@ namespace {
 const Subcommand kSubcommands[] = {
     {kRenderSpec, runRender},         {kValidateSpec, runValidate}, {kBenchSpec, runBench},
     {kPrimitivesSpec, runPrimitives}, {kViewSpec, runView},         {kSchemaSpec, runSchema},
-    {kLimitsSpec, runLimits},
+    {kLimitsSpec, runLimits},         {kExportSpec, runExport},
 };
 
 std::string usage() {

@@ -144,6 +144,14 @@ constexpr Limit kLimits[] = {
     {"Image pixels", double(kImagePixels), "pixels",
      "`--size` width times height (a frame takes about 70 bytes of memory a pixel)",
      "refused (exit 2)", "kImagePixels"},
+    {"Export voxels", double(kExportVoxels), "cells",
+     "the grid `rmsc export` samples: the content's box (with two cells of margin, rounded up to "
+     "blocks of 8) divided by the voxel size",
+     "refused before sampling, with the grid's size", "kExportVoxels"},
+    {"Export triangles", double(kExportTriangles), "",
+     "the triangles `rmsc export` makes (as many as the glTF reader takes back), estimated from "
+     "the blocks near the surface after one sample per block",
+     "refused before the surface is extracted, with the estimate", "kExportTriangles"},
 };
 
 constexpr std::uint64_t kMi = std::uint64_t(1) << 20;

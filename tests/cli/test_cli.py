@@ -401,6 +401,62 @@ with tempfile.TemporaryDirectory() as tmp:
     leftovers = sorted(set(os.listdir(full)) - {"c.png", "d.png", "d.pfm", "n.png", "i.png", "s.png"})
     check("full disk: no temporary files", not leftovers, str(leftovers))
 
+    # rmsc export: a mesh file, each refusal with the file, the pointer and what was expected,
+    # and nothing written when it fails or is interrupted.
+    exports = os.path.join(tmp, "export")
+    os.makedirs(exports)
+    pawn = os.path.join(SAMPLES, "scenes", "pawn.json")
+    glb = os.path.join(exports, "pawn.glb")
+    r = expect("export pawn", ["export", pawn, "-o", glb, "--resolution", "32"], 0,
+               stdout_has=["triangles", "from /sdf"])
+    with open(glb, "rb") as f:
+        data = f.read()
+    check("export pawn: a glb", data[:4] == b"glTF" and struct.unpack("<I", data[8:12])[0] == len(data))
+    expect("export pawn: rmsc opens it", ["validate", glb], 0)
+    expect("export a node to stl", ["export", os.path.join(SAMPLES, "scenes", "csg.json"), "--node",
+           "/sdf/children/1", "-o", os.path.join(exports, "cut.stl"), "--voxel", "0.05"], 0,
+           stdout_has=["from /sdf/children/1"])
+    planes = write(exports, "plane.json", scene(sdf={"op": "union", "children": [
+        {"shape": "sphere"}, {"shape": "plane"}]}))
+    expect("export unbounded", ["export", planes, "-o", os.path.join(exports, "p.glb")], 1,
+           stderr_has=["plane.json: /sdf/children/1:", "--bounds"])
+    expect("export unbounded with bounds", ["export", planes, "-o", os.path.join(exports, "p.obj"),
+           "--bounds", "-1,-1,-1,1,0.5,1", "--resolution", "16"], 0)
+    check("export obj writes its mtl", os.path.exists(os.path.join(exports, "p.mtl")))
+    expect("export missing node", ["export", planes, "--node", "/sdf/children/5", "-o",
+           os.path.join(exports, "m.glb")], 1, stderr_has=["/sdf/children/5:", "no SDF node"])
+    thin = write(exports, "thin.json", scene(sdf={"shape": "sphere", "modifiers": [
+        {"type": "onion", "thickness": 0.0001}]}))
+    expect("export empty", ["export", thin, "-o", os.path.join(exports, "t.glb"), "--resolution",
+           "8"], 1, stderr_has=["thin.json: /sdf:", "no surface"])
+    expect("export over the voxel limit", ["export", pawn, "-o", os.path.join(exports, "big.glb"),
+           "--voxel", "0.0001"], 1, stderr_has=["pawn.json: /sdf:", "voxels (", "limit", "--voxel"])
+    expect("export bad bounds", ["export", planes, "-o", os.path.join(exports, "b.glb"),
+           "--bounds", "1,1,1"], 2, stderr_has=["--bounds", "six numbers"])
+    expect("export bad format", ["export", pawn, "-o", os.path.join(exports, "x.ply")], 2,
+           stderr_has=[".glb, .gltf, .obj or .stl"])
+    expect("export unwritable", ["export", pawn, "-o", os.path.join(tmp, "no-such-folder", "x.glb")],
+           3, stderr_has=["cannot write"])
+    target = write(full, "e.glb", "previous mesh")
+    r = subprocess.run([RMSC, "export", pawn, "-o", target, "--resolution", "48"],
+                       capture_output=True, text=True, timeout=60, preexec_fn=small_disk)
+    check("export full disk exits 3", r.returncode == 3, f"exit {r.returncode}: {r.stderr[:400]}")
+    check("export full disk says so", "cannot write" in r.stderr and "e.glb" in r.stderr, r.stderr[:400])
+    with open(target, "rb") as f:
+        check("export full disk keeps the old file", f.read() == b"previous mesh")
+    # Ctrl-C while sampling: exit 130, no file, no temporary file.
+    import time
+    p = subprocess.Popen([RMSC, "export", pawn, "-o", os.path.join(exports, "ctrl-c.glb"),
+                          "--resolution", "1000", "--threads", "1"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(1.0)
+    p.send_signal(signal.SIGINT)
+    out, err = p.communicate(timeout=60)
+    check("export interrupted exits 130", p.returncode == 130, f"exit {p.returncode}: {err[:400]}")
+    check("export interrupted says so", "interrupted" in err, err[:400])
+    check("export interrupted leaves nothing", not [n for n in os.listdir(exports) if "ctrl-c" in n],
+          str(os.listdir(exports)))
+
 # The scene JSON Schema: `rmsc schema` prints docs/scene.schema.json exactly, every sample scene
 # is valid under it, and scenes the reader refuses are invalid under it too.
 r = run(["schema"])

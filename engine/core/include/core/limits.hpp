@@ -58,6 +58,10 @@ constexpr int kImageSize = 16384; // --size of render, bench and view, each side
 // --size, width times height: a frame takes about 70 bytes of memory a pixel (G-buffers,
 // readback; measured: 1.2 GiB peak for a 4096x4096 render on llvmpipe), so about 2.2 GiB here.
 constexpr std::int64_t kImagePixels = std::int64_t(1) << 25;
+// rmsc export: cells of the sampling grid (1024^3), and triangles of the mesh (what the glTF
+// reader takes back: kGltfIndices / 3).
+constexpr std::int64_t kExportVoxels = std::int64_t(1) << 30;
+constexpr std::int64_t kExportTriangles = std::int64_t(16) << 20;
 
 // ---- Any input file read from disk (core/file_source.cpp) ----
 constexpr std::uint64_t kInputFileBytes = std::uint64_t(1) << 30;

@@ -1,0 +1,62 @@
+// Dual contouring of an SDF on a uniform grid (Ju, Losasso, Schaefer and Warren, "Dual
+// Contouring of Hermite Data", SIGGRAPH 2002), with one vertex per surface component of a cell
+// (Schaefer, Ju and Warren, "Manifold Dual Contouring", 2007), sampled sparsely: the grid is cut
+// into blocks of kDcBlock^3 cells, and a block whose centre's |distance| exceeds its half
+// diagonal times sqrt(2) (the steepest slope of the fields: the chamfer operations) holds no
+// surface and is never sampled further.
+#pragma once
+
+#include "export/export_mesh.hpp"
+
+#include <glm/glm.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+namespace rmsc {
+
+inline constexpr int kDcBlock = 8;
+
+// What is contoured: a distance (< 0 inside) and, at the vertices, the blended base colour and
+// the dominant material.
+struct SdfField {
+    std::function<float(glm::vec3)> distance;
+    std::function<void(glm::vec3, std::uint32_t& material, glm::vec3& color)> surface;
+};
+
+// Cell (i, j, k) spans origin + voxel * [(i, j, k), (i + 1, j + 1, k + 1)]. The field must be
+// positive (outside) on the grid's outer corners, so the mesh is closed.
+struct DcGrid {
+    glm::vec3 origin{0.0f};
+    float voxel = 1.0f;
+    glm::ivec3 cells{0}; // rounded up to whole blocks by dualContour
+};
+
+struct DcOptions {
+    int threads = 0; // 0: every core
+    // Refused after the first pass (about one evaluation per block) when the estimate is over.
+    std::uint64_t maxTriangles = ~std::uint64_t(0);
+    std::function<void(double fraction)> progress; // called from the worker threads, serialized
+    const std::atomic<bool>* cancel = nullptr;     // set: stop soon, return cancelled
+};
+
+struct DcResult {
+    ExportMesh mesh;
+    bool cancelled = false;
+    bool overLimit = false;               // estimate (or final count) over maxTriangles
+    std::uint64_t estimatedTriangles = 0; // from the blocks near the surface
+    std::int64_t activeBlocks = 0;
+    std::int64_t evaluations = 0; // distance evaluations in all
+    std::int64_t faceFlips = 0;   // checkerboard faces whose rule was flipped (manifold repair)
+};
+
+DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& options = {});
+
+// The triangles a surface through `activeBlocks` blocks near it may make, for the up-front
+// refusal: two per cell of a block's face (kDcBlock^2 columns, as if a sheet crossed each).
+// Measured at resolution 128: 1.6 times the pawn's triangles, 1.8 times the CSG sample's, 1.04
+// times the chessboard's; 0.93 times a sphere's at 24 cells.
+std::uint64_t estimateDcTriangles(std::int64_t activeBlocks);
+
+} // namespace rmsc
