@@ -3,11 +3,15 @@
 // Khronos sample models are (RMSC_GLTF_SAMPLES_DIR, outside the repository).
 #pragma once
 
+#include "core/file_source.hpp"
+#include "scene/mesh_asset.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +27,20 @@ inline std::filesystem::path gltfSamples() {
     if (!std::filesystem::exists(::rmsc::test::gltfSamples() / "README.md"))                       \
     GTEST_SKIP() << "the Khronos glTF sample models are not at " << ::rmsc::test::gltfSamples()    \
                  << " (configure with -DRMSC_GLTF_SAMPLES_DIR=...)"
+
+// A file source holding one file, mem/test.gltf, with `text`; and loading it.
+inline FileSource memoryGltf(std::string text) {
+    return {[text = std::move(text)](const std::filesystem::path& path,
+                                     std::string& error) -> std::optional<std::string> {
+        if (path.generic_string() == "mem/test.gltf") return text;
+        error = "no such file";
+        return std::nullopt;
+    }};
+}
+
+inline std::optional<MeshAsset> loadGltfText(const std::string& text, Diagnostics& diagnostics) {
+    return loadGltf("mem/test.gltf", memoryGltf(text), diagnostics);
+}
 
 inline std::string base64Encode(const std::string& bytes) {
     static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";

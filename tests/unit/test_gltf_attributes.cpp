@@ -14,19 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-FileSource memoryFile(std::string text) {
-    return {[text = std::move(text)](const std::filesystem::path& path,
-                                     std::string& error) -> std::optional<std::string> {
-        if (path.generic_string() == "mem/test.gltf") return text;
-        error = "no such file";
-        return std::nullopt;
-    }};
-}
-
-std::optional<MeshAsset> loadText(const std::string& text, Diagnostics& d) {
-    return loadGltf("mem/test.gltf", memoryFile(text), d);
-}
-
 // One primitive of `attributes` (names -> accessor indices) on node 0 with `node` merged in.
 std::string meshGltf(const GltfBuilder& b, const json& attributes, const json& extra = {},
                      const json& node = json::object()) {
@@ -50,7 +37,7 @@ TEST(GltfVertexColors, Vec3FloatMultipliesWithAlphaOne) {
     const int c =
         b.accessor(std::vector<float>{1, 0, 0, 0, 0.5f, 0, 0.25f, 0.25f, 1}, kFloatType, "VEC3", 3);
     Diagnostics d;
-    const auto asset = loadText(meshGltf(b, {{"POSITION", p}, {"COLOR_0", c}}), d);
+    const auto asset = loadGltfText(meshGltf(b, {{"POSITION", p}, {"COLOR_0", c}}), d);
     ASSERT_TRUE(asset) << d.format();
     const auto& v = asset->primitives.at(0).vertices;
     EXPECT_EQ(v[0].color, glm::vec4(1, 0, 0, 1));
@@ -69,7 +56,7 @@ TEST(GltfVertexColors, NormalizedIntegersDecodeToUnitRange) {
         kUnsignedShort, "VEC4", 3, true);
     for (const int c : {c8, c16}) {
         Diagnostics d;
-        const auto asset = loadText(meshGltf(b, {{"POSITION", p}, {"COLOR_0", c}}), d);
+        const auto asset = loadGltfText(meshGltf(b, {{"POSITION", p}, {"COLOR_0", c}}), d);
         ASSERT_TRUE(asset) << d.format();
         const auto& v = asset->primitives.at(0).vertices;
         EXPECT_FLOAT_EQ(v[0].color.x, 1.0f);
@@ -89,7 +76,7 @@ TEST(GltfVertexColors, AbsentMeansWhite) {
     GltfBuilder b;
     const int p = b.accessor(kTriangle, kFloatType, "VEC3", 3);
     Diagnostics d;
-    const auto asset = loadText(meshGltf(b, {{"POSITION", p}}), d);
+    const auto asset = loadGltfText(meshGltf(b, {{"POSITION", p}}), d);
     ASSERT_TRUE(asset) << d.format();
     for (const MeshVertex& v : asset->primitives.at(0).vertices)
         EXPECT_EQ(v.color, glm::vec4(1.0f));
@@ -101,7 +88,7 @@ TEST(GltfVertexColors, SignedOrUnnormalizedIntegersAreRefused) {
     const int c =
         b.accessor(std::vector<std::int8_t>{1, 2, 3, 4, 5, 6, 7, 8, 9}, kByte, "VEC3", 3, true);
     Diagnostics d;
-    EXPECT_FALSE(loadText(meshGltf(b, {{"POSITION", p}, {"COLOR_0", c}}), d));
+    EXPECT_FALSE(loadGltfText(meshGltf(b, {{"POSITION", p}, {"COLOR_0", c}}), d));
     ASSERT_EQ(d.errorCount(), 1) << d.format();
     EXPECT_EQ(d.items[0].location, "/accessors/1");
     EXPECT_NE(d.items[0].message.find("COLOR_0"), std::string::npos) << d.format();
@@ -185,8 +172,8 @@ std::string cubeGltf(bool quantized) {
 
 TEST(GltfQuantization, QuantizedCubeMatchesTheFloatCubeExactly) {
     Diagnostics d1, d2;
-    const auto reference = loadText(cubeGltf(false), d1);
-    const auto quantized = loadText(cubeGltf(true), d2);
+    const auto reference = loadGltfText(cubeGltf(false), d1);
+    const auto quantized = loadGltfText(cubeGltf(true), d2);
     ASSERT_TRUE(reference) << d1.format();
     ASSERT_TRUE(quantized) << d2.format();
     EXPECT_EQ(d2.items.size(), 0u) << d2.format();
@@ -211,7 +198,7 @@ TEST(GltfQuantization, IntegerPositionsWithoutTheExtensionAreRefusedNamingIt) {
     gltf.erase("extensionsUsed");
     gltf.erase("extensionsRequired");
     Diagnostics d;
-    EXPECT_FALSE(loadText(gltf.dump(), d));
+    EXPECT_FALSE(loadGltfText(gltf.dump(), d));
     ASSERT_EQ(d.errorCount(), 1) << d.format();
     EXPECT_EQ(d.items[0].location, "/accessors/0");
     EXPECT_NE(d.items[0].message.find("KHR_mesh_quantization"), std::string::npos) << d.format();
@@ -223,7 +210,7 @@ TEST(GltfQuantization, SignedNormalizedDecodesAsTheSpecificationSays) {
     const int p = b.accessor(std::vector<std::int8_t>{-128, 0, 127, -127, 64, 0, 0, 0, 0, 0, 0, 0},
                              kByte, "VEC3", 3, true);
     Diagnostics d;
-    const auto asset = loadText(
+    const auto asset = loadGltfText(
         meshGltf(b, {{"POSITION", p}}, {{"extensionsUsed", {"KHR_mesh_quantization"}}}), d);
     ASSERT_TRUE(asset) << d.format();
     const auto& v = asset->primitives.at(0).vertices;
@@ -248,7 +235,7 @@ TEST(GltfSparse, SubstitutesTheListedElements) {
            {"indices", {{"bufferView", indices}, {"componentType", kUnsignedShort}}},
            {"values", {{"bufferView", values}}}}}});
     Diagnostics d;
-    const auto asset = loadText(meshGltf(b, {{"POSITION", 0}}), d);
+    const auto asset = loadGltfText(meshGltf(b, {{"POSITION", 0}}), d);
     ASSERT_TRUE(asset) << d.format();
     const auto& v = asset->primitives.at(0).vertices;
     EXPECT_EQ(v[0].position, glm::vec3(5, 5, 5));
@@ -273,7 +260,7 @@ TEST(GltfSparse, WithoutABufferViewTheBaseIsZeros) {
                            {"type", "VEC3"},
                            {"count", 3}});
     Diagnostics d;
-    const auto asset = loadText(meshGltf(b, {{"POSITION", 1}, {"NORMAL", 0}}), d);
+    const auto asset = loadGltfText(meshGltf(b, {{"POSITION", 1}, {"NORMAL", 0}}), d);
     ASSERT_TRUE(asset) << d.format();
     const auto& v = asset->primitives.at(0).vertices;
     EXPECT_EQ(v[1].normal, glm::vec3(0, 1, 0)); // (0, 2, 0) normalized by the bake
@@ -296,7 +283,7 @@ TEST(GltfSparse, IndicesOutOfOrderOrOutOfRangeAreRefused) {
                {"indices", {{"bufferView", indices}, {"componentType", kUnsignedShort}}},
                {"values", {{"bufferView", values}}}}}});
         Diagnostics d;
-        EXPECT_FALSE(loadText(meshGltf(b, {{"POSITION", 0}}), d));
+        EXPECT_FALSE(loadGltfText(meshGltf(b, {{"POSITION", 0}}), d));
         ASSERT_EQ(d.errorCount(), 1) << d.format();
         EXPECT_EQ(d.items[0].location, "/accessors/0/sparse/indices") << d.format();
         EXPECT_NE(d.items[0].message.find("strictly increasing"), std::string::npos);
@@ -318,7 +305,7 @@ TEST(GltfSparse, ValuesPastTheirViewAreRefused) {
            {"indices", {{"bufferView", indices}, {"componentType", kUnsignedShort}}},
            {"values", {{"bufferView", values}}}}}});
     Diagnostics d;
-    EXPECT_FALSE(loadText(meshGltf(b, {{"POSITION", 0}}), d));
+    EXPECT_FALSE(loadGltfText(meshGltf(b, {{"POSITION", 0}}), d));
     ASSERT_GE(d.errorCount(), 1) << d.format();
     EXPECT_EQ(d.items[0].location, "/accessors/0/sparse/values") << d.format();
 }

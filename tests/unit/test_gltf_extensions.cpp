@@ -16,15 +16,6 @@ using nlohmann::json;
 
 namespace {
 
-FileSource memoryFile(std::string text) {
-    return {[text = std::move(text)](const std::filesystem::path& path,
-                                     std::string& error) -> std::optional<std::string> {
-        if (path.generic_string() == "mem/test.gltf") return text;
-        error = "no such file";
-        return std::nullopt;
-    }};
-}
-
 // One triangle; `extra` is merged into the document (extension lists, materials...).
 std::string triangleGltf(const json& extra) {
     GltfBuilder b;
@@ -39,7 +30,7 @@ std::string triangleGltf(const json& extra) {
 }
 
 std::optional<MeshAsset> load(const json& extra, Diagnostics& d) {
-    return loadGltf("mem/test.gltf", memoryFile(triangleGltf(extra)), d);
+    return loadGltf("mem/test.gltf", memoryGltf(triangleGltf(extra)), d);
 }
 
 // The diagnostics whose message names `word`.

@@ -1,5 +1,6 @@
 // glTF import of valid files: the sample assets, node transforms baked into vertices, computed
 // normals, non-indexed and strip/fan primitives, and the scene made for viewing one glTF file.
+#include "gltf_builder.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/mesh_asset.hpp"
 
@@ -22,21 +23,6 @@ MeshAsset loadSample(const std::string& name) {
     EXPECT_TRUE(asset.has_value()) << diagnostics.format();
     EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.format();
     return asset.value_or(MeshAsset{});
-}
-
-std::string base64(const std::string& bytes) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        std::uint32_t v = std::uint32_t(std::uint8_t(bytes[i])) << 16;
-        if (i + 1 < bytes.size()) v |= std::uint32_t(std::uint8_t(bytes[i + 1])) << 8;
-        if (i + 2 < bytes.size()) v |= std::uint32_t(std::uint8_t(bytes[i + 2]));
-        out += table[(v >> 18) & 63];
-        out += table[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? table[v & 63] : '=';
-    }
-    return out;
 }
 
 template <typename T> void append(std::string& bytes, const std::vector<T>& values) {
@@ -71,16 +57,17 @@ std::string makeGltf(const std::vector<float>& positions, const std::vector<floa
     if (!normals.empty()) attributes["NORMAL"] = addView(normals, 5126, "VEC3", normals.size() / 3);
     json primitive = {{"attributes", attributes}, {"mode", mode}};
     if (!indices.empty()) primitive["indices"] = addView(indices, 5125, "SCALAR", indices.size());
-    json gltf = {{"asset", {{"version", "2.0"}}},
-                 {"scenes", {{{"nodes", sceneRoots}}}},
-                 {"scene", 0},
-                 {"nodes", nodes},
-                 {"meshes", {{{"primitives", {primitive}}}}},
-                 {"accessors", accessors},
-                 {"bufferViews", views},
-                 {"buffers",
-                  {{{"byteLength", bytes.size()},
-                    {"uri", "data:application/octet-stream;base64," + base64(bytes)}}}}};
+    json gltf = {
+        {"asset", {{"version", "2.0"}}},
+        {"scenes", {{{"nodes", sceneRoots}}}},
+        {"scene", 0},
+        {"nodes", nodes},
+        {"meshes", {{{"primitives", {primitive}}}}},
+        {"accessors", accessors},
+        {"bufferViews", views},
+        {"buffers",
+         {{{"byteLength", bytes.size()},
+           {"uri", "data:application/octet-stream;base64," + test::base64Encode(bytes)}}}}};
     return gltf.dump();
 }
 

@@ -17,15 +17,6 @@ using nlohmann::json;
 
 namespace {
 
-FileSource memoryFile(std::string text) {
-    return {[text = std::move(text)](const std::filesystem::path& path,
-                                     std::string& error) -> std::optional<std::string> {
-        if (path.generic_string() == "mem/test.gltf") return text;
-        error = "no such file";
-        return std::nullopt;
-    }};
-}
-
 // A 1x1 PNG (opaque white), as a data URI.
 const char* kPixel =
     "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAAC0lEQVR4"
@@ -50,7 +41,7 @@ std::optional<MeshAsset> loadMaterial(const json& material, Diagnostics& d,
                      {{{"attributes", {{"POSITION", p}, {"TEXCOORD_0", uv0}, {"TEXCOORD_1", uv1}}},
                        {"material", 0}}}}}}}};
     gltf.merge_patch(extra);
-    return loadGltf("mem/test.gltf", memoryFile(b.text(gltf)), d);
+    return loadGltf("mem/test.gltf", memoryGltf(b.text(gltf)), d);
 }
 
 } // namespace
