@@ -1,6 +1,7 @@
 // Editing the sky with a load check first (see environment_edits.hpp).
 #include "editor/environment_edits.hpp"
 
+#include "scene/scene_paths.hpp"
 #include "scene/sky_image.hpp"
 
 namespace rmsc::editor {
@@ -21,12 +22,7 @@ bool setSkyImageFile(Scene& scene, const std::string& file, const FileSource& fi
         error = "expected the path of an equirectangular .hdr image, got \"\"";
         return false;
     }
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path folder =
-        scene.file.empty() ? fs::current_path(ec) : fs::absolute(scene.file, ec).parent_path();
-    const fs::path named(file);
-    const fs::path path = (named.is_absolute() ? named : folder / named).lexically_normal();
+    const std::filesystem::path path = resolveScenePath(scene, file);
     Diagnostics diagnostics;
     if (!loadSkyImage(path, files, scene.file.string(), "/environment/sky/file", diagnostics)) {
         error = diagnostics.items.empty() ? "the sky image did not load"

@@ -2,6 +2,7 @@
 #include "editor/material_texture_edits.hpp"
 
 #include "scene/material_textures.hpp"
+#include "scene/scene_paths.hpp"
 
 namespace rmsc::editor {
 namespace {
@@ -48,12 +49,7 @@ bool setMaterialTextureFile(Scene& scene, int materialIndex, TextureSlot slot,
         material.*info.member = texture;
         return true;
     }
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path folder =
-        scene.file.empty() ? fs::current_path(ec) : fs::absolute(scene.file, ec).parent_path();
-    const fs::path named(file);
-    texture.path = (named.is_absolute() ? named : folder / named).lexically_normal();
+    texture.path = resolveScenePath(scene, file);
     texture.file = scene.file.empty() ? texture.path.generic_string() : file;
     texture.pointer = "/materials/" + material.name + "/" + info.key + "/file";
     texture.image = -1;

@@ -2,6 +2,7 @@
 #include "editor/mesh_file_edits.hpp"
 
 #include "scene/mesh_asset.hpp"
+#include "scene/scene_paths.hpp"
 
 namespace rmsc::editor {
 
@@ -15,12 +16,7 @@ bool setMeshFile(Scene& scene, int mesh, const std::string& file, const FileSour
         error = "expected the path of a .gltf or .glb file, got \"\"";
         return false;
     }
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path folder =
-        scene.file.empty() ? fs::current_path(ec) : fs::absolute(scene.file, ec).parent_path();
-    const fs::path named(file);
-    const fs::path path = (named.is_absolute() ? named : folder / named).lexically_normal();
+    const std::filesystem::path path = resolveScenePath(scene, file);
     Diagnostics diagnostics;
     if (!loadGltf(path, files, diagnostics)) {
         error = "\"" + file + "\" does not load: ";

@@ -42,4 +42,13 @@ void rebaseScenePaths(Scene& scene, const std::filesystem::path& folder) {
     });
 }
 
+std::filesystem::path resolveScenePath(const Scene& scene, const std::string& file) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path folder =
+        scene.file.empty() ? fs::current_path(ec) : fs::absolute(scene.file, ec).parent_path();
+    const fs::path named(file);
+    return (named.is_absolute() ? named : folder / named).lexically_normal();
+}
+
 } // namespace rmsc

@@ -24,6 +24,10 @@ struct ScenePath {
 // sky image, the shells' proxy meshes. Paths of absent textures and non-image skies are skipped.
 void forEachScenePath(Scene& scene, const std::function<void(const ScenePath&)>& visit);
 
+// The file that `file`, written in `scene`, names: relative to the scene file's folder (the
+// working folder for a scene not saved yet), normalised; an absolute one as it is.
+std::filesystem::path resolveScenePath(const Scene& scene, const std::string& file);
+
 // Rewrites the written `file` of every path so that, read from a scene file in `folder`, it
 // names the same file as before: relative files become relative to `folder`; absolute ones stay.
 void rebaseScenePaths(Scene& scene, const std::filesystem::path& folder);
