@@ -124,6 +124,11 @@ glm::vec3 hdrAt(const Pixels<float>& hdr, glm::ivec2 pixel) {
     return {c[0], c[1], c[2]};
 }
 
+// The colour targets are RGBA16F: one step of a half float between 1 and 2 (11 bits). The
+// comparisons below measured 0 on llvmpipe (the unlit colour 3.9e-4: 0.6 rounded to a half);
+// the bound allows one rounding another driver may do differently.
+constexpr float kHalfFloatStep = 1.0f / 1024.0f;
+
 void expectColorNear(glm::vec3 actual, glm::vec3 expected, float tolerance,
                      const std::string& what) {
     EXPECT_NEAR(actual.x, expected.x, tolerance) << what;
@@ -162,7 +167,7 @@ TEST(GltfFeatures, VertexColorMultipliesTheBaseColor) {
          {glm::vec3(0, 0, 0), glm::vec3(-0.6f, 0.5f, 0), glm::vec3(0.7f, -0.7f, 0)}) {
         const glm::ivec2 pixel = pixelOf(colored, p);
         const glm::vec3 c = hdrAt(x, pixel);
-        expectColorNear(c, hdrAt(y, pixel), 2e-3f, "vertex colour");
+        expectColorNear(c, hdrAt(y, pixel), kHalfFloatStep, "vertex colour");
         EXPECT_GT(c.x, 1.5f * c.y) << "green was not multiplied by 0.25";
     }
     expectNoGlErrors();
@@ -269,12 +274,11 @@ TEST(GltfFeatures, BlendPanesCompositeOverAnSdfObjectBackToFront) {
     ASSERT_GT(s.y, 0.1f) << "the sphere is not there to be seen";
     const glm::vec3 overB = 0.5f * glm::vec3(0, 0, 1) + 0.5f * s;
     const glm::vec3 expected = 0.25f * glm::vec3(1, 0, 0) + 0.75f * overB;
-    // RGBA16F targets: 11 bits of mantissa.
-    expectColorNear(hdrAt(through, centre), expected, 4e-3f, "A over (B over the sphere)");
+    expectColorNear(hdrAt(through, centre), expected, kHalfFloatStep, "A over (B over the sphere)");
     // Only pane B (0.6 wide) covers this pixel: B over the background (black).
     const glm::ivec2 edge = pixelOf(glass, {0.5f, 0, 0});
     expectColorNear(hdrAt(through, edge), 0.5f * glm::vec3(0, 0, 1) + 0.5f * hdrAt(behind, edge),
-                    4e-3f, "B over the background");
+                    kHalfFloatStep, "B over the background");
     // The panes write no depth and no id: the AOVs show the sphere.
     EXPECT_EQ(readObjectIds(glassTargets).at(centre.x, centre.y)[0],
               readObjectIds(behindTargets).at(centre.x, centre.y)[0]);
@@ -318,7 +322,7 @@ TEST(GltfFeatures, TextureTransformMovesTheTexture) {
                 continue;
             const int tx = int(std::floor(t.x)) & 1, ty = int(std::floor(t.y)) & 1;
             const glm::vec3 c = hdrAt(hdr, pixelOf(prepared, {x, y, 0}));
-            expectColorNear(c, palette[ty * 2 + tx], 0.02f,
+            expectColorNear(c, palette[ty * 2 + tx], kHalfFloatStep,
                             "at x " + std::to_string(x) + " y " + std::to_string(y));
             ++checked;
         }
@@ -340,7 +344,8 @@ TEST(GltfFeatures, UnlitShowsTheBaseColorUnderAnyLight) {
     const Pixels<float> hdr = readHdrColor(renderPrepared(prepared, kWidth, kHeight));
     const Pixels<float> litHdr = readHdrColor(renderPrepared(lit, kWidth, kHeight));
     for (const glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(0.8f, 0.8f, 0)})
-        expectColorNear(hdrAt(hdr, pixelOf(prepared, p)), {0.2f, 0.4f, 0.6f}, 1e-3f, "unlit");
+        expectColorNear(hdrAt(hdr, pixelOf(prepared, p)), {0.2f, 0.4f, 0.6f}, kHalfFloatStep,
+                        "unlit");
     EXPECT_GT(hdrAt(litHdr, pixelOf(lit, {0, 0, 0})).z, 0.8f) << "lighting would change it";
     expectNoGlErrors();
 }
