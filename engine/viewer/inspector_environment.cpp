@@ -14,13 +14,6 @@
 namespace rmsc::app {
 namespace {
 
-bool dragFloat(const char* label, float& value, float step, const ParamRange& range,
-               const char* format) {
-    const editor::FloatFieldRange r = editor::floatFieldRange(range);
-    return ImGui::DragFloat(label, &value, step, r.min, r.max, format,
-                            ImGuiSliderFlags_AlwaysClamp);
-}
-
 // The sky type combo; an image sky without a file is refused (then the file field shows).
 void chooseSkyType(editor::Document& document, EnvironmentFields& fields) {
     const char* names[] = {"none", "constant", "gradient", "image"};
@@ -90,11 +83,13 @@ void drawEnvironmentInspector(editor::Document& document, EnvironmentFields& fie
     }
     if (env.sky == SkyType::Image || fields.choosingImage) drawSkyImage(document, fields);
     if (env.sky == SkyType::Image) {
-        changed |= dragFloat("rotation", env.rotationDegrees, 0.5f, kSkyRotationRange, "%.1f°");
+        changed |=
+            dragFloatInRange("rotation", env.rotationDegrees, 0.5f, kSkyRotationRange, "%.1f°");
         helpTooltip("Turns the image about +Y, degrees.");
     }
     if (env.sky != SkyType::None) {
-        changed |= dragFloat("intensity", env.intensity, 0.01f, kEnvironmentIntensityRange, "%.2f");
+        changed |=
+            dragFloatInRange("intensity", env.intensity, 0.01f, kEnvironmentIntensityRange, "%.2f");
         helpTooltip("Multiplies the sky, as background and as light.");
     }
     bool fog = env.fogDensity > 0.0f;
@@ -105,7 +100,7 @@ void drawEnvironmentInspector(editor::Document& document, EnvironmentFields& fie
     helpTooltip("Exponential fog: a surface d metres away keeps exp(-density d) of its colour, "
                 "the rest is the fog colour. The sky is not fogged.");
     if (fog) {
-        changed |= dragFloat("density", env.fogDensity, 0.001f, kFogDensityRange, "%.3f");
+        changed |= dragFloatInRange("density", env.fogDensity, 0.001f, kFogDensityRange, "%.3f");
         changed |= editColor("fog colour", env.fogColor);
     }
     ImGui::PopID();

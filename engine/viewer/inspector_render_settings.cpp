@@ -12,13 +12,6 @@
 namespace rmsc::app {
 namespace {
 
-bool dragFloat(const char* label, float& value, float step, const ParamRange& range,
-               const char* format) {
-    const editor::FloatFieldRange r = editor::floatFieldRange(range);
-    return ImGui::DragFloat(label, &value, step, r.min, r.max, format,
-                            ImGuiSliderFlags_AlwaysClamp);
-}
-
 bool dragInt(const char* label, int& value, const ParamRange& range) {
     const editor::IntFieldRange r = editor::intFieldRange(range);
     return ImGui::DragInt(label, &value, 1.0f, r.min, r.max, "%d", ImGuiSliderFlags_AlwaysClamp);
@@ -28,25 +21,27 @@ bool drawShadows(ShadowSettings& s) {
     bool changed = ImGui::Checkbox("shadows", &s.enabled);
     if (!s.enabled) return changed;
     changed |= dragInt("shadow steps", s.steps, kShadowStepsRange);
-    changed |= dragFloat("shadow softness", s.softness, 0.001f, kShadowSoftnessRange, "%.3f");
     changed |=
-        dragFloat("shadow min distance", s.minDistance, 0.001f, kShadowMinDistanceRange, "%.4f");
-    changed |=
-        dragFloat("shadow max distance", s.maxDistance, 0.5f, kShadowMaxDistanceRange, "%.1f");
+        dragFloatInRange("shadow softness", s.softness, 0.001f, kShadowSoftnessRange, "%.3f");
+    changed |= dragFloatInRange("shadow min distance", s.minDistance, 0.001f,
+                                kShadowMinDistanceRange, "%.4f");
+    changed |= dragFloatInRange("shadow max distance", s.maxDistance, 0.5f, kShadowMaxDistanceRange,
+                                "%.1f");
     if (!(s.maxDistance > s.minDistance)) s.maxDistance = s.minDistance * 2.0f; // reader's rule
     changed |= dragInt("shadow map size", s.mapSize, kShadowMapSizeRange);
     changed |= dragInt("shadow PCF radius", s.pcfRadius, kShadowPcfRadiusRange);
+    changed |= dragFloatInRange("shadow normal offset", s.normalOffset, 0.01f,
+                                kShadowNormalOffsetRange, "%.2f");
     changed |=
-        dragFloat("shadow normal offset", s.normalOffset, 0.01f, kShadowNormalOffsetRange, "%.2f");
-    changed |= dragFloat("shadow slope bias", s.slopeBias, 0.01f, kShadowSlopeBiasRange, "%.2f");
+        dragFloatInRange("shadow slope bias", s.slopeBias, 0.01f, kShadowSlopeBiasRange, "%.2f");
     return changed;
 }
 
 bool drawAo(AoSettings& ao) {
     bool changed = dragInt("AO samples", ao.samples, kAoSamplesRange);
     if (ao.samples == 0) return changed;
-    changed |= dragFloat("AO distance", ao.distance, 0.005f, kAoDistanceRange, "%.3f");
-    changed |= dragFloat("AO strength", ao.strength, 0.01f, kAoStrengthRange, "%.2f");
+    changed |= dragFloatInRange("AO distance", ao.distance, 0.005f, kAoDistanceRange, "%.3f");
+    changed |= dragFloatInRange("AO strength", ao.strength, 0.01f, kAoStrengthRange, "%.2f");
     return changed;
 }
 

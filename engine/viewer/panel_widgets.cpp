@@ -2,6 +2,7 @@
 #include "panel_widgets.hpp"
 
 #include "core/srgb.hpp"
+#include "editor/param_fields.hpp"
 
 #include <imgui.h>
 
@@ -14,6 +15,13 @@ namespace rmsc::app {
 void helpTooltip(std::string_view text) {
     if (!text.empty() && ImGui::IsItemHovered())
         ImGui::SetTooltip("%.*s", int(text.size()), text.data());
+}
+
+bool dragFloatInRange(const char* label, float& value, float step, const ParamRange& range,
+                      const char* format) {
+    const editor::FloatFieldRange r = editor::floatFieldRange(range);
+    return ImGui::DragFloat(label, &value, step, r.min, r.max, format,
+                            ImGuiSliderFlags_AlwaysClamp);
 }
 
 float stepFor(float size) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scene/scene.hpp"
+#include "sdf/param_spec.hpp"
 #include "viewer_commands.hpp"
 
 #include <glm/glm.hpp>
@@ -22,6 +23,10 @@ bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float
 // code are those a scene file's "#rrggbb" gives; `flags` are ImGuiColorEditFlags. Returns true
 // when it changed.
 bool editColor(const char* label, glm::vec3& linear, int flags = 0);
+// A drag field for a number of a catalogue row (sdf/param_spec.hpp ParamRange), clamped to what the
+// reader accepts (editor/param_fields.hpp). Returns true when it changed.
+bool dragFloatInRange(const char* label, float& value, float step, const ParamRange& range,
+                      const char* format);
 // Duplicate and Delete, side by side.
 void drawDuplicateDeleteButtons(ViewerCommands& commands);
 
