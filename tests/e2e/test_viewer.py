@@ -87,6 +87,15 @@ def marker_pixels(shot, centre, radius=14):
     return count
 
 
+def run_viewer(xvfb_run, rmsc, scene, script, size="640x360", tail=2000):
+    """Runs `rmsc view SCENE --script SCRIPT` under Xvfb and prints the end of its log."""
+    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script",
+               script, "--size", size, "--embedded-shaders"]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
+    print(run.stderr[-tail:])
+    return run
+
+
 def create_run(rmsc, source, tmp, xvfb_run, check):
     """The second run (tests/e2e/viewer_create_script.txt): lights, a revolution, a group."""
     folder = os.path.join(tmp, "create")
@@ -96,10 +105,7 @@ def create_run(rmsc, source, tmp, xvfb_run, check):
     script = os.path.join(folder, "script.txt")
     text = open(os.path.join(source, "tests/e2e/viewer_create_script.txt")).read()
     open(script, "w").write(text.replace("OUT/", folder + "/"))
-    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script", script,
-               "--size", "640x360", "--embedded-shaders"]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
-    print(run.stderr[-2000:])
+    run = run_viewer(xvfb_run, rmsc, scene, script)
     check("second run: viewer exits 0", run.returncode == 0, run.returncode)
     keep = os.environ.get("RMSC_E2E_KEEP")  # a folder to copy the run's files to, for a look
     if keep:
@@ -167,10 +173,7 @@ def refuse_run(rmsc, source, tmp, xvfb_run, check):
     script = os.path.join(folder, "script.txt")
     text = open(os.path.join(source, "tests/e2e/viewer_refuse_script.txt")).read()
     open(script, "w").write(text.replace("OUT/", folder + "/"))
-    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script", script,
-               "--size", "640x360", "--embedded-shaders"]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
-    print(run.stderr[-2000:])
+    run = run_viewer(xvfb_run, rmsc, scene, script)
     check("third run: viewer exits 0", run.returncode == 0, run.returncode)
     refusal = re.search(r"rmsc view: save failed: the scene is not valid, so nothing was written"
                         r".*\n/sdf: every child of the group is marked \"cut\"", run.stderr)
@@ -210,10 +213,7 @@ def large_scene_run(rmsc, source, tmp, xvfb_run, check):
     original = json.load(open(scene))
     script = os.path.join(folder, "script.txt")
     shutil.copy(os.path.join(source, "tests/e2e/viewer_large_script.txt"), script)
-    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script", script,
-               "--size", "480x300", "--embedded-shaders"]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
-    print(run.stderr[-2000:])
+    run = run_viewer(xvfb_run, rmsc, scene, script, "480x300")
     check("fourth run: viewer exits 0", run.returncode == 0, run.returncode)
     check("the 10,000-shape grid is drawn with the cells map",
           re.search(r"frame \d+: drawing with the cells map", run.stderr) is not None, run.stderr[-2000:])
@@ -261,10 +261,7 @@ def main():
         script = os.path.join(tmp, "script.txt")
         text = open(os.path.join(source, "tests/e2e/viewer_script.txt")).read()
         open(script, "w").write(text.replace("OUT/", tmp + "/"))
-        command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script",
-                   script, "--size", "640x360", "--embedded-shaders"]
-        run = subprocess.run(command, capture_output=True, text=True, timeout=540)
-        print(run.stderr[-3000:])
+        run = run_viewer(xvfb_run, rmsc, scene, script, tail=3000)
         if run.returncode != 0 and "cannot open a window" in run.stderr and "Xvfb" in run.stderr:
             print("SKIP: Xvfb could not start")
             return SKIP
