@@ -15,6 +15,9 @@ const OptionSpec kOptions[] = {
      "frame time the adaptive resolution holds while the camera moves (default 33)"},
     {"--script", nullptr, "FILE",
      "replay input events from FILE instead of the keyboard and mouse (for tests)"},
+    {"--stats", nullptr, nullptr,
+     "log, for each change, the UI frame times until the view is refined and the time from the "
+     "last input to the refined image; and all frames' times at exit"},
     {"--embedded-shaders", nullptr, nullptr,
      "use the shaders built into the binary; do not watch the source shaders folder"},
     kSandboxOption,
@@ -26,7 +29,7 @@ const CommandSpec kViewSpec = {
     "view",
     "[SCENE]",
     "open the viewer and scene editor in a window",
-    "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--script FILE] [--sandbox DIR]",
+    "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--script FILE] [--stats] [--sandbox DIR]",
     "Opens SCENE (a .json scene, or a .gltf/.glb model; without SCENE, the built-in demo) in a\n"
     "window with an editor: fly with right mouse + W/A/S/D, Q/E roll, Space / Left Shift up and\n"
     "down, the wheel sets the speed, Shift is fast; Alt + drag orbits the selection, F frames it.\n"
@@ -57,6 +60,7 @@ int runView(const ParsedArgs& args) {
     }
     options.script = args.get("--script", "");
     options.watchShaders = !args.has("--embedded-shaders");
+    options.stats = args.has("--stats");
     if (!args.positionals.empty()) options.scene = args.positionals[0];
     return runViewer(options);
 }

@@ -6,24 +6,16 @@
 
 namespace rmsc::editor {
 
-float AdaptiveScale::next(bool viewChanged, float lastMilliseconds, float lastScale) {
+float AdaptiveScale::next(float lastMilliseconds, float lastScale, float budgetMilliseconds) {
     if (!enabled) {
         scale = 1.0f;
         return scale;
     }
-    stillFrames = viewChanged ? 0 : stillFrames + 1;
-    if (stillFrames > 2) {
-        scale = 1.0f; // refine: the view is still
-        return scale;
-    }
-    if (lastMilliseconds > 0.0f && lastScale > 0.0f) {
-        // Cost grows with the pixel count, i.e. with scale squared: aim the area at the target.
-        const float wanted = lastScale * std::sqrt(targetMilliseconds / lastMilliseconds);
-        // Move part of the way each frame so noise in the timing does not make it flicker.
-        float s = std::clamp(0.5f * (scale + wanted), minScale, 1.0f);
-        if (stillFrames == 0 && lastScale >= 1.0f && lastMilliseconds <= targetMilliseconds)
-            s = 1.0f;
-        scale = std::clamp(std::round(s * 16.0f) / 16.0f, minScale, 1.0f);
+    if (lastMilliseconds > 0.0f && lastScale > 0.0f && budgetMilliseconds > 0.0f) {
+        const float wanted = lastScale * std::sqrt(budgetMilliseconds / lastMilliseconds);
+        const float s = wanted < scale ? wanted : 0.5f * (scale + wanted);
+        // Rounded down, so a quantized scale does not overshoot the budget.
+        scale = std::clamp(std::floor(s * 16.0f) / 16.0f, minScale, 1.0f);
     }
     return scale;
 }

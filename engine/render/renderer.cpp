@@ -112,8 +112,20 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     return true;
 }
 
+namespace {
+
+// Limits what the following draws and clears touch to rows [begin, end) of a target of `width`
+// pixels; everything when `rows` is null.
+void limitRows(const RenderRows* rows, int begin, int end, int width) {
+    if (!rows) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, begin, width, std::max(0, end - begin));
+}
+
+} // namespace
+
 void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderSettings& settings,
-                      FrameTargets& targets) {
+                      FrameTargets& targets, const RenderRows* rows) {
     std::string error;
     if (!prepare(scene, error)) throw std::runtime_error("the SDF shaders do not build: " + error);
     const SdfPasses& sdf = sdfPasses_.find(scene.sdfMap)->second;
@@ -143,15 +155,20 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     glNamedBufferSubData(statistics_.id(), 0, sizeof zeros, zeros);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchStatisticsBinding, statistics_.id());
 
+    glDisable(GL_SCISSOR_TEST);
     timed(Pass::Shadow, [&] { shadow_.draw(scene, shells); });
     glBindTextureUnit(kShadowMapUnit, shadow_.maps().id());
     glBindTextureUnit(kSkyImageUnit, scene.skyImage.id());
+    if (rows) limitRows(rows, rows->begin, rows->end, width);
     timed(Pass::Raster, [&] { sdf.raster.draw(scene, settings.background, targets.raster); });
     timed(Pass::Shell, [&] {
         for (std::size_t i = 0; i < shells.size(); ++i)
             shells[i]->draw(scene.shells[i], frameCamera.viewProjection, targets.raster);
     });
     const ConePass& cone = countEvaluations_ ? *sdf.countingCone : sdf.cone;
+    if (rows)
+        limitRows(rows, rows->begin / kConeTileSize,
+                  (rows->end + kConeTileSize - 1) / kConeTileSize, targets.cone.width);
     timed(Pass::Cone, [&] {
         if (conePass_)
             cone.draw(targets.cone);
@@ -159,13 +176,16 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
             targets.cone.clear();
     });
     const MarchPass& march = countEvaluations_ ? *sdf.countingMarch : sdf.march;
+    if (rows) limitRows(rows, rows->begin, rows->end, width);
     timed(Pass::March, [&] { march.draw(targets.raster, targets.cone, targets.combined); });
     timed(Pass::Grid, [&] {
         if (groundGrid_) grid_.draw(targets.combined);
     });
     // BLEND surfaces over everything the march finished (SDF objects behind glass show).
     timed(Pass::Blend, [&] { sdf.raster.drawBlended(scene, frameCamera, targets.combined); });
+    if (rows) limitRows(rows, rows->postBegin, rows->postEnd, width);
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
+    glDisable(GL_SCISSOR_TEST);
     glBindTextureUnit(kShadowMapUnit, 0);
     glBindTextureUnit(kSkyImageUnit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

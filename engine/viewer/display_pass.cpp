@@ -1,6 +1,8 @@
 // The viewer's display pass (see display_pass.hpp).
 #include "display_pass.hpp"
 
+#include <algorithm>
+
 namespace rmsc::app {
 
 std::optional<DisplayPass> DisplayPass::create(const ShaderFiles& files, std::string& error) {
@@ -23,7 +25,12 @@ void DisplayPass::draw(const DisplayInput& input) const {
     glViewport(input.x, input.y, input.width, input.height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
+    if (input.rows >= 0) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(input.x, input.y, input.width, std::min(input.rows, input.height));
+    } else {
+        glDisable(GL_SCISSOR_TEST);
+    }
     glDisable(GL_CULL_FACE);
     glUseProgram(program_.id());
     glProgramUniform1i(program_.id(), mode_, int(input.mode));
@@ -41,6 +48,7 @@ void DisplayPass::draw(const DisplayInput& input) const {
     for (GLuint unit = 0; unit < 4; ++unit)
         glBindTextureUnit(unit, 0);
     glUseProgram(0);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 } // namespace rmsc::app

@@ -1,6 +1,7 @@
 // The viewer's display pass: draws the last rendered frame into the window's viewport
-// rectangle (scaling it up when it was rendered at a lower resolution), as colour, normals,
-// depth or object ids, with the selection outlined. Program: shaders/passes/viewer_display.*.
+// rectangle (scaling it up when it was rendered at a lower resolution), or only its bottom rows,
+// as colour, normals, depth or object ids, with the selection outlined. Program:
+// shaders/passes/viewer_display.*.
 #pragma once
 
 #include "gl/program.hpp"
@@ -20,6 +21,7 @@ struct DisplayInput {
     float nearPlane = 0.05f, farPlane = 200.0f;
     int maxSteps = 256;                      // the march-steps heatmap reaches red here
     int x = 0, y = 0, width = 1, height = 1; // viewport in framebuffer pixels, y from the bottom
+    int rows = -1; // draw only the viewport's bottom `rows` rows (a partly refined frame); -1: all
 };
 
 class DisplayPass {

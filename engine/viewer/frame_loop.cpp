@@ -41,14 +41,14 @@ int Viewer::run() {
         std::fprintf(stderr, "rmsc view: %s\n", messages_.shaderError.c_str());
         return kExitSystem;
     }
-    if (!script_) attachGlfwInput(window_->handle(), &input_);
+    if (!script_) attachGlfwInput(window_->handle(), &queue_);
     // Scripted runs (tests) never see a recovery prompt, so they replay the same everywhere.
     dialogs_.askRecover = dialogs_.offeredRecovery.has_value() && !script_;
     int failures = 0;
     auto previous = std::chrono::steady_clock::now();
     while (!dialogs_.quitNow) {
+        const ScriptActions actions = readInput(); // may wait for input when idle
         const auto frameStart = std::chrono::steady_clock::now();
-        const ScriptActions actions = readInput();
         const auto nowTime = std::chrono::steady_clock::now();
         const float seconds =
             script_ ? 1.0f / 30.0f
@@ -67,7 +67,11 @@ int Viewer::run() {
         drawUi();
         commitFinishedEdits();
         pollFiles();
-        updateView(actions.waitShaders);
+        const auto viewStart = std::chrono::steady_clock::now();
+        updateView(actions.waitShaders, !actions.windowShots.empty());
+        viewMilliseconds_ =
+            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - viewStart)
+                .count();
 
         ImGui::Render();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -80,13 +84,26 @@ int Viewer::run() {
         frameMilliseconds_ =
             std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - frameStart)
                 .count();
+        if (const std::optional<std::string> line =
+                recordFrame(stats_, gpu_.status(), frameNumber_, frameMilliseconds_,
+                            view_.adaptive.targetMilliseconds, glfwGetTime(), lastInput_);
+            line && options_.stats)
+            std::fprintf(stderr, "rmsc view: %s\n", line->c_str());
         ++frameNumber_;
-        if (script_ && !dialogs_.quitNow && frameNumber_ > script_->lastFrame() + 30) {
+        if (script_ && !dialogs_.quitNow && queue_.empty() &&
+            scriptFrame_ > script_->lastFrame() + 30) {
             std::fprintf(stderr, "rmsc view: the script ended without the viewer quitting%s\n",
                          session_.document.dirty() ? " (unsaved changes)" : "");
             return kExitSystem;
         }
+        if (scriptHoldFrames_ > 5000) {
+            std::fprintf(stderr, "rmsc view: the view was not refined in 5000 frames\n");
+            return kExitSystem;
+        }
     }
+    if (options_.stats)
+        std::fprintf(stderr, "rmsc view: %s\n",
+                     frameSummary(stats_, view_.adaptive.targetMilliseconds).c_str());
     if (!session_.document.dirty())
         editor::removeRecovery(session_.document.file()); // closed cleanly
     return failures ? kExitSystem : kExitOk;
@@ -94,15 +111,27 @@ int Viewer::run() {
 
 ScriptActions Viewer::readInput() {
     input_.beginFrame();
-    ScriptActions actions;
     if (script_) {
         glfwPollEvents();
-        actions = playScriptFrame(*script_, frameNumber_, input_);
-    } else if (gpu_.refined(view_.adaptive) && !ImGui::IsAnyItemActive() && !gesture_.active) {
+        if (scriptHoldFrames_ >= 0 && gpu_.refined()) scriptHoldFrames_ = -1;
+        if (scriptHoldFrames_ >= 0)
+            ++scriptHoldFrames_;
+        else
+            playScriptFrame(*script_, scriptFrame_++, glfwGetTime(), queue_, scriptMods_);
+    } else if (queue_.empty() && gpu_.refined() && !ImGui::IsAnyItemActive() && !gesture_.active) {
         glfwWaitEventsTimeout(0.25); // idle: wake for input or the file poll
     } else {
         glfwPollEvents();
     }
+    std::vector<editor::InputEvent> taken;
+    if (scriptHoldFrames_ < 0) taken = queue_.takeFrame();
+    for (const editor::InputEvent& e : taken) {
+        input_.apply(e);
+        if (e.kind != editor::InputEvent::Kind::Marker) lastInput_ = std::max(lastInput_, e.time);
+    }
+    ScriptActions actions;
+    if (script_) actions = scriptActions(*script_, taken);
+    if (actions.waitRefined) scriptHoldFrames_ = 0;
     input_.finishEvents();
     if (window_->shouldClose()) {
         window_->setShouldClose(false);
@@ -157,15 +186,27 @@ void Viewer::pollFiles() {
     if (!shaderWatcher_.path().empty() && shaderWatcher_.changed()) loadShaders(false);
 }
 
-void Viewer::updateView(bool waitForBuilds) {
+void Viewer::updateView(bool waitForBuilds, bool refineAll) {
     const editor::Document& document = session_.document;
+    const auto sceneStart = std::chrono::steady_clock::now();
     gpu_.updateScene(document.scene(), document.revision(), messages_.sceneError);
     gpu_.chooseSdfMap(document.scene(), document.selection, waitForBuilds, frameNumber_,
                       messages_.sceneError);
+    if (!waitForBuilds)
+        recordSceneWork(
+            stats_, frameNumber_,
+            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - sceneStart)
+                .count());
     int ww = 0, wh = 0, fw = 0, fh = 0;
     window_->windowSize(ww, wh);
     window_->framebufferSize(fw, fh);
-    gpu_.render(viewInput(), viewportPixels(layout_.viewport, ww, wh, fw, fh), view_.adaptive);
+    // What the frame leaves for rendering the view: the target less what the rest of the last
+    // frame took (the panels, the display, the swap), at least a quarter of the target.
+    const float target = view_.adaptive.targetMilliseconds;
+    const float rest = std::max(0.0f, frameMilliseconds_ - viewMilliseconds_);
+    const float budget = std::clamp(target - rest, 0.25f * target, target);
+    gpu_.render(viewInput(), viewportPixels(layout_.viewport, ww, wh, fw, fh), view_.adaptive,
+                budget, refineAll);
 }
 
 int Viewer::writeScriptShots(const ScriptActions& actions) {

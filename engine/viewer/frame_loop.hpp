@@ -1,5 +1,6 @@
 // The viewer (`rmsc view`, started by runViewer in viewer/viewer.hpp): owns the window and the
-// parts, and runs the frame loop. A frame reads the input (real or replayed), runs the shortcuts,
+// parts, and runs the frame loop. A frame takes its events from the input queue (real or
+// replayed input, editor/input_queue.hpp), runs the shortcuts,
 // gestures and camera, draws the menus, panels, overlay and dialogs (carrying out the commands
 // each queues right after it), commits finished edits, looks at the files, hands the scene to
 // the GPU side and draws the view; then writes the screenshots a replay script asks for.
@@ -8,7 +9,9 @@
 #include "camera_controls.hpp"
 #include "dialogs.hpp"
 #include "editor/file_watcher.hpp"
+#include "editor/input_queue.hpp"
 #include "editor_session.hpp"
+#include "frame_stats.hpp"
 #include "gesture_controls.hpp"
 #include "input_state.hpp"
 #include "inspector.hpp"
@@ -45,9 +48,10 @@ class Viewer {
     void drawUi();                   // the menus, panels, overlay and dialogs
     // Carries out the commands the part that just ran queued, and clears them.
     void carryOut(ViewerCommands& commands);
-    void commitFinishedEdits();          // once no widget or gesture is changing the scene
-    void pollFiles();                    // recovery file, scene file and shaders, every second
-    void updateView(bool waitForBuilds); // the scene to the GPU, the SDF map, the view
+    void commitFinishedEdits(); // once no widget or gesture is changing the scene
+    void pollFiles();           // recovery file, scene file and shaders, every second
+    // The scene to the GPU, the SDF map, the view (the whole of it now with `refineAll`).
+    void updateView(bool waitForBuilds, bool refineAll);
     int writeScriptShots(const ScriptActions& actions); // returns how many failed
     bool loadShaders(bool initial);
     ViewInput viewInput() const; // what the view shows this frame
@@ -57,9 +61,16 @@ class Viewer {
     const ViewerOptions options_;
     std::unique_ptr<Window> window_;
     std::optional<Script> script_;
+    editor::InputQueue queue_; // every input event not yet taken by a frame
     InputState input_;
+    double lastInput_ = 0.0;    // when the newest input event taken arrived (glfwGetTime)
+    int scriptFrame_ = 0;       // the replay script's frame: stops while it waits for refining
+    int scriptMods_ = 0;        // the modifiers the script holds
+    int scriptHoldFrames_ = -1; // frames the script has waited for refining; -1: not waiting
     int frameNumber_ = 0;
     float frameMilliseconds_ = 0.0f;
+    float viewMilliseconds_ = 0.0f; // of the last frame spent in updateView
+    FrameStats stats_;
     std::chrono::steady_clock::time_point start_;
     double lastPoll_ = 0.0; // when the files were last looked at
 

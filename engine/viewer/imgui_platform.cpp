@@ -55,7 +55,7 @@ void feedImGui(const InputState& input, int windowWidth, int windowHeight, int f
     io.KeyCtrl = input.ctrl();
     io.KeyShift = input.shift();
     io.KeyAlt = input.alt();
-    io.KeySuper = input.held(GLFW_KEY_LEFT_SUPER) || input.held(GLFW_KEY_RIGHT_SUPER);
+    io.KeySuper = input.super();
     for (unsigned c : input.characters)
         io.AddInputCharacter(c);
 }

@@ -9,7 +9,8 @@ namespace rmsc::app {
 
 // Names the platform back end and sets the key map; once, after ImGui::CreateContext.
 void setupImGuiInput();
-// This frame's display size, time step, mouse, keys and characters.
+// This frame's display size, time step, mouse, keys, modifiers (those of the frame's events)
+// and characters.
 void feedImGui(const InputState& input, int windowWidth, int windowHeight, int framebufferWidth,
                int framebufferHeight, float seconds);
 // The panels do not want the keyboard and Ctrl is up: plain keys are the view's (camera,

@@ -1,6 +1,7 @@
-// The viewer's input, in one place: the keys and buttons held, the mouse position, the wheel
-// and typed characters of this frame. Filled from GLFW callbacks when a person drives the
-// viewer, or from a replay script (replay_script.hpp); then handed to Dear ImGui
+// The viewer's input, in one place: the keys and buttons held, the modifiers, the mouse
+// position, the wheel and typed characters of this frame. GLFW callbacks (a person driving the
+// viewer) or a replay script (replay_script.hpp) queue every transition (editor/input_queue.hpp);
+// each frame applies the events the queue hands out for it, then hands the state to Dear ImGui
 // (imgui_platform.hpp) and to the camera and editor shortcuts, so scripted and real input take
 // exactly the same path.
 #pragma once
@@ -8,6 +9,8 @@
 #define GLFW_INCLUDE_NONE // GL comes from glad (gl/gl.hpp), whichever header is included first
 #include <GLFW/glfw3.h>
 #include <glm/glm.hpp>
+
+#include "editor/input_queue.hpp"
 
 #include <array>
 #include <vector>
@@ -18,6 +21,7 @@ struct InputState {
     std::array<bool, GLFW_KEY_LAST + 1> keys{};
     std::array<bool, 3> buttons{}; // left, right, middle
     glm::vec2 mouse{0.0f};         // window pixels, top-left origin
+    int mods = 0; // editor::InputModifier bits of this frame's events (held at the last one)
     // Per frame (cleared by beginFrame):
     float wheel = 0.0f;
     std::vector<unsigned> characters;
@@ -31,19 +35,27 @@ struct InputState {
     void keyEvent(int key, bool down);
     void buttonEvent(int button, bool down);
     void moveMouse(glm::vec2 position);
+    void apply(const editor::InputEvent& event); // one event the queue handed out (not a marker)
 
     bool held(int key) const { return key >= 0 && key <= GLFW_KEY_LAST && keys[std::size_t(key)]; }
     bool pressed(int key) const;
-    bool ctrl() const { return held(GLFW_KEY_LEFT_CONTROL) || held(GLFW_KEY_RIGHT_CONTROL); }
-    bool shift() const { return held(GLFW_KEY_LEFT_SHIFT) || held(GLFW_KEY_RIGHT_SHIFT); }
-    bool alt() const { return held(GLFW_KEY_LEFT_ALT) || held(GLFW_KEY_RIGHT_ALT); }
+    bool ctrl() const { return (mods & editor::kModCtrl) != 0; }
+    bool shift() const { return (mods & editor::kModShift) != 0; }
+    bool alt() const { return (mods & editor::kModAlt) != 0; }
+    bool super() const { return (mods & editor::kModSuper) != 0; }
 
   private:
     glm::vec2 lastMouse_{0.0f};
     bool haveLastMouse_ = false;
 };
 
-// Routes a window's GLFW input callbacks into `state` (real input).
-void attachGlfwInput(GLFWwindow* window, InputState* state);
+// The modifier bit of a GLFW modifier key (left or right Shift, Ctrl, Alt, Super), else 0.
+int modifierBit(int key);
+// `mods` after a key event: a modifier key's own bit set while it is down.
+int modsAfterKey(int mods, int key, bool down);
+
+// Queues a window's GLFW input callbacks into `queue` (real input), stamped with glfwGetTime.
+// Call once; the queue must outlive the window's callbacks.
+void attachGlfwInput(GLFWwindow* window, editor::InputQueue* queue);
 
 } // namespace rmsc::app

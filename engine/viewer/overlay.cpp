@@ -44,8 +44,12 @@ void drawStatusOverlay(const Rect& viewport, const ViewStatus& status, float fra
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("overlay", nullptr, kFixed | ImGuiWindowFlags_NoInputs);
     ImGui::Text("frame %.1f ms   render %.1f ms", frameMilliseconds, status.renderMilliseconds);
-    ImGui::Text("render scale %.0f%% (%dx%d)%s", status.renderScale * 100.0f, status.width,
-                status.height, view.adaptive.enabled ? "" : "  adaptive off");
+    if (status.refined)
+        ImGui::Text("render scale 100%% (%dx%d)%s", status.width, status.height,
+                    view.adaptive.enabled ? "" : "  adaptive off");
+    else
+        ImGui::Text("render scale %.0f%% (%dx%d), refining: %d rows", status.renderScale * 100.0f,
+                    status.width, status.height, status.refinedRows);
     const std::string_view map = editor::editingMapName(status.map);
     ImGui::Text("SDF map: %.*s%s%s", int(map.size()), map.data(),
                 status.map == editor::EditingMapKind::Baked && status.selectionLive

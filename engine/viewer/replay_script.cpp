@@ -124,9 +124,11 @@ std::optional<Script> parseScript(const std::string& text, const std::string& fi
                            : verb == "screenshot" ? K::Screenshot
                                                   : K::WindowShot;
             script.events.push_back({frame, kind, 0, {}, rest, lineNumber});
-        } else if (verb == "quit" || verb == "wait-shaders") {
-            script.events.push_back(
-                {frame, verb == "quit" ? K::Quit : K::WaitShaders, 0, {}, {}, lineNumber});
+        } else if (verb == "quit" || verb == "wait-shaders" || verb == "wait-refined") {
+            const K kind = verb == "quit"           ? K::Quit
+                           : verb == "wait-shaders" ? K::WaitShaders
+                                                    : K::WaitRefined;
+            script.events.push_back({frame, kind, 0, {}, {}, lineNumber});
         } else {
             return fail("unknown event '" + verb + "'");
         }
@@ -147,34 +149,62 @@ std::optional<Script> loadScript(const std::filesystem::path& path, std::string&
     return parseScript(text.str(), path.string(), error);
 }
 
-ScriptActions playScriptFrame(const Script& script, int frame, InputState& input) {
-    ScriptActions actions;
+void playScriptFrame(const Script& script, int frame, double time, editor::InputQueue& queue,
+                     int& mods) {
     using K = ScriptEvent::Kind;
-    for (const ScriptEvent& e : script.events) {
+    using E = editor::InputEvent::Kind;
+    for (std::size_t i = 0; i < script.events.size(); ++i) {
+        const ScriptEvent& e = script.events[i];
         if (e.frame != frame) continue;
+        editor::InputEvent event;
+        event.time = time;
         switch (e.kind) {
         case K::KeyDown:
-            input.keyEvent(e.code, true);
-            break;
         case K::KeyUp:
-            input.keyEvent(e.code, false);
+            mods = modsAfterKey(mods, e.code, e.kind == K::KeyDown);
+            event.kind = E::Key;
+            event.code = e.code;
+            event.down = e.kind == K::KeyDown;
             break;
         case K::MouseMove:
-            input.moveMouse(e.value);
+            event.kind = E::Cursor;
+            event.value = e.value;
             break;
         case K::ButtonDown:
-            input.buttonEvent(e.code, true);
-            break;
         case K::ButtonUp:
-            input.buttonEvent(e.code, false);
+            event.kind = E::Button;
+            event.code = e.code;
+            event.down = e.kind == K::ButtonDown;
             break;
         case K::Wheel:
-            input.wheel += e.value.y;
+            event.kind = E::Scroll;
+            event.value = e.value;
             break;
         case K::Text:
-            for (unsigned char c : e.text)
-                input.characters.push_back(c);
+            event.kind = E::Char;
+            event.mods = mods;
+            for (unsigned char c : e.text) {
+                event.code = c;
+                queue.push(event);
+            }
+            continue;
+        default:
+            event.kind = E::Marker;
+            event.code = int(i);
             break;
+        }
+        event.mods = mods;
+        queue.push(event);
+    }
+}
+
+ScriptActions scriptActions(const Script& script, const std::vector<editor::InputEvent>& taken) {
+    ScriptActions actions;
+    using K = ScriptEvent::Kind;
+    for (const editor::InputEvent& marker : taken) {
+        if (marker.kind != editor::InputEvent::Kind::Marker) continue;
+        const ScriptEvent& e = script.events.at(std::size_t(marker.code));
+        switch (e.kind) {
         case K::Screenshot:
             actions.screenshots.push_back(e.text);
             break;
@@ -184,8 +214,13 @@ ScriptActions playScriptFrame(const Script& script, int frame, InputState& input
         case K::WaitShaders:
             actions.waitShaders = true;
             break;
+        case K::WaitRefined:
+            actions.waitRefined = true;
+            break;
         case K::Quit:
             actions.quit = true;
+            break;
+        default:
             break;
         }
     }

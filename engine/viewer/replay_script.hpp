@@ -14,9 +14,14 @@
 //   FRAME window-shot PATH    the whole window with the editor panels, as PNG
 //   FRAME wait-shaders        wait until the shaders being built in the background are built
 //                             and in use (the view is drawn with them from this frame on)
+//   FRAME wait-refined        hold the script until the view is fully refined (its frame
+//                             count stops meanwhile; the viewer draws on)
 //   FRAME quit                close the window (asks when there are unsaved changes)
 //
-// Frames count from 0; events of one frame run in file order before the frame is drawn.
+// Frames count from 0. A frame's events join the viewer's input queue (editor/input_queue.hpp)
+// in file order, as real input does, so one frame takes at most one transition of each key and
+// button: `5 key ctrl+z` and `6 key ctrl+z` undo twice, the second in frames 7 and 8. The other
+// actions run when the queue reaches them, after the input queued before them.
 #pragma once
 
 #include "input_state.hpp"
@@ -41,6 +46,7 @@ struct ScriptEvent {
         Screenshot,
         WindowShot,
         WaitShaders,
+        WaitRefined,
         Quit
     } kind = Kind::Quit;
     int code = 0; // key or button
@@ -64,10 +70,16 @@ struct ScriptActions {
     std::vector<std::string> screenshots;
     std::vector<std::string> windowShots;
     bool waitShaders = false;
+    bool waitRefined = false;
     bool quit = false;
 };
 
-// Applies the events of `frame` to `input` and collects the other actions.
-ScriptActions playScriptFrame(const Script& script, int frame, InputState& input);
+// Queues the events of `frame`, stamped with `time`: input as events, the other actions as
+// markers naming their index in script.events. `mods` carries the modifiers the script holds
+// from one frame to the next.
+void playScriptFrame(const Script& script, int frame, double time, editor::InputQueue& queue,
+                     int& mods);
+// The actions of the markers among `taken` (events the queue handed out).
+ScriptActions scriptActions(const Script& script, const std::vector<editor::InputEvent>& taken);
 
 } // namespace rmsc::app

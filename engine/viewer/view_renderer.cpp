@@ -96,8 +96,18 @@ void ViewRenderer::updateScene(const Scene& scene, std::uint64_t revision,
     sceneChanged_ = true;
 }
 
+namespace {
+
+float millisecondsSince(std::chrono::steady_clock::time_point t0) {
+    return float(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+}
+
+} // namespace
+
 void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
-                          editor::AdaptiveScale& adaptive) {
+                          editor::AdaptiveScale& adaptive, float budgetMilliseconds,
+                          bool refineAll) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, viewport.framebufferWidth, viewport.framebufferHeight);
     glDisable(GL_SCISSOR_TEST);
@@ -106,31 +116,53 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
     if (!renderer_ || !display_ || !gpuScene_) return;
 
     const int vw = viewport.width, vh = viewport.height;
-    const bool sizeChanged =
-        !targets_ || (lastRenderScale_ >= 1.0f &&
-                      (targets_->display.width != vw || targets_->display.height != vh));
-    viewChanged_ = !sameCamera(view.camera, lastRenderedCamera_) ||
-                   lastRenderedRevision_ != view.revision || sizeChanged;
-    const float scale = adaptive.next(viewChanged_, lastRenderMilliseconds_, lastRenderScale_);
-    const int tw = std::max(1, int(std::lround(float(vw) * scale)));
-    const int th = std::max(1, int(std::lround(float(vh) * scale)));
-    const bool needRender = viewChanged_ || scale != lastRenderScale_ || !targets_ ||
-                            targets_->display.width != tw || targets_->display.height != th;
-    if (needRender) {
-        if (!targets_ || targets_->display.width != tw || targets_->display.height != th)
-            targets_ = createFrameTargets(tw, th);
-        const auto t0 = std::chrono::steady_clock::now();
-        renderer_->render(*gpuScene_, view.camera, view.scene->render, *targets_);
-        glFinish();
-        lastRenderMilliseconds_ =
-            float(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                      .count());
-        lastRenderScale_ = scale;
+    const bool changed = !full_ || full_->display.width != vw || full_->display.height != vh ||
+                         !sameCamera(view.camera, lastRenderedCamera_) ||
+                         lastRenderedRevision_ != view.revision;
+    if (changed) {
+        if (!full_ || full_->display.width != vw || full_->display.height != vh)
+            full_ = createFrameTargets(vw, vh);
         lastRenderedCamera_ = view.camera;
         lastRenderedRevision_ = view.revision;
+        ++changes_;
+        const float scale =
+            refineAll ? 1.0f : adaptive.next(costMilliseconds_, costScale_, budgetMilliseconds);
+        const auto t0 = std::chrono::steady_clock::now();
+        if (scale >= 1.0f) { // the whole image fits the budget
+            renderer_->render(*gpuScene_, view.camera, view.scene->render, *full_);
+            glFinish();
+            lastRenderMilliseconds_ = millisecondsSince(t0);
+            refinement_.finish(vh, lastRenderMilliseconds_);
+            ++refinements_;
+            costMilliseconds_ = lastRenderMilliseconds_;
+            costScale_ = 1.0f;
+        } else {
+            const int tw = std::max(1, int(std::lround(float(vw) * scale)));
+            const int th = std::max(1, int(std::lround(float(vh) * scale)));
+            if (!preview_ || preview_->display.width != tw || preview_->display.height != th)
+                preview_ = createFrameTargets(tw, th);
+            renderer_->render(*gpuScene_, view.camera, view.scene->render, *preview_);
+            glFinish();
+            lastRenderMilliseconds_ = millisecondsSince(t0);
+            previewScale_ = scale;
+            costMilliseconds_ = lastRenderMilliseconds_;
+            costScale_ = scale;
+            refinement_.restart(vh, lastRenderMilliseconds_ / (scale * scale));
+        }
+    } else if (!refinement_.done()) {
+        const editor::RefineBand band = refinement_.nextBand(budgetMilliseconds, refineAll);
+        const RenderRows rows{band.begin, band.end, band.postBegin, band.postEnd};
+        const auto t0 = std::chrono::steady_clock::now();
+        renderer_->render(*gpuScene_, view.camera, view.scene->render, *full_, &rows);
+        glFinish();
+        lastRenderMilliseconds_ = millisecondsSince(t0);
+        refinement_.rendered(band, lastRenderMilliseconds_);
+        costMilliseconds_ = refinement_.fullMilliseconds();
+        costScale_ = 1.0f;
+        if (refinement_.done()) ++refinements_;
     }
+
     DisplayInput in;
-    in.frame = &*targets_;
     in.mode = view.mode;
     in.selectedFirst = view.selected.first;
     in.selectedLast = view.selected.last;
@@ -141,7 +173,13 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
     in.y = viewport.y;
     in.width = vw;
     in.height = vh;
-    display_->draw(in);
+    if (!refinement_.done() && preview_) {
+        in.frame = &*preview_;
+        display_->draw(in);
+        in.rows = refinement_.shownRows();
+    }
+    in.frame = &*full_;
+    if (in.rows != 0) display_->draw(in);
     if (view.showLights && !view.scene->lights.empty()) {
         const FrameCamera frame = makeFrameCamera(view.camera, vw, vh);
         gizmos_->draw({0, viewport.x, viewport.y, vw, vh}, frame.viewProjection, view.scene->lights,
@@ -155,10 +193,10 @@ std::optional<Pixels<std::uint8_t>> ViewRenderer::capture(const ViewInput& view,
         error = "nothing is rendered";
         return std::nullopt;
     }
-    if (targets_ && targets_->display.width == width && targets_->display.height == height &&
-        lastRenderScale_ >= 1.0f && sameCamera(view.camera, lastRenderedCamera_) &&
+    if (full_ && full_->display.width == width && full_->display.height == height &&
+        refinement_.done() && sameCamera(view.camera, lastRenderedCamera_) &&
         lastRenderedRevision_ == view.revision)
-        return readDisplayColor(*targets_); // the view is already refined
+        return readDisplayColor(*full_); // the view is already refined
     FrameTargets shot = createFrameTargets(width, height);
     renderer_->render(*gpuScene_, view.camera, view.scene->render, shot);
     return readDisplayColor(shot);
@@ -167,9 +205,15 @@ std::optional<Pixels<std::uint8_t>> ViewRenderer::capture(const ViewInput& view,
 ViewStatus ViewRenderer::status() const {
     ViewStatus status;
     status.renderMilliseconds = lastRenderMilliseconds_;
-    status.renderScale = lastRenderScale_;
-    status.width = targets_ ? targets_->display.width : 0;
-    status.height = targets_ ? targets_->display.height : 0;
+    status.refined = refined();
+    const bool overPreview = !status.refined && preview_;
+    status.renderScale = overPreview ? previewScale_ : 1.0f;
+    const FrameTargets* shown = overPreview ? &*preview_ : full_ ? &*full_ : nullptr;
+    status.width = shown ? shown->display.width : 0;
+    status.height = shown ? shown->display.height : 0;
+    status.refinedRows = refinement_.shownRows();
+    status.changes = changes_;
+    status.refinements = refinements_;
     status.map = drawnMap_;
     status.selectionLive = choiceLive_.first <= choiceLive_.last;
     status.newestScenePending = sceneChanged_;

@@ -10,6 +10,7 @@
 #include "display_pass.hpp"
 #include "editor/adaptive_scale.hpp"
 #include "editor/editing_map.hpp"
+#include "editor/refinement.hpp"
 #include "editor/scene_edits.hpp"
 #include "editor/selection.hpp"
 #include "panel_layout.hpp"
@@ -39,9 +40,13 @@ struct ViewInput {
 
 // What the overlay says about the view.
 struct ViewStatus {
-    float renderMilliseconds = 0.0f; // of the last render
-    float renderScale = 1.0f;        // of the last render, against the viewport's size
-    int width = 0, height = 0;       // pixels of the last render
+    float renderMilliseconds = 0.0f; // of the last render (a quick one or a band)
+    float renderScale = 1.0f;        // of the quick render shown under the refined rows, or 1
+    int width = 0, height = 0;       // pixels of that render
+    int refinedRows = 0;             // rows of the full-resolution image shown so far
+    bool refined = false;            // the view shows the whole full-resolution image
+    int changes = 0;                 // renders after a change so far (each restarts refining)
+    int refinements = 0;             // refinements completed so far
     editor::EditingMapKind map = editor::EditingMapKind::Buffer; // drawn
     bool selectionLive = false;      // the map was chosen with a live range for the selection
     bool newestScenePending = false; // the newest scene shows once its shaders are built
@@ -73,11 +78,14 @@ class ViewRenderer {
     void chooseSdfMap(const Scene& scene, const editor::Selection& selection, bool waitForBuilds,
                       int frameNumber, std::string& sceneError);
 
-    // Clears the window and draws the view into `viewport`, rendering again when the view
-    // changed (at the scale `adaptive` chooses) and showing the last render when it did not;
-    // the lights' markers are drawn over it every time.
+    // Clears the window and draws the view into `viewport`: when the view changed, a quick
+    // render at the scale `adaptive` chooses for `budgetMilliseconds` (the whole image when it
+    // fits); while it is not refined, the next band of the full-resolution image that fits the
+    // budget, shown over the quick render; else the last image. With `refineAll` (a replay
+    // script's window shot) the whole image is rendered now. The lights' markers are drawn over
+    // it every time.
     void render(const ViewInput& view, const ViewportPixels& viewport,
-                editor::AdaptiveScale& adaptive);
+                editor::AdaptiveScale& adaptive, float budgetMilliseconds, bool refineAll);
     // The view at `width` x `height` pixels and full resolution: the last render when it is
     // that, or a new render. nullopt with `error` when nothing is rendered yet.
     std::optional<Pixels<std::uint8_t>> capture(const ViewInput& view, int width, int height,
@@ -85,11 +93,9 @@ class ViewRenderer {
 
     // The newest scene that compiled (what picking casts rays at), or nullptr.
     const PreparedScene* newestScene() const { return prepared_ ? &*prepared_ : nullptr; }
-    // The last render is at full resolution and the view has not changed since: nothing to do
-    // until something changes.
-    bool refined(const editor::AdaptiveScale& adaptive) const {
-        return !viewChanged_ && adaptive.refined(lastRenderScale_);
-    }
+    // The view shows the whole full-resolution image of what it was last asked to show:
+    // nothing to do until something changes.
+    bool refined() const { return full_ && refinement_.done(); }
     ViewStatus status() const;
 
   private:
@@ -119,11 +125,16 @@ class ViewRenderer {
     std::uint64_t choiceRevision_ = 0;
     std::size_t choiceBuilt_ = 0;
     SdfLiveRange choiceLive_;
-    // The last render.
-    std::optional<FrameTargets> targets_;
+    // What is shown: the full-resolution image, refined up to refinement_.shownRows(), over
+    // the quick render made right after the last change.
+    std::optional<FrameTargets> full_;
+    std::optional<FrameTargets> preview_;
+    editor::Refinement refinement_;
+    float previewScale_ = 1.0f;
     float lastRenderMilliseconds_ = 0.0f;
-    float lastRenderScale_ = 1.0f;
-    bool viewChanged_ = true;
+    // The latest cost measured: a render at costScale_ takes costMilliseconds_.
+    float costMilliseconds_ = 0.0f, costScale_ = 1.0f;
+    int changes_ = 0, refinements_ = 0;
     Camera lastRenderedCamera_;
     std::uint64_t lastRenderedRevision_ = 0;
 };

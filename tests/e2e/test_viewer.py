@@ -87,10 +87,13 @@ def marker_pixels(shot, centre, radius=14):
     return count
 
 
-def run_viewer(xvfb_run, rmsc, scene, script, size="640x360", tail=2000):
-    """Runs `rmsc view SCENE --script SCRIPT` under Xvfb and prints the end of its log."""
-    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", rmsc, "view", scene, "--script",
-               script, "--size", size, "--embedded-shaders"]
+def run_viewer(xvfb_run, rmsc, scene, script, size="640x360", tail=2000, extra=(),
+               screen="800x600"):
+    """Runs `rmsc view SCENE --script SCRIPT` under Xvfb and prints the end of its log (SCENE
+    None: the built-in demo)."""
+    command = [xvfb_run, "-a", "-s", f"-screen 0 {screen}x24", rmsc, "view"] + \
+        ([scene] if scene else []) + ["--script", script, "--size", size, "--embedded-shaders"] + \
+        list(extra)
     run = subprocess.run(command, capture_output=True, text=True, timeout=540)
     print(run.stderr[-tail:])
     return run
@@ -241,7 +244,120 @@ def large_scene_run(rmsc, source, tmp, xvfb_run, check):
               abs(q[2] - p[2]) < 1e-6, (p, q))
 
 
+def burst_run(rmsc, source, tmp, xvfb_run, check):
+    """The burst run (tests/e2e/viewer_burst_script.txt): Ctrl+D in 20 frames in a row, Ctrl+Z in
+    the 5 after; every one arrives."""
+    folder = os.path.join(tmp, "burst")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    script = os.path.join(folder, "script.txt")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_burst_script.txt"), script)
+    run = run_viewer(xvfb_run, rmsc, scene, script)
+    check("burst run: viewer exits 0", run.returncode == 0, run.returncode)
+    children = json.load(open(scene))["sdf"]["children"]
+    balls = [c for c in children if c.get("shape") == "sphere"]
+    check("20 Ctrl+D in 20 frames and 5 Ctrl+Z: 15 copies of the ball saved", len(balls) == 16,
+          len(balls))
+
+
+def xdotool_child(rmsc, scene, log_path):
+    """Inside an X server: starts the viewer on SCENE, selects the ball with a real click, sends a
+    real burst of 20 Ctrl+D and 5 Ctrl+Z (xdotool, 2 ms apart) and Ctrl+S, waits for the save,
+    closes the viewer. Returns 0, or 1 with a reason on stdout."""
+    import time
+    with open(log_path, "w") as log:
+        viewer = subprocess.Popen([rmsc, "view", scene, "--size", "640x360", "--embedded-shaders",
+                                   "--stats"], stderr=log)
+    def wait_for(pattern, count, seconds):
+        end = time.time() + seconds
+        while time.time() < end:
+            if len(re.findall(pattern, open(log_path).read())) >= count:
+                return True
+            if viewer.poll() is not None:
+                return False
+            time.sleep(0.2)
+        return False
+    try:
+        if not wait_for(r"refined \d+x\d+", 1, 240):
+            print("the viewer never showed a refined view")
+            return 1
+        window = subprocess.run(["xdotool", "search", "--sync", "--onlyvisible", "--name", "^rmsc$"],
+                                capture_output=True, text=True, timeout=60).stdout.split()
+        if not window:
+            print("no viewer window")
+            return 1
+        wid = window[0]
+        # Real (XTEST) events, to the window under the pointer, which has the focus.
+        subprocess.run(["xdotool", "windowfocus", "--sync", wid], timeout=60)
+        subprocess.run(["xdotool", "mousemove", "--window", wid, "297", "190", "click", "1"],
+                       check=True, timeout=60)
+        time.sleep(2)  # the click's frames
+        keys = ["ctrl+d"] * 20 + ["ctrl+z"] * 5
+        subprocess.run(["xdotool", "key", "--delay", "2"] + keys, check=True, timeout=60)
+        before = os.path.getmtime(scene)
+        subprocess.run(["xdotool", "key", "ctrl+s"], check=True, timeout=60)
+        end = time.time() + 240
+        while time.time() < end and os.path.getmtime(scene) == before:
+            time.sleep(0.2)
+        time.sleep(0.5)
+        return 0
+    finally:
+        viewer.terminate()
+        viewer.wait(timeout=60)
+
+
+def xdotool_run(rmsc, source, tmp, xvfb_run, check):
+    """The real-input burst: xdotool under Xvfb sends 25 shortcuts faster than frames are drawn."""
+    if not shutil.which("xdotool"):
+        print("SKIP (this run only): xdotool not installed")
+        return
+    folder = os.path.join(tmp, "xdotool")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    log = os.path.join(folder, "viewer.log")
+    run = subprocess.run([xvfb_run, "-a", "-s", "-screen 0 800x600x24", sys.executable,
+                          os.path.abspath(__file__), "--xdotool-child", rmsc, scene, log],
+                         capture_output=True, text=True, timeout=560)
+    print(run.stdout[-1000:], open(log).read()[-1500:] if os.path.exists(log) else "")
+    check("xdotool run: the burst was sent and the scene saved", run.returncode == 0, run.stdout)
+    children = json.load(open(scene))["sdf"]["children"]
+    balls = [c for c in children if c.get("shape") == "sphere"]
+    check("a real burst of 20 Ctrl+D and 5 Ctrl+Z: 15 copies of the ball saved", len(balls) == 16,
+          len(balls))
+
+
+def timing_runs(rmsc, source, tmp, xvfb_run, check):
+    """The timing runs (tests/e2e/viewer_timing_script.txt) at 1280x720 on the demo and on the
+    largest bench scene: every change is refined to the full image; the UI frame times and the
+    time from the last input to the refined image are printed (figures, not asserted: see
+    docs/performance.md)."""
+    script = os.path.join(tmp, "timing.txt")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_timing_script.txt"), script)
+    for name, scene in (("demo", None), ("grid_10000", os.path.join(source, "samples/bench/grid_10000.json"))):
+        run = run_viewer(xvfb_run, rmsc, scene, script, "1280x720", extra=["--stats"],
+                         screen="1400x900")
+        check(f"timing run ({name}): viewer exits 0", run.returncode == 0, run.returncode)
+        refined = re.findall(r"frame (\d+): refined \d+x(\d+) in (\d+) frames, (\d+) ms after the "
+                             r"last input; UI frames since the change: longest ([\d.]+) ms, "
+                             r"mean ([\d.]+) ms", run.stderr)
+        # The start, the flight and the look: each ends in a refined full-resolution image.
+        check(f"timing run ({name}): the view is refined after each change", len(refined) >= 3,
+              run.stderr[-1500:])
+        summary = re.search(r"UI frames: (\d+), longest ([\d.]+) ms, mean ([\d.]+) ms, (\d+) over",
+                            run.stderr)
+        check(f"timing run ({name}): the frame summary is logged", summary is not None)
+        for frame, height, frames, latency, longest, mean in refined:
+            print(f"TIMING {name}: frame {frame}: refined in {frames} frames, {latency} ms after "
+                  f"the last input, UI frame longest {longest} ms, mean {mean} ms")
+        if summary:
+            print(f"TIMING {name}: " + summary.group(0))
+
+
 def main():
+    if len(sys.argv) == 5 and sys.argv[1] == "--xdotool-child":
+        return xdotool_child(sys.argv[2], sys.argv[3], sys.argv[4])
     rmsc, source = sys.argv[1], sys.argv[2]
     xvfb_run = shutil.which("xvfb-run")
     if not xvfb_run or not shutil.which("Xvfb"):
@@ -326,6 +442,9 @@ def main():
         create_run(rmsc, source, tmp, xvfb_run, check)
         refuse_run(rmsc, source, tmp, xvfb_run, check)
         large_scene_run(rmsc, source, tmp, xvfb_run, check)
+        burst_run(rmsc, source, tmp, xvfb_run, check)
+        xdotool_run(rmsc, source, tmp, xvfb_run, check)
+        timing_runs(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

@@ -3,7 +3,6 @@
 // selection, undo/redo (including a multi-frame drag as one step), the dirty flag, save/load
 // round trips, atomic saves with a backup, a failed save that keeps the old file and the edits,
 // a save refused (nothing written) for a scene that would not load, and the file watcher.
-#include "editor/adaptive_scale.hpp"
 #include "editor/document.hpp"
 #include "editor/file_watcher.hpp"
 #include "editor/fly_camera.hpp"
@@ -524,21 +523,4 @@ TEST(EditorCamera, MovesRollsOrbitsAndFrames) {
                 1.0f / std::sin(glm::radians(22.5f)) * 1.1f, 1e-3f);
     fly.changeSpeed(1.0f);
     EXPECT_FLOAT_EQ(fly.speed, 2.5f);
-}
-
-TEST(EditorAdaptiveScale, ShrinksWhenSlowAndRefinesWhenStill) {
-    AdaptiveScale a;
-    a.targetMilliseconds = 33.0f;
-    float scale = 1.0f;
-    // Moving and four times too slow: the pixel count should head for a quarter (scale 1/2).
-    for (int i = 0; i < 20; ++i) {
-        const float ms = 132.0f * scale * scale; // cost proportional to pixels
-        scale = a.next(true, ms, scale);
-    }
-    EXPECT_NEAR(scale, 0.5f, 0.07f);
-    scale = a.next(false, 33.0f, scale);
-    scale = a.next(false, 33.0f, scale);
-    scale = a.next(false, 33.0f, scale);
-    EXPECT_FLOAT_EQ(scale, 1.0f); // still: full resolution
-    EXPECT_TRUE(a.refined(1.0f));
 }

@@ -32,6 +32,16 @@ struct FrameTargets {
 
 FrameTargets createFrameTargets(int width, int height);
 
+// Rows of a frame to render, counted from the bottom, for rendering one frame in parts (the
+// viewer's progressive refinement): [begin, end) go through every pass but the post pass,
+// [postBegin, postEnd) through the post pass; `begin` and `end` on multiples of the cone
+// pass's tile size (kConeTileSize) unless `end` is the frame's height. Rows outside keep what
+// they held. The shadow maps are drawn whole each time.
+struct RenderRows {
+    int begin = 0, end = 0;
+    int postBegin = 0, postEnd = 0;
+};
+
 enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Grid, Blend, Count };
 // Names of the passes, in Pass order (what `rmsc bench` prints).
 constexpr std::array<const char*, std::size_t(Pass::Count)> kPassNames = {
@@ -74,10 +84,10 @@ class Renderer {
     // Milliseconds the last prepare() spent compiling and linking (0 on a cache hit).
     double lastCompileMs() const { return lastCompileMs_; }
 
-    // Renders one frame; prepares the scene first (throws std::runtime_error if its shaders
-    // do not build, which is a bug in rmsc, not in the scene).
+    // Renders one frame, or only `rows` of it; prepares the scene first (throws
+    // std::runtime_error if its shaders do not build, which is a bug in rmsc, not in the scene).
     void render(const GpuScene& scene, const Camera& camera, const RenderSettings& settings,
-                FrameTargets& targets);
+                FrameTargets& targets, const RenderRows* rows = nullptr);
     // Waits for the last frame and returns its pass times.
     PassTimes lastPassTimes() const;
     // Waits for the last frame and returns how many fragments marched.

@@ -12,6 +12,7 @@ struct ViewerOptions {
     int width = 1280, height = 720;
     float targetMilliseconds = 33.0f;
     bool watchShaders = true; // read shaders from the source tree and reload them on change
+    bool stats = false;       // log the UI frame times after each change and at exit
 };
 
 // Opens the window and runs the viewer until it closes; returns the process exit code.

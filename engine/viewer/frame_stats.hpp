@@ -1,0 +1,41 @@
+// What `rmsc view --stats` reports: the UI frame times of the frames after each change (from
+// the one that shows the quick render to the one that completes the full-resolution image), the
+// time from the last input to the refined image, and a summary of every frame at exit.
+#pragma once
+
+#include "view_renderer.hpp"
+
+#include <optional>
+#include <string>
+
+namespace rmsc::app {
+
+struct FrameStats {
+    // The renderer's counts as last seen (ViewStatus::changes, ::refinements).
+    int changes = 0, refinements = 0;
+    // Since the last change: frames, their longest and their total milliseconds.
+    int frames = 0;
+    float maxMilliseconds = 0.0f;
+    double sumMilliseconds = 0.0;
+    // Every frame.
+    int allFrames = 0;
+    float allMaxMilliseconds = 0.0f;
+    double allSumMilliseconds = 0.0;
+    int overTarget = 0; // frames longer than the target
+    // The longest a frame spent handing the scene to the GPU side (compiling it, pruning its
+    // cells, uploading it, building shaders it had to build there): work that blocks the frame.
+    float longestSceneMilliseconds = 0.0f;
+    int longestSceneFrame = -1;
+};
+
+// Records one frame that took `milliseconds` and showed `status`; returns the log line when it
+// completed a refinement. `now` and `lastInput` are in seconds (glfwGetTime).
+std::optional<std::string> recordFrame(FrameStats& stats, const ViewStatus& status, int frame,
+                                       float milliseconds, float targetMilliseconds, double now,
+                                       double lastInput);
+// Records that frame `frame` spent `milliseconds` on the scene (see longestSceneMilliseconds).
+void recordSceneWork(FrameStats& stats, int frame, float milliseconds);
+// The line for every frame, at exit.
+std::string frameSummary(const FrameStats& stats, float targetMilliseconds);
+
+} // namespace rmsc::app
