@@ -16,7 +16,6 @@ packages=(
   libglfw3-dev                        # windows and input for the viewer
   libimgui-dev                        # Dear ImGui (with GLFW and OpenGL 3 back ends) for the viewer's editor
   xvfb                                # a virtual X display for the viewer's end-to-end test
-  xdotool                             # real key and mouse events for the viewer's end-to-end test
   libgtest-dev                        # unit and GPU tests
   clang libclang-rt-14-dev            # libFuzzer harnesses (tools/fuzz.sh): clang and its fuzzer runtime
   python3-jsonschema                  # the CLI test checks the samples against docs/scene.schema.json

@@ -261,73 +261,6 @@ def burst_run(rmsc, source, tmp, xvfb_run, check):
           len(balls))
 
 
-def xdotool_child(rmsc, scene, log_path):
-    """Inside an X server: starts the viewer on SCENE, selects the ball with a real click, sends a
-    real burst of 20 Ctrl+D and 5 Ctrl+Z (xdotool, 2 ms apart) and Ctrl+S, waits for the save,
-    closes the viewer. Returns 0, or 1 with a reason on stdout."""
-    import time
-    with open(log_path, "w") as log:
-        viewer = subprocess.Popen([rmsc, "view", scene, "--size", "640x360", "--embedded-shaders",
-                                   "--stats"], stderr=log)
-    def wait_for(pattern, count, seconds):
-        end = time.time() + seconds
-        while time.time() < end:
-            if len(re.findall(pattern, open(log_path).read())) >= count:
-                return True
-            if viewer.poll() is not None:
-                return False
-            time.sleep(0.2)
-        return False
-    try:
-        if not wait_for(r"refined \d+x\d+", 1, 240):
-            print("the viewer never showed a refined view")
-            return 1
-        window = subprocess.run(["xdotool", "search", "--sync", "--onlyvisible", "--name", "^rmsc$"],
-                                capture_output=True, text=True, timeout=60).stdout.split()
-        if not window:
-            print("no viewer window")
-            return 1
-        wid = window[0]
-        # Real (XTEST) events, to the window under the pointer, which has the focus.
-        subprocess.run(["xdotool", "windowfocus", "--sync", wid], timeout=60)
-        subprocess.run(["xdotool", "mousemove", "--window", wid, "297", "190", "click", "1"],
-                       check=True, timeout=60)
-        time.sleep(2)  # the click's frames
-        keys = ["ctrl+d"] * 20 + ["ctrl+z"] * 5
-        subprocess.run(["xdotool", "key", "--delay", "2"] + keys, check=True, timeout=60)
-        before = os.path.getmtime(scene)
-        subprocess.run(["xdotool", "key", "ctrl+s"], check=True, timeout=60)
-        end = time.time() + 240
-        while time.time() < end and os.path.getmtime(scene) == before:
-            time.sleep(0.2)
-        time.sleep(0.5)
-        return 0
-    finally:
-        viewer.terminate()
-        viewer.wait(timeout=60)
-
-
-def xdotool_run(rmsc, source, tmp, xvfb_run, check):
-    """The real-input burst: xdotool under Xvfb sends 25 shortcuts faster than frames are drawn."""
-    if not shutil.which("xdotool"):
-        print("SKIP (this run only): xdotool not installed")
-        return
-    folder = os.path.join(tmp, "xdotool")
-    os.makedirs(folder)
-    scene = os.path.join(folder, "scene.json")
-    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
-    log = os.path.join(folder, "viewer.log")
-    run = subprocess.run([xvfb_run, "-a", "-s", "-screen 0 800x600x24", sys.executable,
-                          os.path.abspath(__file__), "--xdotool-child", rmsc, scene, log],
-                         capture_output=True, text=True, timeout=560)
-    print(run.stdout[-1000:], open(log).read()[-1500:] if os.path.exists(log) else "")
-    check("xdotool run: the burst was sent and the scene saved", run.returncode == 0, run.stdout)
-    children = json.load(open(scene))["sdf"]["children"]
-    balls = [c for c in children if c.get("shape") == "sphere"]
-    check("a real burst of 20 Ctrl+D and 5 Ctrl+Z: 15 copies of the ball saved", len(balls) == 16,
-          len(balls))
-
-
 def timing_runs(rmsc, source, tmp, xvfb_run, check):
     """The timing runs (tests/e2e/viewer_timing_script.txt) at 1280x720 on the demo and on the
     largest bench scene: every change is refined to the full image; the UI frame times and the
@@ -357,7 +290,7 @@ def timing_runs(rmsc, source, tmp, xvfb_run, check):
 
 def responsiveness_main(rmsc, source, xvfb_run):
     """`test_viewer.py RMSC SOURCE_DIR --responsiveness` (ctest e2e.viewer_responsiveness): the
-    burst, xdotool and timing runs, apart from the editing runs so each has its own time limit."""
+    burst and timing runs, apart from the editing runs so each has its own time limit."""
     failures = []
 
     def check(name, ok, detail=""):
@@ -367,7 +300,6 @@ def responsiveness_main(rmsc, source, xvfb_run):
 
     with tempfile.TemporaryDirectory(prefix="rmsc-e2e-") as tmp:
         burst_run(rmsc, source, tmp, xvfb_run, check)
-        xdotool_run(rmsc, source, tmp, xvfb_run, check)
         timing_runs(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
@@ -376,8 +308,6 @@ def responsiveness_main(rmsc, source, xvfb_run):
 
 
 def main():
-    if len(sys.argv) == 5 and sys.argv[1] == "--xdotool-child":
-        return xdotool_child(sys.argv[2], sys.argv[3], sys.argv[4])
     rmsc, source = sys.argv[1], sys.argv[2]
     if len(sys.argv) > 3 and sys.argv[3] == "--responsiveness":
         xvfb_run = shutil.which("xvfb-run")
