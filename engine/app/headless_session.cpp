@@ -42,11 +42,14 @@ bool readFrameOptions(const char* command, const ParsedArgs& args, FrameOptions&
 }
 
 int openHeadlessSession(const char* command, const std::string& scenePath,
-                        const FrameOptions& options, HeadlessSession& session) {
+                        const FrameOptions& options, HeadlessSession& session,
+                        const std::function<int(PreparedScene&)>& beforeUpload) {
     Diagnostics diagnostics;
-    session.prepared = openScene(scenePath, diagnostics, options.shells);
+    session.prepared = openScene(scenePath, diagnostics, options.shells, options.gltfScene);
     std::fputs(diagnostics.format().c_str(), stderr);
     if (!session.prepared) return kExitBadInput;
+    if (beforeUpload)
+        if (const int code = beforeUpload(*session.prepared)) return code;
 
     std::string error;
     session.context = createHeadlessContext(options.backend, false, error);

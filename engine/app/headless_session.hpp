@@ -8,6 +8,7 @@
 #include "prepare/prepared_scene.hpp"
 #include "render/renderer.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,7 @@ struct FrameOptions {
     GlBackend backend = GlBackend::Auto;
     SdfStrategy strategy = SdfStrategy::Baked;
     ShellMode shells = ShellMode::AsScene;
+    int gltfScene = -1; // --scene of a .gltf/.glb file, -1 for its default scene
 };
 
 // Reads --size, --backend, --sdf-strategy and --shells; prints the problem and returns false on a
@@ -34,9 +36,12 @@ struct HeadlessSession {
     double shaderBuildMs = 0.0; // time to build the renderer's programs for the scene
 };
 
-// Opens `scenePath` ("" = the built-in demo), prints diagnostics, creates the context and the
-// renderer and uploads the scene. Returns kExitOk or the exit code of the failure.
+// Opens `scenePath` ("" = the built-in demo), prints diagnostics, lets `beforeUpload` change
+// the prepared scene (a pose, a camera; it returns kExitOk or an exit code after printing why),
+// creates the context and the renderer and uploads the scene. Returns kExitOk or the exit code
+// of the failure.
 int openHeadlessSession(const char* command, const std::string& scenePath,
-                        const FrameOptions& options, HeadlessSession& session);
+                        const FrameOptions& options, HeadlessSession& session,
+                        const std::function<int(PreparedScene&)>& beforeUpload = {});
 
 } // namespace rmsc::app

@@ -125,6 +125,13 @@ constexpr Limit kLimits[] = {
      "the `byteLength` of every buffer of one file together (a file listed twice counts twice), "
      "before any is read",
      "refused at the buffer that goes over", "kGltfBufferBytes"},
+    {"glTF morph targets", kGltfMorphTargets, "", "`targets` of one mesh primitive",
+     "refused at the primitive's `targets`", "kGltfMorphTargets"},
+    {"glTF skin joints", kGltfJoints, "", "`joints` of one skin", "refused at the skin's `joints`",
+     "kGltfJoints"},
+    {"glTF animation keys", double(kGltfAnimationKeys), "",
+     "key times of all the animation samplers of one file together",
+     "refused at the sampler's `input` that goes over", "kGltfAnimationKeys"},
     {"Scene glTF vertices", double(kSceneGltfVertices), "",
      "vertices of all the glTF files of a scene (meshes and shell proxies) after instancing, "
      "counted from the accessors before any is read",

@@ -114,6 +114,8 @@ constexpr KeyControl kMeshKeys[] = {
     {"name", "name"},
     {"file", "file (applied when it loads)"},
     {"material", "material"},
+    {"animation", "animation"},
+    {"time", "time (drag to scrub the animation)"},
     {"position", "position"},
     {"rotation", "rotation"},
     {"scale", "scale"},

@@ -4,12 +4,14 @@
 #include "core/limits.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/material_textures.hpp"
+#include "scene/mesh_pose.hpp"
 #include "scene/scene_json.hpp"
 #include "sdf/bounds.hpp"
 #include "sdf/compiler.hpp"
 
 #include <algorithm>
 #include <map>
+#include <tuple>
 
 namespace rmsc {
 
@@ -52,6 +54,19 @@ std::vector<Light> gatherLights(const Scene& scene, const std::vector<MeshAsset>
 }
 
 namespace {
+
+// Takes what a copy of `asset` holds out of the scene's budget; false when it would go over.
+bool takeCopyBudget(const MeshAsset& asset, GltfBudget& budget) {
+    std::uint64_t vertices = 0, indices = 0;
+    for (const MeshPrimitive& p : asset.primitives) {
+        vertices += p.vertices.size();
+        indices += p.indices.size();
+    }
+    if (vertices > budget.vertices || indices > budget.indices) return false;
+    budget.vertices -= vertices;
+    budget.indices -= indices;
+    return true;
+}
 
 // The shell's clip box and proxy mesh (object space); errors at the shell's JSON pointer.
 std::optional<PreparedShell> prepareShell(SdfShellProgram compiled, const FileSource& files,
@@ -134,32 +149,75 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     const int errorsBefore = diagnostics.errorCount();
     const std::string sceneFile = scene.file.string();
 
-    std::map<std::filesystem::path, int> assetByPath;
+    // One asset per file and pose: instances showing the same file at the same animation and
+    // time share it; another pose of a loaded file is a copy of it, posed.
+    std::map<std::filesystem::path, int> assetByPath; // the first asset of each file
+    std::map<std::tuple<std::filesystem::path, std::string, double>, int> assetByPose;
     // Shared by the meshes, the shells' proxy meshes, the material textures and the sky image.
     GltfBudget gltfBudget;
     for (const MeshInstance& instance : scene.meshes) {
-        auto found = assetByPath.find(instance.path);
-        if (found != assetByPath.end()) {
+        const auto poseKey = std::make_tuple(instance.path, instance.animation, instance.time);
+        if (const auto found = assetByPose.find(poseKey); found != assetByPose.end()) {
             prepared.instanceAsset.push_back(found->second);
             continue;
         }
-        Diagnostics meshDiagnostics;
-        std::optional<MeshAsset> asset =
-            loadGltf(instance.path, files, meshDiagnostics, gltfBudget);
-        for (Diagnostic& d : meshDiagnostics.items) {
-            // "scene.json: /meshes/0/file ("model.gltf"): model.gltf: /accessors/2: ..." names
-            // both places.
-            diagnostics.add({d.severity, sceneFile,
-                             instance.pointer + "/file (\"" + instance.file + "\")", d.format()});
+        std::optional<MeshAsset> asset;
+        if (const auto loaded = assetByPath.find(instance.path); loaded != assetByPath.end()) {
+            asset = prepared.assets[std::size_t(loaded->second)];
+            if (!takeCopyBudget(*asset, gltfBudget)) {
+                diagnostics.error(sceneFile, instance.pointer,
+                                  "another pose of \"" + instance.file +
+                                      "\" brings the scene's glTF vertices or indices over "
+                                      "their limits (kSceneGltfVertices, kSceneGltfIndices)");
+                prepared.instanceAsset.push_back(-1);
+                continue;
+            }
+        } else {
+            Diagnostics meshDiagnostics;
+            asset = loadGltf(instance.path, files, meshDiagnostics, gltfBudget);
+            for (Diagnostic& d : meshDiagnostics.items) {
+                // "scene.json: /meshes/0/file ("model.gltf"): model.gltf: /accessors/2: ..."
+                // names both places.
+                diagnostics.add({d.severity, sceneFile,
+                                 instance.pointer + "/file (\"" + instance.file + "\")",
+                                 d.format()});
+            }
+            diagnostics.addOmitted(meshDiagnostics.omittedErrors(),
+                                   meshDiagnostics.omittedWarnings());
         }
-        diagnostics.addOmitted(meshDiagnostics.omittedErrors(), meshDiagnostics.omittedWarnings());
         if (!asset) {
             prepared.instanceAsset.push_back(-1);
             continue;
         }
+        MeshPose pose;
+        if (instance.animation.empty() && assetByPath.count(instance.path)) {
+            Diagnostics restDiagnostics; // the rest pose was baked once already: it bakes
+            poseMeshAsset(*asset, pose, restDiagnostics);
+        } else if (!instance.animation.empty()) {
+            std::string why;
+            const std::optional<int> animation =
+                asset->rig ? findAnimation(*asset->rig, instance.animation, why) : std::nullopt;
+            if (!animation) {
+                diagnostics.error(sceneFile, instance.pointer + "/animation",
+                                  "\"" + instance.file + "\": " + why);
+                prepared.instanceAsset.push_back(-1);
+                continue;
+            }
+            pose = {*animation, instance.time};
+            Diagnostics poseDiagnostics;
+            if (!poseMeshAsset(*asset, pose, poseDiagnostics)) {
+                for (Diagnostic& d : poseDiagnostics.items)
+                    diagnostics.add(
+                        {d.severity, sceneFile, instance.pointer + "/animation", d.format()});
+                prepared.instanceAsset.push_back(-1);
+                continue;
+            }
+        }
         assetByPath.emplace(instance.path, int(prepared.assets.size()));
+        assetByPose.emplace(poseKey, int(prepared.assets.size()));
         prepared.instanceAsset.push_back(int(prepared.assets.size()));
         prepared.assets.push_back(std::move(*asset));
+        prepared.assetPoses.push_back(pose);
     }
 
     prepared.materials = scene.materials;
@@ -210,7 +268,7 @@ std::optional<PreparedScene> costChecked(std::optional<PreparedScene> prepared,
 } // namespace
 
 std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagnostics& diagnostics,
-                                       ShellMode shellMode) {
+                                       ShellMode shellMode, int gltfScene) {
     if (path.empty()) {
         const FileSource embedded = embeddedFileSource();
         std::optional<Scene> scene = loadScene(kDemoScenePath, embedded, diagnostics);
@@ -223,11 +281,13 @@ std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagno
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".gltf" || extension == ".glb") {
-        std::optional<MeshAsset> asset = loadGltf(path, disk, diagnostics);
+        GltfBudget budget;
+        std::optional<MeshAsset> asset = loadGltf(path, disk, diagnostics, budget, gltfScene);
         if (!asset) return std::nullopt;
         PreparedScene prepared;
         prepared.scene = sceneFromGltf(path, *asset);
         prepared.assets.push_back(std::move(*asset));
+        prepared.assetPoses.emplace_back();
         prepared.instanceAsset.push_back(0);
         prepared.materials = prepared.scene.materials;
         prepared.materials.push_back(defaultMaterial());

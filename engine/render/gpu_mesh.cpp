@@ -8,6 +8,31 @@
 
 namespace rmsc {
 
+namespace {
+
+glm::vec3 boundsCentre(const MeshPrimitive& source) {
+    if (source.vertices.empty()) return glm::vec3(0.0f);
+    glm::vec3 lo = source.vertices[0].position, hi = lo;
+    for (const MeshVertex& v : source.vertices) {
+        lo = glm::min(lo, v.position);
+        hi = glm::max(hi, v.position);
+    }
+    return 0.5f * (lo + hi);
+}
+
+} // namespace
+
+void updateMeshVertices(const MeshAsset& asset, GpuMesh& mesh) {
+    for (std::size_t i = 0; i < asset.primitives.size() && i < mesh.primitives.size(); ++i) {
+        const MeshPrimitive& source = asset.primitives[i];
+        if (source.vertices.empty()) continue;
+        glNamedBufferSubData(mesh.primitives[i].vertices.id(), 0,
+                             GLsizeiptr(source.vertices.size() * sizeof(MeshVertex)),
+                             source.vertices.data());
+        mesh.primitives[i].centre = boundsCentre(source);
+    }
+}
+
 GpuMesh uploadMesh(const MeshAsset& asset) {
     GpuMesh mesh;
     for (const MeshPrimitive& source : asset.primitives) {
@@ -18,14 +43,7 @@ GpuMesh uploadMesh(const MeshAsset& asset) {
             GLsizeiptr(source.indices.size() * sizeof(std::uint32_t)), source.indices.data());
         p.indexCount = GLsizei(source.indices.size());
         p.material = source.material;
-        if (!source.vertices.empty()) {
-            glm::vec3 lo = source.vertices[0].position, hi = lo;
-            for (const MeshVertex& v : source.vertices) {
-                lo = glm::min(lo, v.position);
-                hi = glm::max(hi, v.position);
-            }
-            p.centre = 0.5f * (lo + hi);
-        }
+        p.centre = boundsCentre(source);
         p.vertexArray = gl::createVertexArray();
         const GLuint vao = p.vertexArray.id();
         glVertexArrayVertexBuffer(vao, 0, p.vertices.id(), 0, sizeof(MeshVertex));

@@ -381,9 +381,11 @@ bool readFloatAttribute(const tinygltf::Model& model, int index, int components,
                         const std::string& hint) {
     const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
     const std::string pointer = accessorPointer(index);
-    const int expectedType = components == 2   ? TINYGLTF_TYPE_VEC2
-                             : components == 4 ? TINYGLTF_TYPE_VEC4
-                                               : TINYGLTF_TYPE_VEC3;
+    const int expectedType = components == 1    ? TINYGLTF_TYPE_SCALAR
+                             : components == 2  ? TINYGLTF_TYPE_VEC2
+                             : components == 4  ? TINYGLTF_TYPE_VEC4
+                             : components == 16 ? TINYGLTF_TYPE_MAT4
+                                                : TINYGLTF_TYPE_VEC3;
     const unsigned format = formatOf(a);
     if (a.type != expectedType || (format & formats) == 0) {
         report.error(pointer, "used as " + usage + ": expected " + typeName(expectedType) + " " +

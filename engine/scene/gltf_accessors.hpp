@@ -44,10 +44,11 @@ enum AttributeFormat : unsigned {
     kSint16 = 1u << 8,  // SHORT
 };
 
-// Reads a float attribute with `components` components (2, 3 or 4) stored in one of the
-// `formats` (a set of AttributeFormat bits), sparse accessors included. `usage` names the user
-// in messages ("POSITION of /meshes/0/primitives/1"); `hint`, when not empty, is added to the
-// refusal of a format outside `formats` (what would allow it).
+// Reads a float attribute with `components` components (1 = SCALAR, 2, 3, 4 = VEC2..4, 16 =
+// MAT4, which only FLOAT stores without column padding) stored in one of the `formats` (a set of
+// AttributeFormat bits), sparse accessors included. `usage` names the user in messages ("POSITION
+// of /meshes/0/primitives/1"); `hint`, when not empty, is added to the refusal of a format outside
+// `formats` (what would allow it).
 bool readFloatAttribute(const tinygltf::Model& model, int index, int components, unsigned formats,
                         const std::string& usage, std::vector<float>& out, Reporter& report,
                         const std::string& hint = "");

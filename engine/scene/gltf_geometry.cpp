@@ -1,10 +1,12 @@
 // Baking a glTF scene into triangle primitives (see gltf_geometry.hpp).
 #include "scene/gltf_geometry.hpp"
 #include "gltf_lights.hpp"
+#include "gltf_rig_import.hpp"
 
 #include "gltf_accessors.hpp"
 #include "gltf_texcoord.hpp"
 #include "gltf_validate.hpp"
+#include "scene/mesh_pose.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,25 +16,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 
 namespace rmsc::gltf {
 
 namespace {
 
-// One primitive as stored in the file, in its mesh's local space.
-struct SourcePrimitive {
-    bool drawable = false; // false for primitives skipped with a warning
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;       // empty when the file has none
-    std::vector<glm::vec2> uvs;           // TEXCOORD_0, zeros when absent
-    std::vector<glm::vec2> uvs1;          // TEXCOORD_1, zeros when absent
-    std::vector<glm::vec4> tangents;      // empty when the file has none
-    std::vector<glm::vec4> colors;        // COLOR_0 as RGBA, empty when the file has none
-    std::vector<std::uint32_t> triangles; // 3 indices per triangle
-    int material = -1;
-    int tangentUvSet = 0; // the TEXCOORD set of the material's normal texture
-};
+using SourcePrimitive = RigPrimitive;
 
 // The TEXCOORD sets the textures of `material` read, as a pointer per set ("" = unused).
 std::array<std::string, 2> texCoordUsers(const tinygltf::Model& model, int material) {
@@ -87,6 +78,99 @@ std::optional<std::vector<std::uint32_t>> toTriangles(const std::vector<std::uin
         }
     }
     return out;
+}
+
+// JOINTS_0/WEIGHTS_0 and JOINTS_1/WEIGHTS_1 (glTF 2.0 section 3.7.3.3, "Skinned Mesh
+// Attributes"): joints VEC4 UNSIGNED_BYTE or UNSIGNED_SHORT, weights VEC4 FLOAT or normalized
+// UNSIGNED_BYTE / UNSIGNED_SHORT. Each set needs both; joint indices are checked against the
+// skin when posing (a mesh may be used by nodes with different skins).
+bool readSkinAttributes(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                        std::size_t vertexCount, const std::string& pointer, Reporter& report,
+                        SourcePrimitive& out) {
+    std::vector<float> values;
+    for (int set = 0; set < 2; ++set) {
+        const std::string joints = "JOINTS_" + std::to_string(set);
+        const std::string weights = "WEIGHTS_" + std::to_string(set);
+        const auto j = prim.attributes.find(joints);
+        const auto w = prim.attributes.find(weights);
+        if (j == prim.attributes.end() && w == prim.attributes.end()) continue;
+        if (j == prim.attributes.end() || w == prim.attributes.end()) {
+            report.error(pointer + "/attributes",
+                         "has " + (j == prim.attributes.end() ? weights : joints) + " without " +
+                             (j == prim.attributes.end() ? joints : weights) +
+                             ", expected both or neither");
+            return false;
+        }
+        if (!readFloatAttribute(model, j->second, 4, kUint8 | kUint16, joints + " of " + pointer,
+                                values, report))
+            return false;
+        out.joints[std::size_t(set)].resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            out.joints[std::size_t(set)][i] =
+                glm::uvec4(unsigned(values[4 * i]), unsigned(values[4 * i + 1]),
+                           unsigned(values[4 * i + 2]), unsigned(values[4 * i + 3]));
+        if (!readFloatAttribute(model, w->second, 4, kFloat | kUnorm8 | kUnorm16,
+                                weights + " of " + pointer, values, report))
+            return false;
+        out.weights[std::size_t(set)].resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            out.weights[std::size_t(set)][i] =
+                glm::vec4(values[4 * i], values[4 * i + 1], values[4 * i + 2], values[4 * i + 3]);
+    }
+    return true;
+}
+
+// Morph targets (glTF 2.0 section 3.7.2.2, "Morph Targets"): POSITION, NORMAL and TANGENT
+// deltas, VEC3 FLOAT (or the integer formats KHR_mesh_quantization allows for them), at most
+// limits::kGltfMorphTargets per primitive, every primitive of a mesh with the same count.
+bool readMorphTargets(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                      std::size_t vertexCount, bool quantized, const std::string& pointer,
+                      Reporter& report, SourcePrimitive& out) {
+    if (prim.targets.size() > std::size_t(limits::kGltfMorphTargets)) {
+        report.error(pointer + "/targets",
+                     "has " + std::to_string(prim.targets.size()) + " morph targets; at most " +
+                         std::to_string(limits::kGltfMorphTargets) + " are supported (the limit)");
+        return false;
+    }
+    const unsigned positionFormats =
+        quantized ? kFloat | kSnorm8 | kSnorm16 | kSint8 | kSint16 : kFloat;
+    const unsigned directionFormats = quantized ? kFloat | kSnorm8 | kSnorm16 : kFloat;
+    std::vector<float> values;
+    out.targets.resize(prim.targets.size());
+    for (std::size_t t = 0; t < prim.targets.size(); ++t) {
+        const std::string targetPointer = pointer + "/targets/" + std::to_string(t);
+        for (const auto& [name, accessor] : prim.targets[t]) {
+            std::vector<glm::vec3>* into = name == "POSITION"  ? &out.targets[t].positions
+                                           : name == "NORMAL"  ? &out.targets[t].normals
+                                           : name == "TANGENT" ? &out.targets[t].tangents
+                                                               : nullptr;
+            if (!into) {
+                report.warning(targetPointer + "/" + name,
+                               "morph target attribute " + name + " is not supported; ignored");
+                continue;
+            }
+            if (accessor < 0 || std::size_t(accessor) >= model.accessors.size()) {
+                report.error(targetPointer + "/" + name, "refers to a missing accessor");
+                return false;
+            }
+            const std::size_t count = model.accessors[std::size_t(accessor)].count;
+            if (count != vertexCount) {
+                report.error(targetPointer + "/" + name, "accessor has " + std::to_string(count) +
+                                                             " elements but POSITION has " +
+                                                             std::to_string(vertexCount) +
+                                                             ", expected the same count");
+                return false;
+            }
+            if (!readFloatAttribute(model, accessor, 3,
+                                    name == "POSITION" ? positionFormats : directionFormats,
+                                    name + " of " + targetPointer, values, report))
+                return false;
+            into->resize(vertexCount);
+            for (std::size_t i = 0; i < vertexCount; ++i)
+                (*into)[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
+        }
+    }
+    return true;
 }
 
 bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::size_t primIndex,
@@ -196,6 +280,8 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
             out.colors[i] = glm::vec4(c[0], c[1], c[2], components == 4 ? c[3] : 1.0f);
         }
     }
+    if (!readSkinAttributes(model, prim, vertexCount, pointer, report, out)) return false;
+    if (!readMorphTargets(model, prim, vertexCount, quantized, pointer, report, out)) return false;
     if (prim.material >= 0 && std::size_t(prim.material) < model.materials.size()) {
         const int set = textureTexCoord(model.materials[std::size_t(prim.material)].normalTexture);
         out.tangentUvSet = set == 1 ? 1 : 0;
@@ -238,37 +324,37 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
     return true;
 }
 
-std::optional<glm::dmat4> localMatrix(const tinygltf::Node& node, const std::string& pointer,
-                                      Reporter& report) {
+// The node as the rig keeps it: its rest transform, what it draws and its own morph weights.
+RigNode rigNode(const tinygltf::Node& node) {
+    RigNode out;
+    out.name = node.name;
     if (node.matrix.size() == 16) {
-        glm::dmat4 m(1.0);
+        out.hasMatrix = true;
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r)
-                m[c][r] = node.matrix[std::size_t(c * 4 + r)];
-        return m;
+                out.matrix[c][r] = node.matrix[std::size_t(c * 4 + r)];
     }
-    glm::dmat4 m(1.0);
     if (node.translation.size() == 3)
-        m = glm::translate(
-            m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+        out.translation = glm::dvec3(node.translation[0], node.translation[1], node.translation[2]);
     if (node.rotation.size() == 4) {
         const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
         const double length = glm::length(q);
-        if (!(length > 1e-6)) {
-            report.error(pointer + "/rotation", "expected a unit quaternion, got length 0");
-            return std::nullopt;
-        }
-        m = m * glm::mat4_cast(q / length);
+        out.rotation = length > 1e-6 ? q / length : glm::dquat(1.0, 0.0, 0.0, 0.0);
     }
-    if (node.scale.size() == 3)
-        m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
-    return m;
+    if (node.scale.size() == 3) out.scale = glm::dvec3(node.scale[0], node.scale[1], node.scale[2]);
+    out.mesh = node.mesh;
+    out.skin = node.skin;
+    out.camera = node.camera;
+    for (double w : node.weights)
+        out.weights.push_back(float(w));
+    out.children = node.children;
+    return out;
 }
 
-// Appends `source` transformed by `world` to the asset.
-// The budget was checked for every instance before any primitive was read (countInstances).
-bool bake(const SourcePrimitive& source, const glm::dmat4& world, const std::string& nodePointer,
-          Reporter& report, MeshAsset& asset) {
+} // namespace
+
+bool bakePrimitive(const RigPrimitive& source, const glm::dmat4& world,
+                   const std::string& nodePointer, Reporter& report, MeshAsset& asset) {
     const glm::dmat3 linear(world);
     const double det = glm::determinant(linear);
     const glm::dmat3 normalMatrix = std::abs(det) > 1e-300 ? glm::inverseTranspose(linear) : linear;
@@ -329,15 +415,21 @@ bool bake(const SourcePrimitive& source, const glm::dmat4& world, const std::str
     return true;
 }
 
-// The nodes to start from: the default scene's, scene 0's, or every node without a parent.
-std::vector<int> rootNodes(const tinygltf::Model& model) {
-    if (!model.scenes.empty()) {
-        const std::size_t scene =
-            model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
-                ? std::size_t(model.defaultScene)
-                : 0;
-        return model.scenes[scene].nodes;
-    }
+namespace {
+
+// The scene drawn: `chosen` when it is not -1, else the default scene, scene 0, or -1 (every
+// node without a parent) for a file without scenes.
+int drawnScene(const tinygltf::Model& model, int chosen) {
+    if (chosen >= 0) return chosen;
+    if (model.scenes.empty()) return -1;
+    return model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
+               ? model.defaultScene
+               : 0;
+}
+
+// The nodes to start from: those of scene `scene`, or every node without a parent for -1.
+std::vector<int> rootNodes(const tinygltf::Model& model, int scene) {
+    if (scene >= 0) return model.scenes[std::size_t(scene)].nodes;
     std::vector<char> isChild(model.nodes.size(), 0);
     for (const tinygltf::Node& node : model.nodes)
         for (int child : node.children)
@@ -425,25 +517,16 @@ std::vector<glm::vec3> smoothNormals(const std::vector<glm::vec3>& positions,
 
 namespace {
 
-// A node that draws a mesh, with its world transform.
-struct Instance {
-    int node = -1;
-    glm::dmat4 world{1.0};
-};
-
-// Walks the scene from its roots, depth first: adds the nodes' lights and lists the nodes that
-// draw a mesh, in drawing order. Reads no vertex data.
-bool walkNodes(const tinygltf::Model& model, Reporter& report, MeshAsset& asset,
-               std::vector<Instance>& instances) {
+// Walks the scene from its roots, depth first: lists the nodes that draw a mesh, in drawing
+// order, and the first node placing each camera. Reads no vertex data.
+bool walkNodes(const tinygltf::Model& model, Reporter& report, MeshRig& rig) {
     struct Visit {
         int node;
-        glm::dmat4 parentWorld;
         int depth;
     };
     std::vector<Visit> stack;
-    const std::vector<int> roots = rootNodes(model);
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-        stack.push_back({*it, glm::dmat4(1.0), 1});
+    for (auto it = rig.roots.rbegin(); it != rig.roots.rend(); ++it)
+        stack.push_back({*it, 1});
     std::vector<char> visited(model.nodes.size(), 0);
     while (!stack.empty()) {
         const Visit visit = stack.back();
@@ -459,23 +542,27 @@ bool walkNodes(const tinygltf::Model& model, Reporter& report, MeshAsset& asset,
         }
         visited[std::size_t(visit.node)] = 1;
         const tinygltf::Node& node = model.nodes[std::size_t(visit.node)];
-        const auto local = localMatrix(node, pointer, report);
-        if (!local) return false;
-        const glm::dmat4 world = visit.parentWorld * *local;
-        addNodeLight(model, node, world, pointer, report, asset);
+        if (node.rotation.size() == 4 &&
+            !(glm::length(glm::dvec4(node.rotation[0], node.rotation[1], node.rotation[2],
+                                     node.rotation[3])) > 1e-6)) {
+            report.error(pointer + "/rotation", "expected a unit quaternion, got length 0");
+            return false;
+        }
         if (node.mesh >= 0) {
             if (std::size_t(node.mesh) >= model.meshes.size()) {
                 report.error(pointer + "/mesh", "refers to a missing mesh");
                 return false;
             }
-            instances.push_back({visit.node, world});
+            rig.instances.push_back(visit.node);
         }
+        if (node.camera >= 0 && std::size_t(node.camera) < rig.cameras.size() &&
+            rig.cameras[std::size_t(node.camera)].node < 0)
+            rig.cameras[std::size_t(node.camera)].node = visit.node;
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
-            stack.push_back({*it, world, visit.depth + 1});
+            stack.push_back({*it, visit.depth + 1});
     }
     return true;
 }
-
 // The vertices and triangle indices one instance of mesh `m` adds, from its accessors' counts
 // (what readPrimitive will read and toTriangles make of it). Accessor references were checked.
 void meshCounts(const tinygltf::Model& model, std::size_t m, std::uint64_t& vertices,
@@ -505,17 +592,17 @@ void meshCounts(const tinygltf::Model& model, std::size_t m, std::uint64_t& vert
 // anything is read: a file whose accessors claim more than the budget is refused at the node
 // that goes over, whatever its buffers hold (an accessor without a buffer view is all zeros
 // and costs nothing in the file).
-bool countInstances(const tinygltf::Model& model, const std::vector<Instance>& instances,
+bool countInstances(const tinygltf::Model& model, const std::vector<int>& instances,
                     Allowance& vertices, Allowance& indices, Reporter& report) {
     std::vector<std::uint64_t> meshVertices(model.meshes.size()), meshIndices(model.meshes.size());
     std::vector<char> counted(model.meshes.size(), 0);
-    for (const Instance& instance : instances) {
-        const std::size_t m = std::size_t(model.nodes[std::size_t(instance.node)].mesh);
+    for (const int node : instances) {
+        const std::size_t m = std::size_t(model.nodes[std::size_t(node)].mesh);
         if (!counted[m]) {
             meshCounts(model, m, meshVertices[m], meshIndices[m]);
             counted[m] = 1;
         }
-        const std::string pointer = "/nodes/" + std::to_string(instance.node);
+        const std::string pointer = "/nodes/" + std::to_string(node);
         for (Allowance* allowance : {&vertices, &indices}) {
             const std::uint64_t amount = allowance == &vertices ? meshVertices[m] : meshIndices[m];
             if (!allowance->take(amount)) {
@@ -533,41 +620,88 @@ bool countInstances(const tinygltf::Model& model, const std::vector<Instance>& i
     return true;
 }
 
+// Every primitive of mesh `m` has the same number of morph targets (glTF 2.0 section 3.7.2.2),
+// which mesh.weights, when given, matches; the mesh's default weights are kept in the rig.
+bool checkMeshWeights(const tinygltf::Model& model, std::size_t m, MeshRig& rig, Reporter& report) {
+    const tinygltf::Mesh& mesh = model.meshes[m];
+    const std::string pointer = "/meshes/" + std::to_string(m);
+    const std::size_t targets = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+    for (std::size_t p = 1; p < mesh.primitives.size(); ++p)
+        if (mesh.primitives[p].targets.size() != targets) {
+            report.error(pointer + "/primitives/" + std::to_string(p) + "/targets",
+                         "has " + std::to_string(mesh.primitives[p].targets.size()) +
+                             " morph targets but primitive 0 has " + std::to_string(targets) +
+                             ", expected the same number");
+            return false;
+        }
+    if (!mesh.weights.empty() && mesh.weights.size() != targets) {
+        report.error(pointer + "/weights", "has " + std::to_string(mesh.weights.size()) +
+                                               " weights for " + std::to_string(targets) +
+                                               " morph targets, expected one per target");
+        return false;
+    }
+    std::vector<float>& weights = rig.meshes[m].weights;
+    weights.assign(targets, 0.0f);
+    for (std::size_t i = 0; i < mesh.weights.size(); ++i)
+        weights[i] = float(mesh.weights[i]);
+    return true;
+}
+
 } // namespace
 
-bool buildGeometry(const tinygltf::Model& model, Allowance& vertices, Allowance& indices,
+bool buildGeometry(const tinygltf::Model& model, int scene, Allowance& vertices, Allowance& indices,
                    Reporter& report, MeshAsset& asset) {
-    std::vector<Instance> instances;
-    if (!walkNodes(model, report, asset, instances)) return false;
-    if (!countInstances(model, instances, vertices, indices, report)) return false;
+    auto rig = std::make_shared<MeshRig>();
+    for (const tinygltf::Node& node : model.nodes)
+        rig->nodes.push_back(rigNode(node));
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        for (int child : model.nodes[n].children)
+            if (child >= 0 && std::size_t(child) < model.nodes.size())
+                rig->nodes[std::size_t(child)].parent = int(n);
+    if (scene >= 0 && std::size_t(scene) >= model.scenes.size()) {
+        std::string names;
+        for (std::size_t s = 0; s < model.scenes.size(); ++s)
+            names += (s ? ", " : "") + std::to_string(s) +
+                     (model.scenes[s].name.empty() ? "" : " \"" + model.scenes[s].name + "\"");
+        report.error("/scenes", "there is no scene " + std::to_string(scene) + "; the file has " +
+                                    (model.scenes.empty() ? "no scenes" : "scenes " + names));
+        return false;
+    }
+    rig->scene = drawnScene(model, scene);
+    rig->roots = rootNodes(model, rig->scene);
+    for (const tinygltf::Scene& s : model.scenes)
+        rig->sceneNames.push_back(s.name);
+    if (!readRigExtras(model, report, *rig)) return false;
+    if (!walkNodes(model, report, *rig)) return false;
+    if (!countInstances(model, rig->instances, vertices, indices, report)) return false;
     // Each mesh is read once, when first instanced.
-    std::vector<std::optional<std::vector<SourcePrimitive>>> meshes(model.meshes.size());
-    for (const Instance& instance : instances) {
-        const std::size_t m = std::size_t(model.nodes[std::size_t(instance.node)].mesh);
-        if (!meshes[m]) {
-            std::vector<SourcePrimitive> primitives(model.meshes[m].primitives.size());
-            for (std::size_t p = 0; p < primitives.size(); ++p)
-                if (!readPrimitive(model, m, p, report, primitives[p])) return false;
-            meshes[m] = std::move(primitives);
-        }
-        const std::string pointer = "/nodes/" + std::to_string(instance.node);
-        for (const SourcePrimitive& source : *meshes[m])
-            if (source.drawable && !bake(source, instance.world, pointer, report, asset))
-                return false;
+    rig->meshes.resize(model.meshes.size());
+    std::vector<char> read(model.meshes.size(), 0);
+    for (const int node : rig->instances) {
+        const std::size_t m = std::size_t(model.nodes[std::size_t(node)].mesh);
+        if (read[m]) continue;
+        read[m] = 1;
+        RigMesh& mesh = rig->meshes[m];
+        mesh.primitives.resize(model.meshes[m].primitives.size());
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+            if (!readPrimitive(model, m, p, report, mesh.primitives[p])) return false;
+        if (!checkMeshWeights(model, m, *rig, report)) return false;
     }
-    if (asset.primitives.empty()) {
-        report.warning("", "the file's scene contains no triangles");
-        asset.boundsMin = asset.boundsMax = glm::vec3(0.0f);
-        return true;
+    // The lights, placed by their nodes at rest.
+    const std::vector<glm::dmat4> worlds = poseNodeWorlds(*rig, {});
+    std::vector<int> stack(rig->roots.rbegin(), rig->roots.rend());
+    while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        const tinygltf::Node& node = model.nodes[std::size_t(n)];
+        addNodeLight(model, node, worlds[std::size_t(n)], "/nodes/" + std::to_string(n), report,
+                     asset);
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+            stack.push_back(*it);
     }
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const MeshPrimitive& p : asset.primitives)
-        for (const MeshVertex& v : p.vertices) {
-            lo = glm::min(lo, v.position);
-            hi = glm::max(hi, v.position);
-        }
-    asset.boundsMin = lo;
-    asset.boundsMax = hi;
+    asset.rig = rig;
+    if (!bakePose(*rig, {}, report, asset)) return false;
+    if (asset.primitives.empty()) report.warning("", "the file's scene contains no triangles");
     return true;
 }
 

@@ -396,7 +396,7 @@ std::vector<int> imageSources(const nlohmann::json& document) {
 }
 
 std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSource& files,
-                              GltfBudget& sceneBudget, Reporter& report) {
+                              GltfBudget& sceneBudget, int scene, Reporter& report) {
     std::string why;
     const auto bytes = files.read(path, why);
     if (!bytes) {
@@ -519,7 +519,7 @@ std::optional<MeshAsset> load(const std::filesystem::path& path, const FileSourc
         asset.images.push_back(std::move(out));
     }
     convertMaterials(model, imageSlots, report, asset);
-    if (!gltf::buildGeometry(model, budget.vertices, budget.indices, report, asset))
+    if (!gltf::buildGeometry(model, scene, budget.vertices, budget.indices, report, asset))
         return std::nullopt;
     if (report.errors > 0) return std::nullopt;
     sceneBudget.vertices -= budget.vertices.used;
@@ -537,10 +537,10 @@ std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileS
 }
 
 std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
-                                  Diagnostics& diagnostics, GltfBudget& sceneBudget) {
+                                  Diagnostics& diagnostics, GltfBudget& sceneBudget, int scene) {
     Reporter report{path.string(), &diagnostics};
     try {
-        return load(path, files, sceneBudget, report);
+        return load(path, files, sceneBudget, scene, report);
     } catch (const std::bad_alloc&) {
         report.error("", "out of memory while loading the glTF file");
     } catch (const std::exception& e) {

@@ -1,6 +1,6 @@
-// The parts of glTF 2.0 core that rmsc does not draw yet (morph targets, skins, animations,
-// the file's cameras, scenes other than the default): one warning each, saying what is drawn
-// instead, so that nothing a file holds is dropped silently (docs/gltf.md).
+// The parts of glTF 2.0 core that rmsc cannot draw as the file means them (skin attributes
+// without a skin): one warning each, saying what is drawn instead, so that nothing a file holds
+// is dropped silently (docs/gltf.md).
 #pragma once
 
 #include "scene/gltf_report.hpp"

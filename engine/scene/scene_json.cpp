@@ -63,8 +63,29 @@ const std::vector<std::string> kCameraKeys = {"position", "target", "up", "fov",
 const std::vector<std::string> kRenderKeys = {"max_steps",  "max_distance", "surface_epsilon",
                                               "background", "ambient",      "exposure"};
 const std::vector<std::string> kMaterialKeys = {"base_color", "metallic", "roughness", "emissive"};
-const std::vector<std::string> kMeshKeys = {"name",       "file",  "position", "rotation",
-                                            "quaternion", "scale", "material"};
+const std::vector<std::string> kMeshKeys = {
+    "name", "file", "position", "rotation", "quaternion", "scale", "material", "animation", "time"};
+
+// "animation" (a glTF animation's name, or its index as text: "0") and "time" (seconds, >= 0) of a
+// mesh.
+void readMeshAnimation(const SceneReader& r, const Json& object, const std::string& pointer,
+                       MeshInstance& mesh) {
+    if (const Json* animation = findMember(object, "animation")) {
+        const std::string at = childPointer(pointer, "animation");
+        if (const auto text = readString(r.json, *animation, at)) {
+            if (text->empty())
+                r.json.error(at, "expected the name or index of an animation of the glTF file, "
+                                 "got \"\"");
+            mesh.animation = *text;
+        }
+    }
+    float time = 0.0f;
+    if (readNumberField(r.json, object, pointer, "time", &time, NumberRange::atLeast(0.0)))
+        mesh.time = time;
+    if (findMember(object, "time") && !findMember(object, "animation"))
+        r.json.warning(childPointer(pointer, "time"),
+                       "\"time\" without \"animation\" has no effect (the rest pose is drawn)");
+}
 
 void readCamera(const SceneReader& r, const Json& object, Camera& camera) {
     const std::string pointer = "/camera";
@@ -198,6 +219,7 @@ void readMeshes(SceneReader& r, const Json& array, std::vector<MeshInstance>& me
         readStringField(r.json, object, meshPointer, "name", &mesh.name);
         readTransform(r.json, object, meshPointer, mesh.transform);
         readMaterialRef(r, object, meshPointer, &mesh.materialOverride);
+        readMeshAnimation(r, object, meshPointer, mesh);
         meshes.push_back(std::move(mesh));
     }
 }

@@ -171,6 +171,10 @@ Json sceneToJsonValue(const Scene& scene) {
         out["file"] = mesh.file.empty() ? mesh.path.generic_string() : mesh.file;
         writeTransform(mesh.transform, out);
         writeMaterialRef(mesh.materialOverride, materialNames, out);
+        if (!mesh.animation.empty()) {
+            out["animation"] = mesh.animation;
+            out["time"] = mesh.time;
+        }
         meshes.push_back(std::move(out));
     }
     root["meshes"] = std::move(meshes);

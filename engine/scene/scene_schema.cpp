@@ -357,7 +357,12 @@ std::vector<ObjectDef> objectDefs() {
          {{"file", "a.gltf"}},
          plus({{"name", string()},
                {"file", path("a .gltf or .glb file")},
-               {"material", described(string(), "overrides the glTF's materials")}},
+               {"material", described(string(), "overrides the glTF's materials")},
+               {"animation",
+                described(string(), "the glTF animation shown, by name or by index as text "
+                                    "(\"0\"); without it the rest pose")},
+               {"time", described(number(NumberRange::atLeast(0.0)),
+                                  "seconds into \"animation\" (default 0)")}},
               transformKeys()),
          {"file"},
          "a placement of a glTF file"},

@@ -1,5 +1,6 @@
 // The inspector for a mesh instance: name, its glTF file (taken only when it loads,
-// editor/mesh_file_edits.hpp), transform and material override (see inspector.hpp).
+// editor/mesh_file_edits.hpp), transform, material override and the glTF animation shown with
+// its time (see inspector.hpp).
 #include "inspector.hpp"
 
 #include "editor/mesh_file_edits.hpp"
@@ -45,6 +46,17 @@ void drawMeshInspector(editor::Document& document, int index, InspectorState& st
     ImGui::Separator();
     if (chooseMaterial(scene, mesh.materialOverride, "(glTF materials)"))
         document.markChanged("Material");
+    ImGui::Separator();
+    // The glTF animation shown and its time: dragging the time scrubs it (each change poses
+    // the mesh again when the scene is prepared).
+    if (ImGui::InputText("animation", &mesh.animation)) document.markChanged("Animation");
+    helpTooltip("The glTF animation shown, by name or index (\"0\"); empty for the rest pose.");
+    float time = float(mesh.time);
+    if (ImGui::DragFloat("time", &time, 0.01f, 0.0f, 1.0e6f, "%.2f s")) {
+        mesh.time = std::max(0.0f, time);
+        document.markChanged("Animation time");
+    }
+    helpTooltip("Seconds into the animation; drag to scrub.");
     drawDuplicateDeleteButtons(commands);
 }
 

@@ -228,6 +228,96 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("truncated glb", ["render", truncated, "-o", out], 1, stderr_has=["truncated.glb"])
     check("no output after failures", not os.path.exists(out) or png_header(out)[:2] == (96, 54))
 
+    # Animation, cameras and scenes of a glTF file: a quad slid 2 units along +x between t = 0
+    # and t = 1 (LINEAR), seen through its own camera; --time, --frames and each refusal, which
+    # names what the file has.
+    quad = struct.pack("<12f", -0.5, -0.5, 0, 0.5, -0.5, 0, 0.5, 0.5, 0, -0.5, 0.5, 0)
+    quad += struct.pack("<6H", 0, 1, 2, 0, 2, 3) + b"\0\0"
+    keys = struct.pack("<2f", 0, 1) + struct.pack("<6f", 0, 0, 0, 2, 0, 0)
+    data = quad + keys
+    import base64
+    animated = {
+        "asset": {"version": "2.0"}, "scene": 0,
+        "scenes": [{"name": "main", "nodes": [0, 1]}],
+        "nodes": [{"mesh": 0, "name": "quad"},
+                  {"camera": 0, "translation": [1, 0, 4]}],
+        "cameras": [{"name": "front", "type": "perspective",
+                     "perspective": {"yfov": 0.9, "znear": 0.1, "zfar": 100}},
+                    {"name": "flat", "type": "orthographic",
+                     "orthographic": {"xmag": 2, "ymag": 2, "znear": 0.1, "zfar": 100}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "animations": [{"name": "slide",
+                        "samplers": [{"input": 2, "output": 3}],
+                        "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}],
+        "buffers": [{"byteLength": len(data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                        {"buffer": 0, "byteOffset": 64, "byteLength": 32}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 4,
+                       "min": [-0.5, -0.5, 0], "max": [0.5, 0.5, 0]},
+                      {"bufferView": 1, "componentType": 5123, "type": "SCALAR", "count": 6},
+                      {"bufferView": 2, "componentType": 5126, "type": "SCALAR", "count": 2,
+                       "min": [0], "max": [1]},
+                      {"bufferView": 2, "byteOffset": 8, "componentType": 5126, "type": "VEC3",
+                       "count": 2}]}
+    anim = write(tmp, "anim.gltf", json.dumps(animated))
+    expect("validate animated glTF", ["validate", anim], 0)
+    frames = os.path.join(tmp, "anim_%04d.png")
+    expect("render frames", ["render", anim, "--frames", "0:2", "--fps", "2", "-o", frames,
+                             "--size", "32x32", "--camera", "front"], 0)
+    images = []
+    for f in range(3):
+        name = os.path.join(tmp, f"anim_{f:04d}.png")
+        check(f"frame {f} written", os.path.exists(name), name)
+        images.append(open(name, "rb").read() if os.path.exists(name) else b"")
+    check("frames differ as the quad moves", len(set(images)) == 3, "some frames are equal")
+    single = os.path.join(tmp, "anim_t1.png")
+    expect("render --time at frame 2's time", ["render", anim, "--time", "1", "--animation",
+                                               "slide", "--camera", "0", "-o", single, "--size",
+                                               "32x32"], 0)
+    check("--time 1 equals frame 2 (t = 2 / 2 fps)",
+          os.path.exists(single) and open(single, "rb").read() == images[2])
+    expect("--animation unknown", ["render", anim, "--time", "1", "--animation", "walk", "-o",
+                                   single], 1,
+           stderr_has=['anim.gltf: there is no animation "walk"; the file has animations 0 "slide"'])
+    expect("--camera unknown", ["render", anim, "--camera", "7", "-o", single], 1,
+           stderr_has=['there is no camera "7"; the file has cameras 0 "front", 1 "flat" '
+                       '(orthographic)'])
+    expect("--camera orthographic", ["render", anim, "--camera", "flat", "-o", single], 1,
+           stderr_has=['camera 1 "flat" is orthographic; rmsc renders perspective cameras only'])
+    expect("--scene unknown", ["render", anim, "--scene", "2", "-o", single], 1,
+           stderr_has=['/scenes: there is no scene 2; the file has scenes 0 "main"'])
+    expect("--frames without a pattern", ["render", anim, "--frames", "0:1", "-o", single], 2,
+           stderr_has=["expected -o to hold one %d or %04d"])
+    expect("--frames backwards", ["render", anim, "--frames", "3:1", "-o", frames], 2,
+           stderr_has=["--frames: expected A:B"])
+    expect("--time and --frames", ["render", anim, "--time", "1", "--frames", "0:1", "-o",
+                                   frames], 2, stderr_has=["give one or the other"])
+    expect("--time negative", ["render", anim, "--time", "-1", "-o", single], 2,
+           stderr_has=["--time: expected seconds"])
+    expect("--fps without --frames", ["render", anim, "--fps", "3", "-o", single], 2,
+           stderr_has=["--fps is for --frames"])
+    still = os.path.join(SAMPLES, "assets", "cube.gltf")
+    expect("--time on a file without animations", ["render", still, "--time", "1", "-o",
+                                                   single], 1,
+           stderr_has=["the file has no animations"])
+    # In a scene file, each mesh names its animation and time; a bad name is refused at the
+    # mesh, naming the animations the file has.
+    with open(os.path.join(tmp, "anim_scene.json"), "w") as f:
+        f.write(scene(meshes=[{"file": "anim.gltf", "animation": "slide", "time": 0.5},
+                              {"file": "anim.gltf", "position": [0, 2, 0]}]))
+    expect("scene mesh animation", ["render", os.path.join(tmp, "anim_scene.json"), "-o", single,
+                                    "--size", "32x32", "--time", "0.25"], 0)
+    expect("--animation on a scene", ["render", os.path.join(tmp, "anim_scene.json"),
+                                      "--animation", "slide", "-o", single], 2,
+           stderr_has=["--animation is for a .gltf or .glb file"])
+    with open(os.path.join(tmp, "anim_bad.json"), "w") as f:
+        f.write(scene(meshes=[{"file": "anim.gltf", "animation": "walk"}]))
+    expect("scene mesh unknown animation", ["validate", os.path.join(tmp, "anim_bad.json")], 1,
+           stderr_has=['/meshes/0/animation: "anim.gltf": there is no animation "walk"; the '
+                       'file has animations 0 "slide"'])
+
     # A glTF opened directly with more KHR_lights_punctual lights than a scene may hold is
     # refused like a scene with too many lights, by validate and render alike (it was drawn
     # with the extra lights dropped, exit 0).

@@ -75,6 +75,11 @@ constexpr std::uint64_t kGltfIndices = 48u << 20;  // per accessor and per asset
 // accessors' counts, texels from the image headers, buffer bytes from "byteLength".
 constexpr std::uint64_t kGltfTexels = std::uint64_t(1) << 27;      // decoded, per file
 constexpr std::uint64_t kGltfBufferBytes = std::uint64_t(1) << 30; // buffers of one file
+// Morph targets of one primitive, joints of one skin, and animation keys of one file (the key
+// times of all its animations' samplers together): posing costs vertices x (targets + joints).
+constexpr int kGltfMorphTargets = 64;
+constexpr int kGltfJoints = 256;
+constexpr std::uint64_t kGltfAnimationKeys = 1u << 20;
 // What the glTF files of one scene (meshes and shell proxies) may hold together.
 constexpr std::uint64_t kSceneGltfVertices = 32u << 20;
 constexpr std::uint64_t kSceneGltfIndices = 96u << 20;

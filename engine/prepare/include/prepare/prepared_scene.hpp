@@ -9,6 +9,7 @@
 #include "prepare/shell_proxy.hpp"
 #include "scene/material_textures.hpp"
 #include "scene/mesh_asset.hpp"
+#include "scene/mesh_pose.hpp"
 #include "scene/scene.hpp"
 #include "scene/sky_image.hpp"
 #include "sdf/cell_pruning.hpp"
@@ -39,7 +40,8 @@ enum class ShellMode { AsScene, Fullscreen };
 
 struct PreparedScene {
     Scene scene;
-    std::vector<MeshAsset> assets;     // distinct glTF files
+    std::vector<MeshAsset> assets;     // distinct glTF files (and poses of them)
+    std::vector<MeshPose> assetPoses;  // per assets: the animation and time it is posed at
     std::vector<int> instanceAsset;    // per scene.meshes: index into assets
     SdfProgram sdf;                    // the fullscreen pass's: empty without an SDF tree
     std::vector<PreparedShell> shells; // the subtrees drawn through proxy meshes
@@ -77,9 +79,11 @@ std::vector<Light> gatherLights(const Scene& scene, const std::vector<MeshAsset>
                                 const std::vector<int>& instanceAsset, Diagnostics& diagnostics);
 
 // Opens what the user named: a scene file (.json), a glTF model (.gltf / .glb, opened as a
-// scene with a default light and a framing camera), or, for an empty path, the built-in demo.
+// scene with a default light and a framing camera; `gltfScene` picks the glTF scene drawn, -1
+// the file's default), or, for an empty path, the built-in demo.
 std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagnostics& diagnostics,
-                                       ShellMode shellMode = ShellMode::AsScene);
+                                       ShellMode shellMode = ShellMode::AsScene,
+                                       int gltfScene = -1);
 
 // Path of the built-in demo scene among the embedded sample files.
 inline constexpr const char* kDemoScenePath = "samples/scenes/demo.json";

@@ -36,4 +36,8 @@ struct GpuMesh {
 
 GpuMesh uploadMesh(const MeshAsset& asset);
 
+// Writes the vertices of `asset` (posed again: the same primitives with the same vertex
+// counts, scene/mesh_pose.hpp) over those `mesh` was uploaded with, and their centres.
+void updateMeshVertices(const MeshAsset& asset, GpuMesh& mesh);
+
 } // namespace rmsc

@@ -8,17 +8,27 @@
 #include "scene/gltf_report.hpp"
 #include "scene/gltf_tinygltf.hpp"
 #include "scene/mesh_asset.hpp"
+#include "scene/mesh_rig.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace rmsc::gltf {
 
-// Fills asset.primitives, boundsMin, boundsMax and asset.lights. Takes the instanced vertices
-// and triangle indices out of `vertices` and `indices`, from the accessors' counts, before
-// reading any; returns false after reporting an error.
-bool buildGeometry(const tinygltf::Model& model, Allowance& vertices, Allowance& indices,
+// Fills asset.rig (of scene `scene`, -1 for the default one), asset.lights and, baked at the
+// rest pose, asset.primitives, boundsMin and boundsMax. Takes the instanced vertices and
+// triangle indices out of `vertices` and `indices`, from the accessors' counts, before reading
+// any; returns false after reporting an error.
+bool buildGeometry(const tinygltf::Model& model, int scene, Allowance& vertices, Allowance& indices,
                    Reporter& report, MeshAsset& asset);
+
+// Appends `source` (positions, normals and tangents in its mesh's space) transformed by `world`
+// to asset.primitives: normals by the inverse transpose, the winding flipped for a mirroring
+// transform, missing normals and tangents computed. Reports at `nodePointer` and returns false
+// when the transform makes positions infinite or NaN.
+bool bakePrimitive(const RigPrimitive& source, const glm::dmat4& world,
+                   const std::string& nodePointer, Reporter& report, MeshAsset& asset);
 
 // Area-weighted vertex normals of an indexed triangle list (flat where no vertex is shared);
 // vertices in no triangle, or only in degenerate ones, get +y.

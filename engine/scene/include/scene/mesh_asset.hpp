@@ -97,15 +97,21 @@ struct MeshMaterial {
     bool unlit = false;       // KHR_materials_unlit: the base colour as it is, no lighting
 };
 
-// Triangles in the asset's root space (node transforms applied), always indexed.
+// Triangles in the asset's root space (node transforms, morph weights and skins of its pose
+// applied), always indexed.
 struct MeshPrimitive {
     std::vector<MeshVertex> vertices;
     std::vector<std::uint32_t> indices;
     int material = -1; // index into MeshAsset::materials, -1 for the glTF default material
 };
 
+struct MeshRig; // scene/mesh_rig.hpp
+
 struct MeshAsset {
     std::filesystem::path path;
+    // What posing needs (mesh_pose.hpp): the file's meshes, nodes, skins, animations, cameras.
+    // Shared by copies of the asset; never changed after loading.
+    std::shared_ptr<const MeshRig> rig;
     std::vector<MeshPrimitive> primitives;
     std::vector<MeshMaterial> materials;
     std::vector<Image> images;
@@ -128,8 +134,11 @@ struct GltfBudget {
 // file and the glTF element ("/meshes/0/primitives/1/indices"); returns nullopt on error.
 // Checked before anything is allocated: the per-file limits (vertices, indices, texels, buffer
 // bytes) and what is left of `sceneBudget`, from which the asset's share is then taken.
+// `scene`: the glTF scene to draw, -1 for the file's default one (a scene that does not exist is
+// refused, listing those that do). The asset is baked at its rest pose (mesh_pose.hpp poses it).
 std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
-                                  Diagnostics& diagnostics, GltfBudget& sceneBudget);
+                                  Diagnostics& diagnostics, GltfBudget& sceneBudget,
+                                  int scene = -1);
 // The same with a scene budget of its own (a glTF file opened by itself).
 std::optional<MeshAsset> loadGltf(const std::filesystem::path& path, const FileSource& files,
                                   Diagnostics& diagnostics);

@@ -69,7 +69,11 @@ struct MeshInstance {
     std::filesystem::path path; // resolved against the scene file's folder
     Transform transform;
     int materialOverride = -1; // index into Scene::materials, or -1 for the glTF's own
-    std::string pointer;       // JSON pointer of this instance, for messages
+    // The glTF animation it shows, by name or index as written ("" = the file's rest pose),
+    // and at which time in seconds.
+    std::string animation;
+    double time = 0.0;
+    std::string pointer; // JSON pointer of this instance, for messages
 };
 
 struct Scene {
