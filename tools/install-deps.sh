@@ -19,6 +19,9 @@ packages=(
   libgtest-dev                        # unit and GPU tests
   clang libclang-rt-14-dev            # libFuzzer harnesses (tools/fuzz.sh): clang and its fuzzer runtime
   python3-jsonschema                  # the CLI test checks the samples against docs/scene.schema.json
+  pybind11-dev python3-dev            # the Python module (python/): bindings, Python's headers
+  python3-numpy                       # the Python module's images are NumPy arrays
+  python3-pytest                      # the Python module's tests
 )
 if [ "$(id -u)" -ne 0 ]; then sudo=sudo; else sudo=; fi
 export DEBIAN_FRONTEND=noninteractive

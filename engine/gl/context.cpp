@@ -52,6 +52,9 @@ class EglContext final : public HeadlessContext {
         if (!secondary_) eglTerminate(display_);
     }
     std::string_view backendName() const override { return "egl"; }
+    bool makeCurrent() override {
+        return eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE;
+    }
 
     bool create(bool debug, bool secondary, std::string& error) {
         secondary_ = secondary;
@@ -105,6 +108,9 @@ class OsMesaContext final : public HeadlessContext {
         if (context_) OSMesaDestroyContext(context_);
     }
     std::string_view backendName() const override { return "osmesa"; }
+    bool makeCurrent() override {
+        return OSMesaMakeCurrent(context_, pixel_, GL_UNSIGNED_BYTE, 1, 1) == GL_TRUE;
+    }
 
     bool create(bool debug, bool secondary, std::string& error) {
         const int attributes[] = {OSMESA_FORMAT,

@@ -14,9 +14,10 @@ FrameTargets createFrameTargets(int width, int height) {
             createConeTarget(width, height), createDisplayTarget(width, height)};
 }
 
-Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow, GridPass grid)
+Renderer::Renderer(ShaderFiles files, PostPass post, ShadowPass shadow, GridPass grid,
+                   HostPass host)
     : files_(std::move(files)), post_(std::move(post)), grid_(std::move(grid)),
-      shadow_(std::move(shadow)) {
+      shadow_(std::move(shadow)), host_(std::move(host)) {
     frameBuffer_ = gl::createBufferWithData(sizeof(GpuFrame), nullptr);
     statistics_ = gl::createBufferWithData(4 * sizeof(std::uint32_t), nullptr);
     for (gl::Query& timer : timers_)
@@ -37,7 +38,10 @@ std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) 
     if (!shadow) return std::nullopt;
     std::optional<GridPass> grid = GridPass::create(files, error);
     if (!grid) return std::nullopt;
-    return Renderer(std::move(files), std::move(*post), std::move(*shadow), std::move(*grid));
+    std::optional<HostPass> host = HostPass::create(files, error);
+    if (!host) return std::nullopt;
+    return Renderer(std::move(files), std::move(*post), std::move(*shadow), std::move(*grid),
+                    std::move(*host));
 }
 
 namespace {
@@ -124,28 +128,22 @@ void limitRows(const RenderRows* rows, int begin, int end, int width) {
 
 } // namespace
 
-void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderSettings& settings,
-                      FrameTargets& targets, const RenderRows* rows) {
+const SdfPasses& Renderer::beginFrame(const GpuScene& scene, const FrameCamera& frameCamera,
+                                      bool zeroToOneDepth, const RenderSettings& settings,
+                                      int width, int height,
+                                      std::vector<const ShellPass*>& shells) {
     std::string error;
     if (!prepare(scene, error)) throw std::runtime_error("the SDF shaders do not build: " + error);
     const SdfPasses& sdf = sdfPasses_.find(scene.sdfMap)->second;
-    const int width = targets.display.width;
-    const int height = targets.display.height;
-    const FrameCamera frameCamera = makeFrameCamera(camera, width, height);
     GpuFrame frame = packFrame(frameCamera, settings, width, height);
     packEnvironment(scene.environment, scene.skyLevels, frame);
     frame.shadowMap.x = settings.shadows.enabled ? float(scene.shadowMapSize) : 0.0f;
     frame.viewport.z = float(sdfNearestLeaf(scene.sdf, frameCamera.position)); // ~0u: 2^32
+    frame.viewport.w = zeroToOneDepth ? 1.0f : 0.0f;
     glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(GpuFrame), &frame);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frameBuffer_.id());
     scene.bindBuffers();
 
-    auto timed = [this](Pass pass, auto&& draw) {
-        glBeginQuery(GL_TIME_ELAPSED, timers_[std::size_t(pass)].id());
-        draw();
-        glEndQuery(GL_TIME_ELAPSED);
-    };
-    std::vector<const ShellPass*> shells;
     for (const GpuShell& shell : scene.shells) {
         const auto found = shellPasses_.find(shellKey(scene, shell));
         if (found == shellPasses_.end()) throw std::logic_error("a shell's programs are missing");
@@ -156,9 +154,35 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchStatisticsBinding, statistics_.id());
 
     glDisable(GL_SCISSOR_TEST);
-    timed(Pass::Shadow, [&] { shadow_.draw(scene, shells); });
+    glBeginQuery(GL_TIME_ELAPSED, timers_[std::size_t(Pass::Shadow)].id());
+    shadow_.draw(scene, shells);
+    glEndQuery(GL_TIME_ELAPSED);
     glBindTextureUnit(kShadowMapUnit, shadow_.maps().id());
     glBindTextureUnit(kSkyImageUnit, scene.skyImage.id());
+    return sdf;
+}
+
+void Renderer::endFrame() const {
+    glDisable(GL_SCISSOR_TEST);
+    glBindTextureUnit(kShadowMapUnit, 0);
+    glBindTextureUnit(kSkyImageUnit, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glUseProgram(0);
+}
+
+void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderSettings& settings,
+                      FrameTargets& targets, const RenderRows* rows) {
+    const int width = targets.display.width;
+    const int height = targets.display.height;
+    const FrameCamera frameCamera = makeFrameCamera(camera, width, height);
+    std::vector<const ShellPass*> shells;
+    const SdfPasses& sdf = beginFrame(scene, frameCamera, false, settings, width, height, shells);
+
+    auto timed = [this](Pass pass, auto&& draw) {
+        glBeginQuery(GL_TIME_ELAPSED, timers_[std::size_t(pass)].id());
+        draw();
+        glEndQuery(GL_TIME_ELAPSED);
+    };
     if (rows) limitRows(rows, rows->begin, rows->end, width);
     timed(Pass::Raster, [&] { sdf.raster.draw(scene, settings.background, targets.raster); });
     timed(Pass::Shell, [&] {
@@ -185,11 +209,30 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     timed(Pass::Blend, [&] { sdf.raster.drawBlended(scene, frameCamera, targets.combined); });
     if (rows) limitRows(rows, rows->postBegin, rows->postEnd, width);
     timed(Pass::Post, [&] { post_.draw(targets.combined, targets.display); });
-    glDisable(GL_SCISSOR_TEST);
-    glBindTextureUnit(kShadowMapUnit, 0);
-    glBindTextureUnit(kSkyImageUnit, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glUseProgram(0);
+    endFrame();
+}
+
+void Renderer::renderOverHost(const GpuScene& scene, const FrameCamera& camera, bool zeroToOneDepth,
+                              const RenderSettings& settings, FrameTargets& targets,
+                              const HostTarget& host) {
+    const int width = targets.combined.width;
+    const int height = targets.combined.height;
+    // Nothing past the host's far plane: its depth could not hold it.
+    RenderSettings bounded = settings;
+    bounded.maxDistance = std::min(settings.maxDistance, camera.farPlane);
+    std::vector<const ShellPass*> shells;
+    const SdfPasses& sdf =
+        beginFrame(scene, camera, zeroToOneDepth, bounded, width, height, shells);
+    if (!shells.empty())
+        throw std::logic_error("renderOverHost: shells must be prepared for the fullscreen pass");
+    host_.importDepth(host, glm::inverse(camera.viewProjection), targets.raster);
+    if (conePass_)
+        sdf.cone.draw(targets.cone);
+    else
+        targets.cone.clear();
+    sdf.march.draw(targets.raster, targets.cone, targets.combined);
+    host_.composite(targets.combined, host);
+    endFrame();
 }
 
 MarchStatistics Renderer::lastMarchStatistics() const {

@@ -13,7 +13,8 @@ layout(std140, binding = FRAME_BINDING) uniform FrameBlock {
     vec4 march;          // x = max steps, y = max distance, z = surface epsilon,
                          // w = over-relaxation of the march steps
     vec4 viewport;       // x = width, y = height, z = the instruction of the SDF part nearest
-                         // the camera (common/sdf_parts_loop.glsl; 2^32 when none)
+                         // the camera (common/sdf_parts_loop.glsl; 2^32 when none), w = 1 when
+                         // clip-space depth runs from 0 to 1 (glClipControl), 0 for -1 to 1
     vec4 sky;            // x = sky type (0 none, 1 constant, 2 gradient, 3 image), y = intensity,
                          // z = image sky's highest mip level, w = image rotation (radians)
     vec4 skyZenith;      // rgb = constant sky colour, or the gradient's zenith
@@ -34,8 +35,11 @@ vec3 frustumRay(vec2 windowPosition) {
     return mix(bottom, top, uv.y);
 }
 
-// Window-space depth [0, 1] of a world position, as the rasterizer would write it.
+// Window-space depth [0, 1] of a world position, as the rasterizer would write it with
+// glDepthRange(0, 1): z/w mapped from [-1, 1] (OpenGL's default clip space), or z/w itself
+// under glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) (OpenGL 4.5 spec, section 13.8).
 float windowDepth(vec3 worldPosition) {
     vec4 clip = frame.viewProjection * vec4(worldPosition, 1.0);
-    return clip.z / clip.w * 0.5 + 0.5;
+    float ndcZ = clip.z / clip.w;
+    return frame.viewport.w > 0.5 ? ndcZ : ndcZ * 0.5 + 0.5;
 }

@@ -18,6 +18,8 @@ class HeadlessContext {
   public:
     virtual ~HeadlessContext() = default;
     virtual std::string_view backendName() const = 0;
+    // Makes this context current on the calling thread again; false if the back end refuses.
+    virtual bool makeCurrent() = 0;
     std::string renderer() const; // GL_RENDERER and GL_VERSION, for logs
 };
 

@@ -56,6 +56,9 @@ struct ProgramTraits {
 struct QueryTraits {
     static void destroy(GLuint id) { glDeleteQueries(1, &id); }
 };
+struct SamplerTraits {
+    static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
+};
 
 using Buffer = Handle<BufferTraits>;
 using Texture = Handle<TextureTraits>;
@@ -64,6 +67,7 @@ using VertexArray = Handle<VertexArrayTraits>;
 using Shader = Handle<ShaderTraits>;
 using Program = Handle<ProgramTraits>;
 using Query = Handle<QueryTraits>;
+using Sampler = Handle<SamplerTraits>;
 
 inline Buffer createBuffer() {
     GLuint id = 0;
@@ -89,6 +93,12 @@ inline Query createQuery(GLenum target) {
     GLuint id = 0;
     glCreateQueries(target, 1, &id);
     return Query(id);
+}
+
+inline Sampler createSampler() {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    return Sampler(id);
 }
 
 // A buffer holding `size` bytes of `data`, updatable with glNamedBufferSubData.

@@ -51,7 +51,8 @@ struct GpuFrame {
     glm::vec4 ambient;        // rgb = ambient light
     glm::vec4 march;          // x = max steps, y = max distance, z = surface epsilon,
                               // w = march relaxation (kSdfMarchRelaxation)
-    glm::vec4 viewport;       // x = width, y = height
+    glm::vec4 viewport;       // x = width, y = height, z = nearest SDF part, w = 1 for
+                              // zero-to-one clip depth (host frames), else 0
     glm::vec4 sky;            // x = SkyType, y = intensity, z = image's top mip level, w = rotation
     glm::vec4 skyZenith;      // rgb = constant colour or gradient zenith
     glm::vec4 skyHorizon;     // rgb = gradient horizon

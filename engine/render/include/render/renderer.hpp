@@ -8,6 +8,7 @@
 #include "render/gbuffer.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/grid_pass.hpp"
+#include "render/host_pass.hpp"
 #include "render/march_pass.hpp"
 #include "render/post_pass.hpp"
 #include "render/raster_pass.hpp"
@@ -88,6 +89,15 @@ class Renderer {
     // std::runtime_error if its shaders do not build, which is a bug in rmsc, not in the scene).
     void render(const GpuScene& scene, const Camera& camera, const RenderSettings& settings,
                 FrameTargets& targets, const RenderRows* rows = nullptr);
+    // Draws the scene's SDF objects into a host program's framebuffer (render/host_pass.hpp)
+    // through the host's camera (render/host_camera.hpp): the shadow, cone and march passes
+    // over the host's depth instead of the raster and shell passes, then the hits into the
+    // host's colour and depth. The scene's glTF meshes cast shadows but are not drawn (the host
+    // draws its own), nor are the blend, grid and post passes run. `targets` are the viewport's
+    // size. Throws std::runtime_error as render() does.
+    void renderOverHost(const GpuScene& scene, const FrameCamera& camera, bool zeroToOneDepth,
+                        const RenderSettings& settings, FrameTargets& targets,
+                        const HostTarget& host);
     // Waits for the last frame and returns its pass times.
     PassTimes lastPassTimes() const;
     // Waits for the last frame and returns how many fragments marched.
@@ -103,6 +113,13 @@ class Renderer {
     void setGroundGrid(bool on) { groundGrid_ = on; }
 
   private:
+    // What both kinds of frame do first: prepare, the frame UBO, the buffers and the shadow
+    // pass. Returns the scene's SDF passes and its shells' passes.
+    const SdfPasses& beginFrame(const GpuScene& scene, const FrameCamera& frameCamera,
+                                bool zeroToOneDepth, const RenderSettings& settings, int width,
+                                int height, std::vector<const ShellPass*>& shells);
+    void endFrame() const;
+
     ShaderFiles files_;
     std::map<std::string, SdfPasses, std::less<>> sdfPasses_; // by map text
     struct CachedShellPass {
@@ -118,11 +135,12 @@ class Renderer {
     PostPass post_;
     GridPass grid_;
     ShadowPass shadow_;
+    HostPass host_;
     gl::Buffer frameBuffer_; // GpuFrame uniform block
     gl::Buffer statistics_;  // four uints: MarchStatistics (evaluations in two words)
     std::array<gl::Query, std::size_t(Pass::Count)> timers_;
 
-    Renderer(ShaderFiles files, PostPass post, ShadowPass shadow, GridPass grid);
+    Renderer(ShaderFiles files, PostPass post, ShadowPass shadow, GridPass grid, HostPass host);
 };
 
 } // namespace rmsc
