@@ -17,8 +17,9 @@ group whose every child is cut does not compile), presses Ctrl+S and checks the 
 turns the fog on in the Render tab's Environment section and saves successfully.
 A fifth run selects two objects (a click in the Scene panel, a Shift+click in the view), groups
 them into a smooth union from the Edit menu, undoes and redoes that, copies the group, saves,
-opens a second scene and pastes the group into it; the test checks both saved files and that
-the window outlines every selected object.
+opens a second scene, pastes the group into it and moves the scene's pillar along X with Ctrl
+held (snapping); the test checks both saved files and that the window outlines every selected
+object.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -304,6 +305,12 @@ def select_run(rmsc, source, tmp, xvfb_run, check):
                   base)
             check("with its material", base.get("material") == "grey" and
                   group["children"][0].get("material") == "red", group)
+    pillar = children[0] if children else {}
+    moved = pillar.get("position", [1, 0.8, 0])[0] - 1.0
+    steps = moved / 0.1
+    check("the pillar moved along X with Ctrl held, by whole steps of 0.1 m",
+          moved > 0.05 and abs(steps - round(steps)) < 1e-3, pillar)
+    check("and only along X", pillar.get("position", [0, 0, 0])[1:] == [0.8, 0], pillar)
     materials = pasted.get("materials", {})
     check("the second scene's own grey is kept, the first scene's red is added",
           sorted(materials) == ["grey", "red"] and
