@@ -7,6 +7,7 @@
 #include "scene/scene_json.hpp"
 #include "scene/scene_paths.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace rmsc::editor {
@@ -31,6 +32,7 @@ void Document::markChanged(const std::string& label) {
     if (!pending_) {
         pendingLabel_ = label;
         committedSelection_ = selection; // what undo selects again: the selection of the edit
+        committedAlso_ = alsoSelected;
     }
     pending_ = true;
     ++revision_;
@@ -39,30 +41,57 @@ void Document::markChanged(const std::string& label) {
 void Document::commit() {
     if (!pending_) return;
     pending_ = false;
-    if (!selectionValid(scene_, selection)) selection = Selection::none();
+    tidySelection();
     history_.resize(position_); // a new edit drops the redo branch
     if (savedPosition_ > position_) savedPosition_ = std::numeric_limits<std::size_t>::max();
-    history_.push_back({pendingLabel_, committed_, scene_, committedSelection_, selection});
+    history_.push_back({pendingLabel_, committed_, scene_, committedSelection_, selection,
+                        committedAlso_, alsoSelected});
     position_ = history_.size();
     committed_ = scene_;
     committedSelection_ = selection;
+    committedAlso_ = alsoSelected;
+}
+
+void Document::tidySelection() {
+    if (!selectionValid(scene_, selection)) selection = Selection::none();
+    std::vector<Selection> kept;
+    for (const Selection& item : alsoSelected)
+        if (!item.empty() && item != selection && selectionValid(scene_, item) &&
+            std::find(kept.begin(), kept.end(), item) == kept.end())
+            kept.push_back(item);
+    alsoSelected = std::move(kept);
+    if (selection.empty() && !alsoSelected.empty()) {
+        selection = alsoSelected.back();
+        alsoSelected.pop_back();
+    }
 }
 
 void Document::revertPending() {
     if (!pending_) return;
     pending_ = false;
     scene_ = committed_;
-    if (!selectionValid(scene_, selection)) selection = Selection::none();
+    tidySelection();
     ++revision_;
 }
 
 void Document::apply(const std::string& label,
                      const std::function<void(Scene&, Selection&)>& edit) {
+    applyToSelection(label, [&](Scene& scene, Selection& active, std::vector<Selection>& also) {
+        also.clear();
+        edit(scene, active);
+    });
+}
+
+void Document::applyToSelection(
+    const std::string& label,
+    const std::function<void(Scene&, Selection&, std::vector<Selection>&)>& edit) {
     commit();
     const Selection before = selection;
-    edit(scene_, selection);
+    const std::vector<Selection> alsoBefore = alsoSelected;
+    edit(scene_, selection, alsoSelected);
     markChanged(label);
     committedSelection_ = before; // undo selects what was selected before the edit changed it
+    committedAlso_ = alsoBefore;
     commit();
 }
 
@@ -79,8 +108,10 @@ bool Document::undo() {
     const Step& step = history_[--position_];
     scene_ = step.before;
     selection = step.selectionBefore;
+    alsoSelected = step.alsoBefore;
     committed_ = scene_;
     committedSelection_ = selection;
+    committedAlso_ = alsoSelected;
     ++revision_;
     return true;
 }
@@ -91,8 +122,10 @@ bool Document::redo() {
     const Step& step = history_[position_++];
     scene_ = step.after;
     selection = step.selectionAfter;
+    alsoSelected = step.alsoAfter;
     committed_ = scene_;
     committedSelection_ = selection;
+    committedAlso_ = alsoSelected;
     ++revision_;
     return true;
 }
@@ -135,13 +168,16 @@ void Document::reset(Scene scene, std::filesystem::path file) {
     position_ = savedPosition_ = 0;
     pending_ = false;
     selection = committedSelection_ = Selection::none();
+    alsoSelected.clear();
+    committedAlso_.clear();
     ++revision_;
 }
 
 void Document::reloadFromDisk(Scene scene) {
     commit();
     scene_ = std::move(scene);
-    if (!selectionValid(scene_, selection)) selection = Selection::none();
+    alsoSelected.clear(); // the file may have moved nodes: keep only the active one, if valid
+    tidySelection();
     markChanged("Reload from disk");
     commit();
     savedPosition_ = position_;

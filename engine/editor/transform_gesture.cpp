@@ -46,10 +46,24 @@ glm::vec3 moveDelta(const TransformGesture& gesture, glm::vec2 mouse) {
         worldToScreen(gesture.view, origin + axis) - worldToScreen(gesture.view, origin);
     const float length2 = glm::dot(screenAxis, screenAxis);
     if (length2 < 1e-6f) return glm::vec3(0.0f); // the axis points at the camera
-    return axis * (glm::dot(mouse - gesture.startMouse, screenAxis) / length2);
+    const float along = glm::dot(mouse - gesture.startMouse, screenAxis) / length2;
+    return axis * (gesture.snap ? snapToStep(along, kSnapDistance) : along);
+}
+
+// The world movement with snapping: a free move in steps along each world axis.
+glm::vec3 snappedMoveDelta(const TransformGesture& gesture, glm::vec2 mouse) {
+    glm::vec3 delta = moveDelta(gesture, mouse);
+    if (gesture.snap && gesture.axis < 0)
+        for (int i = 0; i < 3; ++i)
+            delta[i] = snapToStep(delta[i], kSnapDistance);
+    return delta;
 }
 
 } // namespace
+
+float snapToStep(float value, float step) {
+    return std::round(value / step) * step;
+}
 
 glm::vec2 worldToScreen(const GestureView& view, glm::vec3 world) {
     const glm::vec4 clip = view.viewProjection * glm::vec4(world, 1.0f);
@@ -101,11 +115,13 @@ Transform gestureTransform(const TransformGesture& gesture, glm::vec2 mouse) {
     case GestureKind::Move: {
         // The world movement seen from the parent's frame.
         const glm::mat3 parent(gesture.parentWorld);
-        result.position = gesture.start.position + glm::inverse(parent) * moveDelta(gesture, mouse);
+        result.position =
+            gesture.start.position + glm::inverse(parent) * snappedMoveDelta(gesture, mouse);
         break;
     }
     case GestureKind::Rotate: {
-        const float angle = screenAngle(gesturePivot(gesture), gesture.startMouse, mouse);
+        float angle = screenAngle(gesturePivot(gesture), gesture.startMouse, mouse);
+        if (gesture.snap) angle = snapToStep(angle, kSnapAngle);
         const glm::quat worldTurn = glm::angleAxis(angle, rotationAxis(gesture));
         // A world-space turn seen from the parent's frame, P^-1 * turn * P, applied after the
         // object's own rotation.
@@ -115,7 +131,8 @@ Transform gestureTransform(const TransformGesture& gesture, glm::vec2 mouse) {
         break;
     }
     case GestureKind::Scale: {
-        const float factor = scaleFactor(gesturePivot(gesture), gesture.startMouse, mouse);
+        float factor = scaleFactor(gesturePivot(gesture), gesture.startMouse, mouse);
+        if (gesture.snap) factor = std::max(kSnapScale, snapToStep(factor, kSnapScale));
         if (gesture.axis < 0)
             result.scale = gesture.start.scale * factor;
         else

@@ -19,8 +19,9 @@ void handleCamera(const InputState& input, const Rect& viewport, bool gestureAct
         fly.moveForward = float(w) - float(s);
         fly.moveRight = float(d) - float(a);
         fly.moveUp = float(space);
-        // Left Shift alone flies down; held with another movement key it means "fast".
-        if (input.held(GLFW_KEY_LEFT_SHIFT) && !(w || s || a || d || space))
+        // Left Shift alone flies down while the right button looks around (without it, Shift
+        // is for Shift+click, which must not move the view); with a movement key it is "fast".
+        if (input.held(GLFW_KEY_LEFT_SHIFT) && input.buttons[1] && !(w || s || a || d || space))
             fly.moveUp = -1.0f;
         else
             fly.fast = input.shift();

@@ -1,6 +1,7 @@
-// The fly camera's controls: W / A / S / D, Space and Left Shift fly (Shift with a movement key
-// is fast), Q / E roll, the right button held looks around, the wheel sets the speed, Alt + left
-// drag orbits around the selection; and framing the selection (F).
+// The fly camera's controls: W / A / S / D, Space and Left Shift (while the right button is
+// held) fly (Shift with a movement key is fast), Q / E roll, the right button held looks around,
+// the wheel sets the speed, Alt + left drag orbits around the selection; and framing the
+// selection (F).
 #pragma once
 
 #include "editor_session.hpp"

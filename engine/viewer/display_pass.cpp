@@ -14,6 +14,7 @@ std::optional<DisplayPass> DisplayPass::create(const ShaderFiles& files, std::st
     pass.emptyVertexArray_ = gl::createVertexArray();
     pass.mode_ = uniformLocation(pass.program_, "uMode");
     pass.selected_ = uniformLocation(pass.program_, "uSelected");
+    pass.selectedCount_ = uniformLocation(pass.program_, "uSelectedCount");
     pass.depthRange_ = uniformLocation(pass.program_, "uDepthRange");
     pass.maxSteps_ = uniformLocation(pass.program_, "uMaxSteps");
     pass.viewportSize_ = uniformLocation(pass.program_, "uViewportSize");
@@ -34,7 +35,15 @@ void DisplayPass::draw(const DisplayInput& input) const {
     glDisable(GL_CULL_FACE);
     glUseProgram(program_.id());
     glProgramUniform1i(program_.id(), mode_, int(input.mode));
-    glProgramUniform2ui(program_.id(), selected_, input.selectedFirst, input.selectedLast);
+    std::vector<GLuint> ranges;
+    for (const auto& [first, last] : input.selected) {
+        if (int(ranges.size()) == 2 * kOutlinedRanges) break;
+        ranges.push_back(first);
+        ranges.push_back(last);
+    }
+    if (!ranges.empty())
+        glProgramUniform2uiv(program_.id(), selected_, GLsizei(ranges.size() / 2), ranges.data());
+    glProgramUniform1i(program_.id(), selectedCount_, int(ranges.size() / 2));
     glProgramUniform2f(program_.id(), depthRange_, input.nearPlane, input.farPlane);
     glProgramUniform1f(program_.id(), maxSteps_, float(input.maxSteps));
     glProgramUniform2f(program_.id(), viewportSize_, float(input.width), float(input.height));

@@ -9,15 +9,22 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rmsc::app {
 
 enum class ViewMode { Color = 0, Normals = 1, Depth = 2, ObjectId = 3, MarchSteps = 4 };
 
+// How many id ranges the display pass outlines (the shader's uSelected array): the objects of a
+// selection beyond these are not outlined.
+constexpr int kOutlinedRanges = 32;
+
 struct DisplayInput {
     const FrameTargets* frame = nullptr;
     ViewMode mode = ViewMode::Color;
-    unsigned selectedFirst = 0, selectedLast = 0; // ids [first, last) to outline
+    // Ids [first, last) to outline, one range per selected object (kOutlinedRanges at most).
+    std::vector<std::pair<unsigned, unsigned>> selected;
     float nearPlane = 0.05f, farPlane = 200.0f;
     int maxSteps = 256;                      // the march-steps heatmap reaches red here
     int x = 0, y = 0, width = 1, height = 1; // viewport in framebuffer pixels, y from the bottom
@@ -32,7 +39,8 @@ class DisplayPass {
   private:
     gl::Program program_;
     gl::VertexArray emptyVertexArray_;
-    GLint mode_ = -1, selected_ = -1, depthRange_ = -1, viewportSize_ = -1, maxSteps_ = -1;
+    GLint mode_ = -1, selected_ = -1, selectedCount_ = -1, depthRange_ = -1, viewportSize_ = -1,
+          maxSteps_ = -1;
 };
 
 } // namespace rmsc::app

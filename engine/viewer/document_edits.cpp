@@ -2,9 +2,13 @@
 #include "document_edits.hpp"
 
 #include "core/limits.hpp"
+#include "editor/clipboard.hpp"
+#include "editor/multi_selection.hpp"
 #include "editor/profile_edits.hpp"
 #include "editor/scene_edits.hpp"
+#include "editor/selection_edits.hpp"
 #include "scene/light_spec.hpp"
+#include "sdf/operations.hpp"
 #include "sdf/profiles.hpp"
 
 #include <string>
@@ -56,9 +60,52 @@ void duplicateSelection(editor::Document& document) {
 
 void deleteSelection(editor::Document& document) {
     if (document.selection.empty()) return;
-    document.apply("Delete", [](Scene& scene, Selection& selection) {
-        selection = editor::deleteSelected(scene, selection);
-    });
+    const std::vector<Selection> items = editor::selectedItems(document);
+    document.applyToSelection("Delete",
+                              [&](Scene& scene, Selection& active, std::vector<Selection>& also) {
+                                  editor::deleteItems(scene, items);
+                                  active = Selection::none();
+                                  also.clear();
+                              });
+}
+
+bool groupSelection(editor::Document& document, SdfOp op) {
+    const std::vector<Selection> items = editor::selectedItems(document);
+    if (editor::outermostSdfPaths(document.scene(), items).empty()) return false;
+    document.applyToSelection("Group into " + operationLabel(op),
+                              [&](Scene& scene, Selection& active, std::vector<Selection>& also) {
+                                  also.clear();
+                                  if (auto group = editor::groupItems(scene, items, op))
+                                      active = Selection::sdf(*group);
+                              });
+    return true;
+}
+
+bool pasteText(editor::Document& document, std::string_view text, std::string& message) {
+    const std::optional<Scene> clip = editor::parseClipboardText(text, message);
+    if (!clip) return false;
+    if (!clip->sdf && clip->meshes.empty() && clip->lights.empty()) {
+        message = "the clipboard's scene holds no objects, so nothing was pasted";
+        return false;
+    }
+    editor::PasteResult result;
+    document.applyToSelection("Paste",
+                              [&](Scene& scene, Selection& active, std::vector<Selection>& also) {
+                                  result = editor::pasteClip(scene, active, *clip);
+                                  also = result.pasted;
+                                  active = Selection::none();
+                                  if (!also.empty()) {
+                                      active = also.back();
+                                      also.pop_back();
+                                  }
+                              });
+    message = "pasted " + std::to_string(result.pasted.size()) + " object" +
+              (result.pasted.size() == 1 ? "" : "s");
+    if (result.lightsLeftOut > 0)
+        message += "; " + std::to_string(result.lightsLeftOut) +
+                   " light(s) left out: a scene holds at most " + std::to_string(limits::kLights) +
+                   " lights";
+    return true;
 }
 
 } // namespace rmsc::app

@@ -7,6 +7,9 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
+#include <string_view>
+
 namespace rmsc::app {
 
 void addShape(editor::Document& document, const PrimitiveSpec& spec);    // into the selection
@@ -15,7 +18,14 @@ void addGroup(editor::Document& document, SdfOp op);                     // into
 // A light of `type` at `position` (where the view looks), selected; nothing at the limit.
 void addLight(editor::Document& document, LightType type, glm::vec3 position);
 bool canAddLight(const editor::Document& document);
-void duplicateSelection(editor::Document& document);
-void deleteSelection(editor::Document& document); // nothing when nothing is selected
+void duplicateSelection(editor::Document& document); // the active object
+void deleteSelection(editor::Document& document);    // everything selected; nothing when none
+// The selected SDF nodes into a new group of `op` (editor/selection_edits.hpp), selected; false
+// (nothing changed, no undo step) when no SDF node is selected.
+bool groupSelection(editor::Document& document, SdfOp op);
+// Pastes clipboard text (editor/clipboard.hpp) next to the active object and selects what it
+// added. False with `message` saying why when the text is not a scene's; otherwise `message`
+// says what was pasted (and how many lights did not fit).
+bool pasteText(editor::Document& document, std::string_view text, std::string& message);
 
 } // namespace rmsc::app

@@ -2,6 +2,7 @@
 #include "frame_loop.hpp"
 
 #include "core/exit_code.hpp"
+#include "editor/multi_selection.hpp"
 #include "editor/recovery.hpp"
 #include "editor/scene_edits.hpp"
 #include "hierarchy_panel.hpp"
@@ -259,7 +260,8 @@ ViewInput Viewer::viewInput() const {
     shown.camera = session_.viewCamera();
     shown.scene = &document.scene();
     shown.revision = document.revision();
-    shown.selected = editor::objectIdRange(document.scene(), document.selection);
+    for (const editor::Selection& item : editor::selectedItems(document))
+        shown.selected.push_back(editor::objectIdRange(document.scene(), item));
     if (document.selection.kind == editor::SelectionKind::Light)
         shown.selectedLight = document.selection.index;
     shown.showLights = view_.showLights;

@@ -74,6 +74,10 @@ void updateGesture(ViewportGesture& gesture, const InputState& input, editor::Do
         gesture.active = false;
         return;
     }
+    if (input.ctrl() != g.snap) { // Ctrl held: snap to steps
+        g.snap = input.ctrl();
+        gesture.needsApply = true;
+    }
     const glm::vec2 mouse = input.mouse - glm::vec2(viewport.x, viewport.y);
     if (mouse != gesture.lastMouse || gesture.needsApply) {
         gesture.lastMouse = mouse;

@@ -1,7 +1,8 @@
 // Moving (G), rotating (R) and scaling (S) the selected shape, group or mesh, and moving and
 // turning the selected light, with the mouse, like Blender: X / Y / Z constrain to an axis (again:
-// free), a click or Enter keeps the result as one undo step, Esc or the right button cancels. The
-// math is editor/transform_gesture.hpp.
+// free), Ctrl held snaps (steps of 0.1 m, 15 degrees, tenths of the scale), a click or Enter
+// keeps the result as one undo step, Esc or the right button cancels. The math is
+// editor/transform_gesture.hpp.
 #pragma once
 
 #include "editor/transform_gesture.hpp"

@@ -4,6 +4,7 @@
 
 #include "document_edits.hpp"
 #include "editor/light_edits.hpp"
+#include "editor/multi_selection.hpp"
 #include "editor/scene_edits.hpp"
 #include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
@@ -81,16 +82,16 @@ std::string nodeLabel(const SdfNode& node) {
 }
 
 // One node of the SDF tree at `path`, and its children when it is an open group.
-void drawSdfNode(const SdfNode& node, std::vector<int>& path, Selection& selection,
-                 std::optional<PendingMove>& move) {
+void drawSdfNode(const SdfNode& node, std::vector<int>& path, const editor::Document& document,
+                 std::optional<Selection>& clicked, std::optional<PendingMove>& move) {
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth |
                                ImGuiTreeNodeFlags_DefaultOpen |
                                ImGuiTreeNodeFlags_OpenOnDoubleClick;
     if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
-    if (selection == Selection::sdf(path)) flags |= ImGuiTreeNodeFlags_Selected;
+    if (editor::isSelected(document, Selection::sdf(path))) flags |= ImGuiTreeNodeFlags_Selected;
     const std::string label = nodeLabel(node) + "##" + pathId(path);
     const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
-    if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) selection = Selection::sdf(path);
+    if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) clicked = Selection::sdf(path);
     if (!path.empty() && ImGui::BeginDragDropSource()) {
         ImGui::SetDragDropPayload(kNodePayload, path.data(), path.size() * sizeof(int));
         ImGui::TextUnformatted(editor::displayName(node).c_str());
@@ -111,7 +112,7 @@ void drawSdfNode(const SdfNode& node, std::vector<int>& path, Selection& selecti
     if (node.isGroup && open) {
         for (std::size_t i = 0; i < node.children.size(); ++i) {
             path.push_back(int(i));
-            drawSdfNode(node.children[i], path, selection, move);
+            drawSdfNode(node.children[i], path, document, clicked, move);
             path.pop_back();
         }
         ImGui::TreePop();
@@ -120,14 +121,16 @@ void drawSdfNode(const SdfNode& node, std::vector<int>& path, Selection& selecti
 
 void drawSdfTree(editor::Document& document) {
     std::optional<PendingMove> move;
+    std::optional<Selection> clicked;
     const Scene& scene = document.scene();
     ImGui::TextDisabled("SDF objects");
     if (scene.sdf) {
         std::vector<int> path;
-        drawSdfNode(*scene.sdf, path, document.selection, move);
+        drawSdfNode(*scene.sdf, path, document, clicked, move);
     } else {
         ImGui::TextDisabled("  (none: add a shape)");
     }
+    if (clicked) editor::clickSelect(document, *clicked, ImGui::GetIO().KeyShift);
     if (move) {
         const PendingMove m = *move;
         document.apply("Reorder", [m](Scene& s, Selection& selection) {
@@ -145,11 +148,12 @@ struct PendingReorder {
 
 // One row of the mesh or light list: selects on click, drags onto another row of its list.
 void drawListItem(const std::string& name, SelectionKind kind, int index, const char* payloadType,
-                  Selection& selection, std::optional<PendingReorder>& reorder) {
+                  editor::Document& document, std::optional<PendingReorder>& reorder) {
     const Selection itemSelection =
         kind == SelectionKind::Mesh ? Selection::mesh(index) : Selection::light(index);
     const std::string label = name + "##" + payloadType + std::to_string(index);
-    if (ImGui::Selectable(label.c_str(), selection == itemSelection)) selection = itemSelection;
+    if (ImGui::Selectable(label.c_str(), editor::isSelected(document, itemSelection)))
+        editor::clickSelect(document, itemSelection, ImGui::GetIO().KeyShift);
     if (ImGui::BeginDragDropSource()) {
         ImGui::SetDragDropPayload(payloadType, &index, sizeof(index));
         ImGui::TextUnformatted(name.c_str());
@@ -170,13 +174,13 @@ void drawMeshAndLightLists(editor::Document& document) {
     ImGui::TextDisabled("Meshes");
     for (std::size_t i = 0; i < scene.meshes.size(); ++i)
         drawListItem(scene.meshes[i].name.empty() ? scene.meshes[i].file : scene.meshes[i].name,
-                     SelectionKind::Mesh, int(i), kMeshPayload, document.selection, reorder);
+                     SelectionKind::Mesh, int(i), kMeshPayload, document, reorder);
     ImGui::Spacing();
     ImGui::TextDisabled("Lights");
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
         drawListItem("[" + std::string(lightTypeName(scene.lights[i].type)) + "] " +
                          editor::lightLabel(scene.lights[i], int(i)),
-                     SelectionKind::Light, int(i), kLightPayload, document.selection, reorder);
+                     SelectionKind::Light, int(i), kLightPayload, document, reorder);
     if (reorder && reorder->from != reorder->to) {
         const PendingReorder r = *reorder;
         document.apply(r.kind == SelectionKind::Mesh ? "Reorder meshes" : "Reorder lights",
@@ -196,7 +200,8 @@ void drawHierarchyHelp() {
     ImGui::Separator();
     ImGui::TextDisabled("Drag nodes onto a group to reparent,\nonto a shape to place before it;\n"
                         "drag a mesh or light onto another\nto put it in its place.\n"
-                        "Click in the view to select;\nG moves, R rotates, S scales\n"
+                        "Click in the view to select,\nShift+click to add (here too);\n"
+                        "G moves, R rotates, S scales\n"
                         "(lights: G moves, R turns)\n"
                         "(X/Y/Z: axis), F frames.\n"
                         "Right mouse + WASD flies;\nAlt + drag orbits.");

@@ -2,6 +2,8 @@
 #include "menu_bar.hpp"
 
 #include "document_edits.hpp"
+#include "editor/multi_selection.hpp"
+#include "editor/selection_edits.hpp"
 #include "panel_widgets.hpp"
 #include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
@@ -27,7 +29,7 @@ void drawFileMenu(ViewerCommands& commands) {
     ImGui::EndMenu();
 }
 
-void drawEditMenu(const editor::Document& document, ViewerCommands& commands) {
+void drawEditMenu(editor::Document& document, ViewerCommands& commands) {
     if (!ImGui::BeginMenu("Edit")) return;
     const std::string undo = "Undo " + document.undoLabel();
     const std::string redo = "Redo " + document.redoLabel();
@@ -37,10 +39,25 @@ void drawEditMenu(const editor::Document& document, ViewerCommands& commands) {
         commands.push_back(ViewerCommand::Redo);
     ImGui::Separator();
     const bool selected = !document.selection.empty();
+    if (ImGui::MenuItem("Copy", "Ctrl+C", false, selected)) commands.push_back(ViewerCommand::Copy);
+    if (ImGui::MenuItem("Paste", "Ctrl+V")) commands.push_back(ViewerCommand::Paste);
     if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, selected))
         commands.push_back(ViewerCommand::Duplicate);
     if (ImGui::MenuItem("Delete", "Del", false, selected))
         commands.push_back(ViewerCommand::Delete);
+    // The selected SDF nodes into a new group of the chosen operation (Ctrl+G: union).
+    const bool groupable =
+        !editor::outermostSdfPaths(document.scene(), editor::selectedItems(document)).empty();
+    if (ImGui::BeginMenu("Group selection", groupable)) {
+        for (const OperationSpec& op : operationCatalogue()) {
+            if (ImGui::MenuItem(operationLabel(op.op).c_str(),
+                                op.op == SdfOp::Union ? "Ctrl+G" : nullptr))
+                groupSelection(document, op.op);
+            helpTooltip(op.description);
+        }
+        ImGui::EndMenu();
+    }
+    ImGui::MenuItem("Add to selection", "Shift+click", false, false);
     // The gestures, for their keys (they need the mouse over the view).
     ImGui::MenuItem("Move (grab)", "G, then X/Y/Z", false, false);
     ImGui::MenuItem("Rotate", "R, then X/Y/Z", false, false);

@@ -20,6 +20,9 @@ void handleShortcuts(const InputState& input, ViewportGesture& gesture, ViewerCo
             commands.push_back(input.shift() ? ViewerCommand::SaveAs : ViewerCommand::Save);
         if (input.pressed(GLFW_KEY_O)) commands.push_back(ViewerCommand::Open);
         if (input.pressed(GLFW_KEY_D)) commands.push_back(ViewerCommand::Duplicate);
+        if (input.pressed(GLFW_KEY_C)) commands.push_back(ViewerCommand::Copy);
+        if (input.pressed(GLFW_KEY_V)) commands.push_back(ViewerCommand::Paste);
+        if (input.pressed(GLFW_KEY_G)) commands.push_back(ViewerCommand::Group);
     }
     if (!keyboardFree(input) || gesture.active) return;
     if (input.pressed(GLFW_KEY_DELETE)) commands.push_back(ViewerCommand::Delete);

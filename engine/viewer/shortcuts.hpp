@@ -1,5 +1,6 @@
 // The viewer's keyboard shortcuts: F12 screenshot; Ctrl+Z / Ctrl+Shift+Z / Ctrl+Y undo and redo,
-// Ctrl+S save, Ctrl+Shift+S save as, Ctrl+O open, Ctrl+D duplicate; Delete, and F to frame the
+// Ctrl+S save, Ctrl+Shift+S save as, Ctrl+O open, Ctrl+D duplicate, Ctrl+C copy, Ctrl+V paste,
+// Ctrl+G group (union); Delete, and F to frame the
 // selection, when the panels leave the keyboard to the view and no gesture runs. (The camera's
 // keys are camera_controls.hpp, the gestures' gesture_controls.hpp.)
 #pragma once

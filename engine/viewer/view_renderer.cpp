@@ -164,8 +164,8 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
 
     DisplayInput in;
     in.mode = view.mode;
-    in.selectedFirst = view.selected.first;
-    in.selectedLast = view.selected.last;
+    for (const editor::IdRange& range : view.selected)
+        if (range.last > range.first) in.selected.emplace_back(range.first, range.last);
     in.nearPlane = view.camera.nearPlane;
     in.farPlane = std::min(view.camera.farPlane, view.scene->render.maxDistance);
     in.maxSteps = view.scene->render.maxSteps;

@@ -24,17 +24,18 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rmsc::app {
 
 // What the view shows this frame.
 struct ViewInput {
     Camera camera;
-    const Scene* scene = nullptr; // the document's
-    std::uint64_t revision = 0;   // the document's: a new one renders again
-    editor::IdRange selected;     // object ids to outline
-    int selectedLight = -1;       // the light drawn in the selection colour
-    bool showLights = true;       // draw the lights' markers over the view
+    const Scene* scene = nullptr;          // the document's
+    std::uint64_t revision = 0;            // the document's: a new one renders again
+    std::vector<editor::IdRange> selected; // object ids to outline, a range per selected object
+    int selectedLight = -1;                // the light drawn in the selection colour
+    bool showLights = true;                // draw the lights' markers over the view
     ViewMode mode = ViewMode::Color;
 };
 

@@ -3,6 +3,8 @@
 
 #include "camera_controls.hpp"
 #include "document_edits.hpp"
+#include "editor/clipboard.hpp"
+#include "editor/multi_selection.hpp"
 #include "frame_loop.hpp"
 
 namespace rmsc::app {
@@ -34,6 +36,27 @@ void Viewer::carryOut(ViewerCommands& commands) {
             break;
         case ViewerCommand::Delete:
             deleteSelection(document);
+            break;
+        case ViewerCommand::Copy: {
+            const std::vector<editor::Selection> items = editor::selectedItems(document);
+            const std::string text = editor::clipboardText(document.scene(), items);
+            if (text.empty()) break;
+            glfwSetClipboardString(window_->handle(), text.c_str());
+            messages_.notice("copied " + std::to_string(items.size()) + " object" +
+                             (items.size() == 1 ? "" : "s"));
+            break;
+        }
+        case ViewerCommand::Paste: {
+            const char* text = glfwGetClipboardString(window_->handle());
+            std::string message;
+            if (pasteText(document, text ? text : "", message))
+                messages_.notice(message);
+            else
+                messages_.fileError = message;
+            break;
+        }
+        case ViewerCommand::Group:
+            groupSelection(document, SdfOp::Union);
             break;
         case ViewerCommand::NewScene:
             if (document.dirty()) {

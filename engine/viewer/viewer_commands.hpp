@@ -13,8 +13,11 @@ namespace rmsc::app {
 enum class ViewerCommand {
     Undo,
     Redo,
-    Duplicate,      // the selection
-    Delete,         // the selection, when there is one
+    Duplicate,      // the active object
+    Delete,         // everything selected, when anything is
+    Copy,           // everything selected, to the system clipboard as scene-file text
+    Paste,          // the system clipboard's scene objects, next to the active object
+    Group,          // the selected SDF nodes into a new union group (Edit > Group: any operation)
     NewScene,       // asks first when there are unsaved changes
     Open,           // asks for the file
     Save,           // asks for a file when the scene has none yet

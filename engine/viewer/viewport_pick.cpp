@@ -3,6 +3,7 @@
 #include "viewport_pick.hpp"
 
 #include "editor/light_edits.hpp"
+#include "editor/multi_selection.hpp"
 #include "editor/picking.hpp"
 #include "editor/scene_edits.hpp"
 #include "render/frame.hpp"
@@ -54,11 +55,13 @@ void handleViewportClick(const InputState& input, const Rect& viewport, bool ges
     if (gestureActive || !input.clicked[0] || input.alt()) return;
     if (!viewport.contains(input.mouse) || io.WantCaptureMouse) return;
     const Scene& scene = session.document.scene();
+    // Shift adds to the selection (or takes out what is selected already).
     if (const int light = lightAt(scene, session.viewCamera(), viewport, input.mouse); light >= 0)
-        session.document.selection = editor::Selection::light(light);
+        editor::clickSelect(session.document, editor::Selection::light(light), input.shift());
     else if (prepared)
-        session.document.selection =
-            pickAt(*prepared, scene, session.viewCamera(), viewport, input.mouse);
+        editor::clickSelect(session.document,
+                            pickAt(*prepared, scene, session.viewCamera(), viewport, input.mouse),
+                            input.shift());
 }
 
 } // namespace rmsc::app

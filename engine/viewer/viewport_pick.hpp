@@ -1,7 +1,8 @@
 // Selecting by clicking in the view: a light whose marker (render/light_gizmo_pass.hpp) is near
 // the click, else a ray from the eye through the clicked point, cast on the CPU
 // (editor/picking.hpp) at the newest scene that compiled; the nearest object it meets is
-// selected, empty space clears the selection.
+// selected, empty space clears the selection. With Shift held the object is added to the
+// selection instead (editor/multi_selection.hpp).
 #pragma once
 
 #include "editor_session.hpp"

@@ -1,7 +1,7 @@
 #version 450 core
 // Viewer display pass: shows a rendered frame (possibly rendered at a lower resolution) in the
 // window's viewport, as colour, normals, depth or object ids, and outlines the selected
-// objects: a pixel is on the outline when it and a neighbour two window pixels away disagree on
+// objects (each an id range; kOutlinedRanges in engine/viewer/display_pass.hpp): a pixel is on the outline when it and a neighbour two window pixels away disagree on
 // whether they show a selected id (a screen-space edge of the id buffer).
 layout(binding = 0) uniform sampler2D uColor;      // display colour, RGBA8 holding sRGB values
 layout(binding = 1) uniform sampler2D uNormal;     // world normal (0 where nothing was hit)
@@ -10,7 +10,8 @@ layout(binding = 3) uniform usampler2D uObjectId;  // 0 = background
 
 uniform int uMode;           // 0 colour, 1 normals, 2 depth, 3 object id, 4 march steps
 uniform float uMaxSteps;     // march steps at which the heatmap is red
-uniform uvec2 uSelected;     // selected ids: [x, y)
+uniform uvec2 uSelected[32]; // selected ids: [x, y) of each selected object
+uniform int uSelectedCount;  // how many of uSelected are used
 uniform vec2 uDepthRange;    // near, far of the depth view
 uniform vec2 uViewportSize;  // window pixels the image covers
 
@@ -47,7 +48,9 @@ vec3 idColor(uint id) {
 
 bool selectedAt(vec2 uv) {
     uint id = texelFetch(uObjectId, sourceTexel(uv), 0).r;
-    return id >= uSelected.x && id < uSelected.y;
+    for (int i = 0; i < uSelectedCount; ++i)
+        if (id >= uSelected[i].x && id < uSelected[i].y) return true;
+    return false;
 }
 
 void main() {
@@ -72,7 +75,7 @@ void main() {
     } else {
         color = bilinearColor(vUv);
     }
-    if (uSelected.y > uSelected.x) {
+    if (uSelectedCount > 0) {
         vec2 px = 2.0 / uViewportSize;
         bool inside = selectedAt(vUv);
         bool edge = inside != selectedAt(vUv + vec2(px.x, 0.0)) ||

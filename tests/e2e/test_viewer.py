@@ -15,6 +15,11 @@ A third run marks both children of the root group as cut with the inspector's cu
 group whose every child is cut does not compile), presses Ctrl+S and checks the save is refused
 (the log names /sdf, the problems panel shows it, the file is unchanged), then undoes one cut,
 turns the fog on in the Render tab's Environment section and saves successfully.
+A fifth run selects two objects (a click in the Scene panel, a Shift+click in the view), groups
+them into a smooth union from the Edit menu, undoes and redoes that, copies the group, saves,
+opens a second scene, pastes the group into it and moves the scene's pillar along X with Ctrl
+held (snapping); the test checks both saved files and that the window outlines every selected
+object.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -307,6 +312,93 @@ def responsiveness_main(rmsc, source, xvfb_run):
     return 0
 
 
+# Window-shot rectangles (x0, y0, x1, y1) of the 640x360 window around what the view shows of
+# tests/e2e/viewer_scene.json (one pixel is about 8.5 mm at the ball): the ball, centred at
+# (297, 190), 59 pixels in radius; the base below it; and the second scene's pillar.
+BALL_BOX = (227, 120, 367, 255)
+BASE_BOX = (160, 262, 436, 330)
+PILLAR_BOX = (390, 55, 438, 137)
+
+
+def orange_pixels(shot, box):
+    """Pixels of the selection outline's orange in the window-shot rectangle box (x0, y0, x1, y1)."""
+    width, height, channels, rows = shot
+    return sum(1 for y in range(box[1], box[3]) for x in range(box[0], box[2])
+               if rows[y][x * channels] > 220 and 110 < rows[y][x * channels + 1] < 170 and
+               rows[y][x * channels + 2] < 60)
+
+
+def select_run(rmsc, source, tmp, xvfb_run, check):
+    """The fifth run (tests/e2e/viewer_select_script.txt): multi-select, group, copy and paste
+    into a second scene."""
+    folder = os.path.join(tmp, "select")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "first.json")
+    second = os.path.join(folder, "second.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_second_scene.json"), second)
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_select_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    run = run_viewer(xvfb_run, rmsc, scene, script)
+    check("fifth run: viewer exits 0", run.returncode == 0, run.returncode)
+    keep = os.environ.get("RMSC_E2E_KEEP")
+    if keep:
+        shutil.copytree(folder, keep, dirs_exist_ok=True)
+
+    first = json.load(open(scene))
+    children = first["sdf"]["children"]
+    check("the first scene holds one group: the ball and the base grouped (redone after the undo)",
+          len(children) == 1 and children[0].get("op") == "smooth_union", children)
+    if len(children) == 1:
+        group = children[0]
+        check("with both, in tree order", [c.get("name") for c in group.get("children", [])] ==
+              ["ball", "base"], group)
+        check("and the smoothness a smooth union needs", group.get("smoothness", 0) > 0, group)
+    pasted = json.load(open(second))
+    children = pasted["sdf"]["children"]
+    check("the second scene keeps its pillar and gets the pasted group after it",
+          [c.get("name") for c in children] == ["pillar", "group"], children)
+    if len(children) == 2:
+        group = children[1]
+        names = [c.get("name") for c in group.get("children", [])]
+        check("the pasted group holds the ball and the base", names == ["ball", "base"], group)
+        check("of the operation it was grouped into", group.get("op") == "smooth_union", group)
+        if names == ["ball", "base"]:
+            base = group["children"][1]
+            check("the base is where it was in the first scene",
+                  all(abs(a - b) < 1e-5 for a, b in zip(base.get("position", []), [0, -0.9, 0])),
+                  base)
+            check("with its material", base.get("material") == "grey" and
+                  group["children"][0].get("material") == "red", group)
+    pillar = children[0] if children else {}
+    moved = pillar.get("position", [1, 0.8, 0])[0] - 1.0
+    steps = moved / 0.1
+    check("the pillar moved along X with Ctrl held, by whole steps of 0.1 m",
+          moved > 0.05 and abs(steps - round(steps)) < 1e-3, pillar)
+    check("and only along X", pillar.get("position", [0, 0, 0])[1:] == [0.8, 0], pillar)
+    materials = pasted.get("materials", {})
+    check("the second scene's own grey is kept, the first scene's red is added",
+          sorted(materials) == ["grey", "red"] and
+          materials["grey"].get("base_color") == [0.3, 0.6, 0.3], materials)
+
+    shots = {}
+    for name in ("both", "pasted"):
+        path = os.path.join(folder, name + ".png")
+        check(f"fifth run: window shot {name} written", os.path.exists(path))
+        if os.path.exists(path):
+            shots[name] = read_png(path)
+    if "both" in shots:
+        ball, base = orange_pixels(shots["both"], BALL_BOX), orange_pixels(shots["both"], BASE_BOX)
+        check("both selected objects are outlined: the ball", ball > 40, ball)
+        check("and the base", base > 40, base)
+    if "pasted" in shots:
+        ball = orange_pixels(shots["pasted"], BALL_BOX)
+        pillar = orange_pixels(shots["pasted"], PILLAR_BOX)
+        check("the pasted objects are selected (outlined) in the second scene", ball > 40, ball)
+        check("and the second scene's pillar is not", pillar < 5, pillar)
+
+
 def main():
     rmsc, source = sys.argv[1], sys.argv[2]
     if len(sys.argv) > 3 and sys.argv[3] == "--responsiveness":
@@ -398,6 +490,7 @@ def main():
         create_run(rmsc, source, tmp, xvfb_run, check)
         refuse_run(rmsc, source, tmp, xvfb_run, check)
         large_scene_run(rmsc, source, tmp, xvfb_run, check)
+        select_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

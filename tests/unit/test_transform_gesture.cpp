@@ -142,6 +142,39 @@ TEST(TransformGesture, ScaleUniformlyOrAlongOneAxis) {
     expectNear(gestureTransform(g, {175, 100}).position, glm::vec3(0));
 }
 
+TEST(TransformGesture, CtrlSnapsMovesToGridStepsAnglesTo15DegreesAndScalesToTenths) {
+    // Free move: 22.6 px right and 13.4 px up at 0.05 units a pixel is (1.13, 0.67), in steps
+    // of 0.1 (the movements avoid half steps, which float rounding may put either way).
+    TransformGesture move = gesture(GestureKind::Move, -1, {100, 100});
+    move.snap = true;
+    expectNear(gestureTransform(move, {122.6f, 86.6f}).position, {1.1f, 0.7f, 0}, 1e-3f);
+    expectNear(gestureTransform(move, {100.8f, 100}).position, glm::vec3(0)); // 0.04: not yet
+    move.snap = false;
+    expectNear(gestureTransform(move, {122.6f, 86.6f}).position, {1.13f, 0.67f, 0}, 1e-3f);
+    // Along an axis: the length along it, with the object off the grid staying off it.
+    TransformGesture along = gesture(GestureKind::Move, 0, {100, 100});
+    along.snap = true;
+    along.start.position = glm::vec3(0.03f, 0, 0);
+    expectNear(gestureTransform(along, {126.4f, 140}).position, {1.33f, 0, 0}, 1e-3f); // 1.32
+    along.snap = false;
+    expectNear(gestureTransform(along, {126.4f, 140}).position, {1.35f, 0, 0}, 2e-3f);
+    // Rotation: a turn of 50 degrees on screen snaps to 45.
+    TransformGesture turn = gesture(GestureKind::Rotate, -1, {150, 100});
+    turn.snap = true;
+    const float a = glm::radians(50.0f);
+    const Transform turned =
+        gestureTransform(turn, glm::vec2(100 + 50 * std::cos(a), 100 - 50 * std::sin(a)));
+    expectNear(turned.rotation * glm::vec3(1, 0, 0),
+               {std::cos(glm::radians(45.0f)), std::sin(glm::radians(45.0f)), 0});
+    // Scale: 1.37 times snaps to 1.4, and never to 0.
+    TransformGesture scale = gesture(GestureKind::Scale, -1, {150, 100});
+    scale.snap = true;
+    expectNear(gestureTransform(scale, {168.5f, 100}).scale, glm::vec3(1.4f));
+    expectNear(gestureTransform(scale, {100, 100}).scale, glm::vec3(kSnapScale));
+    EXPECT_FLOAT_EQ(snapToStep(0.26f, 0.1f), 0.3f);
+    EXPECT_FLOAT_EQ(snapToStep(-0.26f, 0.1f), -0.3f);
+}
+
 TEST(TransformGesture, ScaleStartedOnTheCentreDoesNotJump) {
     const TransformGesture g = gesture(GestureKind::Scale, -1, {101, 100}); // 1 px away
     expectNear(gestureTransform(g, {101, 100}).scale, glm::vec3(1.0f));

@@ -1,7 +1,8 @@
-// The editor's document: the scene being edited, its file, the selection, and an unlimited
-// undo/redo history. Edits change `scene()` in place and are then committed as one undo step
-// (a slider drag commits once, when released). Each step stores the scene before and after,
-// so undo and redo are exact whatever the edit was. GL-free.
+// The editor's document: the scene being edited, its file, the selection (the active object and
+// any more that Shift-click added), and an unlimited undo/redo history. Edits change `scene()` in
+// place and are then committed as one undo step (a slider drag commits once, when released). Each
+// step stores the scene before and after, so undo and redo are exact whatever the edit was.
+// GL-free.
 #pragma once
 
 #include "core/diagnostics.hpp"
@@ -31,7 +32,11 @@ class Document {
     const std::filesystem::path& file() const { return file_; } // "" until saved
     bool dirty() const { return position_ != savedPosition_ || pending_; }
 
+    // The active object: what the inspector and the gestures edit.
     Selection selection;
+    // More selected objects (Shift-click, editor/multi_selection.hpp), in the order they were
+    // added; never holding `selection` itself, none when `selection` is empty.
+    std::vector<Selection> alsoSelected;
 
     // Records that the scene was changed by an edit named `label` (not yet an undo step).
     void markChanged(const std::string& label);
@@ -40,8 +45,14 @@ class Document {
     void commit();
     // Abandons the pending change: the scene returns to the last committed state.
     void revertPending();
-    // edit(scene, selection), then commit: one undo step.
+    // edit(scene, selection), then commit: one undo step. `alsoSelected` is cleared first (the
+    // edit may move nodes, so their paths would name others): the edit selects what it leaves.
     void apply(const std::string& label, const std::function<void(Scene&, Selection&)>& edit);
+    // The same for edits of several objects: edit(scene, selection, alsoSelected), which sees
+    // the whole selection and leaves the one it wants.
+    void
+    applyToSelection(const std::string& label,
+                     const std::function<void(Scene&, Selection&, std::vector<Selection>&)>& edit);
 
     bool canUndo() const { return position_ > 0; }
     bool canRedo() const { return position_ < history_.size(); }
@@ -72,10 +83,15 @@ class Document {
         std::string label;
         Scene before, after;
         Selection selectionBefore, selectionAfter;
+        std::vector<Selection> alsoBefore, alsoAfter;
     };
+    // Drops what no longer exists and repeats from alsoSelected; an empty active selection
+    // takes the last of them.
+    void tidySelection();
     Scene scene_;
     Scene committed_;              // the scene after the last step (what undo returns from)
     Selection committedSelection_; // the selection when the pending change began (undo restores)
+    std::vector<Selection> committedAlso_;
     std::filesystem::path file_;
     std::vector<Step> history_;
     std::size_t position_ = 0;      // steps [0, position_) are applied

@@ -35,7 +35,17 @@ struct TransformGesture {
     glm::mat4 parentWorld{1.0f};        // the parent's world matrix (identity for meshes)
     GestureView view;
     glm::vec2 startMouse{0.0f}; // viewport pixels, y down
+    bool snap = false;          // held Ctrl: steps of kSnapDistance, kSnapAngle, kSnapScale
 };
+
+// Snapping steps (Ctrl held during a gesture), as in Blender's increment snapping: the movement
+// in world units (each world axis of a free move, the length along a constraint axis), the
+// angle turned, and the scale factor.
+constexpr float kSnapDistance = 0.1f;      // a tenth of the ground grid's unit lines
+constexpr float kSnapAngle = 0.261799388f; // 15 degrees, in radians
+constexpr float kSnapScale = 0.1f;         // the factor in tenths: 1.1, 1.2, ...
+// `value` rounded to the nearest multiple of `step` (> 0).
+float snapToStep(float value, float step);
 
 // Below this distance from the pivot (pixels) the scale gesture measures movement against this
 // distance instead, so starting with the mouse on the object does not make it jump.
@@ -62,7 +72,8 @@ glm::vec3 constraintAxis(const TransformGesture& gesture);
 glm::vec3 rotationAxis(const TransformGesture& gesture);
 
 // The object's transform with the mouse at `mouse` (viewport pixels): start moved, rotated
-// about its own origin, or scaled (uniformly, or along one of its own axes).
+// about its own origin, or scaled (uniformly, or along one of its own axes); with `snap`, the
+// movement, angle or factor rounded to its step.
 Transform gestureTransform(const TransformGesture& gesture, glm::vec2 mouse);
 
 } // namespace rmsc::editor
