@@ -232,7 +232,7 @@ with tempfile.TemporaryDirectory() as tmp:
     # and t = 1 (LINEAR), seen through its own camera; --time, --frames and each refusal, which
     # names what the file has.
     quad = struct.pack("<12f", -0.5, -0.5, 0, 0.5, -0.5, 0, 0.5, 0.5, 0, -0.5, 0.5, 0)
-    quad += struct.pack("<6H", 0, 1, 2, 0, 2, 3) + b"\0\0"
+    quad += struct.pack("<6H", 0, 1, 2, 0, 2, 3) + b"\0\0\0\0"  # the keys start at 64
     keys = struct.pack("<2f", 0, 1) + struct.pack("<6f", 0, 0, 0, 2, 0, 0)
     data = quad + keys
     import base64
