@@ -4,7 +4,11 @@
 #include "sdf/glsl_codegen.hpp"
 
 #include "sdf/cost_model.hpp"
+#include "sdf/glsl_constants.hpp"
+#include "sdf/modifiers.hpp"
+#include "sdf/operations.hpp"
 #include "sdf/primitives.hpp"
+#include "sdf/profiles.hpp"
 #include "sdf/sdf_tree.hpp"
 
 #include <cstdio>
@@ -226,6 +230,110 @@ bool isUnionOfShapes(const SdfProgram& program) {
     return !program.instructions.empty();
 }
 
+// ---- What the interpreters run of the shared GLSL ----
+//
+// The interpreters read their instructions from the buffer, so each of their dispatches (the
+// opcode, the primitive, the operation, the modifier, the profile) is a chain of branches. A GPU
+// runs the branch a pixel takes; llvmpipe runs every branch of every `if`, masked, and the body
+// of every loop at least once: an interpreted instruction costs there what every kind of
+// instruction the shader holds costs. So the interpreters' text holds only the kinds the
+// program uses: defines that leave out whole opcodes, and dispatches over the kinds used (each
+// a call of the shared function with a constant kind, which the shader compiler folds to that
+// kind's code). The text still does not depend on the number of instructions.
+
+// A dispatch `signature` over the GLSL constant names `kinds` (at least one): each branch calls
+// `call` with "KIND" replaced by the constant, the last one unconditionally.
+std::string kindDispatch(const std::string& signature, const std::string& selector,
+                         const std::vector<std::string>& kinds, const std::string& call) {
+    const auto callFor = [&](const std::string& kind) {
+        std::string text = call;
+        for (std::size_t at; (at = text.find("KIND")) != std::string::npos;)
+            text.replace(at, 4, kind);
+        return text;
+    };
+    std::string out = signature + " {\n";
+    for (std::size_t k = 0; k + 1 < kinds.size(); ++k)
+        out += "    if (" + selector + " == " + kinds[k] + ") return " + callFor(kinds[k]) + ";\n";
+    out += "    return " + callFor(kinds.back()) + ";\n}\n";
+    return out;
+}
+
+// The defines and dispatches of the interpreters for the instructions `code` (the program's,
+// and for the Cells strategy the union and the far cells' planes the pruning adds).
+std::string interpreterFeatures(const std::vector<GpuSdfInstruction>& code, bool cells) {
+    std::vector<bool> opcodes(16, false), ops(64, false), profiles(64, false);
+    std::vector<bool> pointKinds(64, false), distanceKinds(64, false);
+    for (const GpuSdfInstruction& in : code) {
+        if (in.opcode >= opcodes.size()) continue;
+        opcodes[in.opcode] = true;
+        const auto mark = [&](std::vector<bool>& used) {
+            if (in.kind < used.size()) used[in.kind] = true;
+        };
+        switch (SdfOpcode(in.opcode)) {
+        case SdfOpcode::Combine:
+            mark(ops);
+            break;
+        case SdfOpcode::Profile:
+            mark(profiles);
+            break;
+        case SdfOpcode::PointModifier:
+            mark(pointKinds);
+            break;
+        case SdfOpcode::DistanceModifier:
+            mark(distanceKinds);
+            break;
+        default:
+            break;
+        }
+    }
+    if (cells) { // the union the bounding hierarchy's parts are folded with
+        opcodes[std::size_t(SdfOpcode::Combine)] = true;
+        ops[std::size_t(SdfOp::Union)] = true;
+    }
+    const auto has = [&](SdfOpcode opcode) { return opcodes[std::size_t(opcode)]; };
+    std::ostringstream out;
+    const auto define = [&](const char* name, bool value) {
+        out << "#define " << name << (value ? " 1\n" : " 0\n");
+    };
+    out << "#define SDF_FEATURES 1\n";
+    define("SDF_HAS_PROFILES", has(SdfOpcode::Profile));
+    define("SDF_HAS_COMBINE", has(SdfOpcode::Combine));
+    define("SDF_HAS_POINT_FRAMES", has(SdfOpcode::PushPoint));
+    define("SDF_HAS_POINT_MODIFIERS", has(SdfOpcode::PointModifier));
+    define("SDF_HAS_DISTANCE_MODIFIERS", has(SdfOpcode::DistanceModifier));
+    define("SDF_HAS_BOUNDS",
+           has(SdfOpcode::BoundSkip) || has(SdfOpcode::SeedBest) || has(SdfOpcode::Accumulate));
+    std::vector<std::string> names;
+    for (const ProfileSpec& spec : profileCatalogue())
+        if (profiles[std::size_t(spec.type)]) names.push_back("SDF_PROFILE_" + glslName(spec.name));
+    if (!names.empty())
+        out << kindDispatch("float sdfProfileUsed(uint kind, vec3 q, vec4 a0, vec4 a1, vec4 a2)",
+                            "kind", names, "sdfProfile(KIND, q, a0, a1, a2)");
+    names.clear();
+    for (const OperationSpec& spec : operationCatalogue())
+        if (ops[std::size_t(spec.op)]) names.push_back("SDF_OP_" + glslName(spec.name));
+    if (!names.empty())
+        out << kindDispatch(
+            "float sdfCombineUsed(uint op, float a, float b, vec4 opParams, out float weightA)",
+            "op", names, "sdfCombine(KIND, a, b, opParams, weightA)");
+    std::vector<std::string> point, distance;
+    for (const ModifierSpec& spec : modifierCatalogue()) {
+        const std::uint32_t kind = modifierKind(spec.type);
+        if (spec.stage == ModifierStage::Point && pointKinds[kind])
+            point.push_back("SDF_POINT_" + glslName(spec.name));
+        if (spec.stage == ModifierStage::Distance && distanceKinds[kind])
+            distance.push_back("SDF_DISTANCE_" + glslName(spec.name));
+    }
+    if (!point.empty())
+        out << kindDispatch(
+            "vec3 sdfPointModifierUsed(uint kind, vec3 p, vec4 a0, vec4 a1, vec4 a2)", "kind",
+            point, "sdfPointModifier(KIND, p, a0, a1, a2)");
+    if (!distance.empty())
+        out << kindDispatch("float sdfDistanceModifierUsed(uint kind, float d, vec3 p, vec4 a0)",
+                            "kind", distance, "sdfDistanceModifier(KIND, d, p, a0)");
+    return out.str();
+}
+
 } // namespace
 
 SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requested) {
@@ -258,7 +366,8 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
         for (const GpuSdfInstruction& in : program.instructions)
             if (SdfOpcode(in.opcode) == SdfOpcode::Shape) used[in.kind] = true;
         if (strategy == SdfStrategy::Cells) used[std::size_t(PrimitiveId::Plane)] = true; // far
-        out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; });
+        out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; })
+            << interpreterFeatures(program.instructions, strategy == SdfStrategy::Cells);
         if (strategy == SdfStrategy::Cells)
             out << (isPartsOnly(program) || isUnionOfShapes(program) ? "#define SDF_CELLS_LEAN 1\n"
                                                                      : "")

@@ -1,6 +1,7 @@
 // The SDF layer's GLSL constants (sdf/glsl_constants.hpp).
 #include "sdf/glsl_constants.hpp"
 
+#include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "sdf/modifiers.hpp"
 #include "sdf/operations.hpp"
@@ -54,6 +55,7 @@ std::vector<GlslConstant> sdfGlslConstants() {
         {"SDF_MAX_POINT_STACK", glslInt(kSdfMaxPointStack)},
         {"SDF_UNIFORM_INSTRUCTIONS", glslInt(kSdfUniformInstructions)},
         {"SDF_FAR", glslFloat(kSdfFar)},
+        {"SDF_CELL_MAX_LEVELS", glslInt(limits::kSdfCellLevels)},
     };
     for (const OpcodeName& opcode : kOpcodes)
         out.push_back(

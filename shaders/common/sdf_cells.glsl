@@ -17,7 +17,24 @@ layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
 
 #define SDF_PROGRAM_AT(n) sdfCellWords[n]
 
-// The list of the program that runs at p, as sdfCellRange in engine/sdf/cell_pruning.cpp.
+// The list of the program that runs at p, as sdfCellRange in engine/sdf/cell_pruning.cpp. The
+// descent is written out level by level (at most SDF_CELL_MAX_LEVELS): a loop's iterations
+// would come out of llvmpipe's budget shared by every loop of the shader (see
+// common/sdf_interpreter.glsl), and llvmpipe runs each level's code whether or not a loop ends
+// early anyway.
+#define SDF_CELL_LEVEL(level) \
+    if (block != 0xffffffffu && level < levels) { \
+        uvec3 d = (c >> (2u * (levels - 1u - level))) & 3u; \
+        uint w = 2u * (block * 64u + d.x + 4u * d.y + 16u * d.z); \
+        uint e = sdfCellWords[w]; \
+        if ((e & 0x80000000u) == 0u) { \
+            base = e; \
+            count = sdfCellWords[w + 1u]; \
+            block = 0xffffffffu; \
+        } else { \
+            block = e & 0x7fffffffu; \
+        } \
+    }
 void sdfProgramRange(vec3 p, out uint base, out uint count) {
     base = sdfCellInfo.y;
     count = sdfCellInfo.z;
@@ -28,17 +45,11 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
     uint n = 1u << (2u * levels);
     uvec3 c = min(uvec3(u * float(n)), uvec3(n - 1u));
     uint block = 0u;
-    for (uint level = 0u; level < levels; ++level) {
-        uvec3 d = (c >> (2u * (levels - 1u - level))) & 3u;
-        uint w = 2u * (block * 64u + d.x + 4u * d.y + 16u * d.z);
-        uint e = sdfCellWords[w];
-        if ((e & 0x80000000u) == 0u) {
-            base = e;
-            count = sdfCellWords[w + 1u];
-            return;
-        }
-        block = e & 0x7fffffffu;
-    }
+#if SDF_CELL_MAX_LEVELS != 6
+#error "sdfProgramRange descends 6 levels: write out SDF_CELL_MAX_LEVELS"
+#endif
+    SDF_CELL_LEVEL(0u) SDF_CELL_LEVEL(1u) SDF_CELL_LEVEL(2u)
+    SDF_CELL_LEVEL(3u) SDF_CELL_LEVEL(4u) SDF_CELL_LEVEL(5u)
 }
 
 #ifndef SDF_CELLS_LEAN
@@ -50,29 +61,37 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 
 bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 
-#define SDF_CELLS_STEP \
-    if (n < count) { \
-        uint i = SDF_PROGRAM_AT(base + n); \
-        uint op = sdfInstructions[i].opcode; \
-        if (op == SDF_OPCODE_BOUND_SKIP) { \
-            if (sdfBoundDistance(i, p) >= best) n += sdfInstructions[i].kind; \
-        } else if (op == SDF_OPCODE_SEED_BEST) { \
-            best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
-                                             sdfInstructions[i].params[1], \
-                                             sdfInstructions[i].params[2], \
-                                             sdfInstructions[i].misc.x)); \
-        } else if (sdfIsLeaf(i)) { \
-            best = min(best, sdfLeafDistance(i, p)); \
-        } \
-        ++n; \
-    }
+// One instruction per loop iteration: a cell's list is a few shapes, and llvmpipe would run
+// unrolled instructions past its end for nothing (masked). The unions between the shapes (and
+// the Accumulate after each part of the whole program) need nothing done: a running minimum
+// is their value, so the instruction after each one is looked at, and skipped with it when it
+// is one of those (an iteration costs every kind of instruction, whatever it finds).
+bool sdfCellsSkipsNext(uint base, uint n, uint count) {
+    if (n + 1u >= count) return false;
+    uint op = sdfInstructions[SDF_PROGRAM_AT(base + n + 1u)].opcode;
+    return op == SDF_OPCODE_COMBINE || op == SDF_OPCODE_ACCUMULATE;
+}
 
 float sdfDistance(vec3 p) {
     uint base, count;
     sdfProgramRange(p, base, count);
     float best = SDF_FAR;
-    for (uint n = 0u; n < count;) {
-        SDF_CELLS_STEP SDF_CELLS_STEP SDF_CELLS_STEP SDF_CELLS_STEP
+    for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
+        uint i = SDF_PROGRAM_AT(base + n);
+        uint op = sdfInstructions[i].opcode;
+        if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
+            best = min(best, sdfLeafDistance(i, p));
+        }
+#if SDF_HAS_BOUNDS
+        else if (op == SDF_OPCODE_BOUND_SKIP) {
+            if (sdfBoundDistance(i, p) >= best) n += sdfInstructions[i].kind;
+        } else if (op == SDF_OPCODE_SEED_BEST) {
+            best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0],
+                                             sdfInstructions[i].params[1],
+                                             sdfInstructions[i].params[2],
+                                             sdfInstructions[i].misc.x));
+        }
+#endif
     }
     return best;
 }
@@ -82,17 +101,20 @@ SdfSurface sdfSurface(vec3 p) {
     uint base, count;
     sdfProgramRange(p, base, count);
     SdfSurface best = sdfEmptySurface(p);
-    for (uint n = 0u; n < count; ++n) {
+    for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
         uint i = SDF_PROGRAM_AT(base + n);
         uint op = sdfInstructions[i].opcode;
-        if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructions[i].kind;
-        } else if (sdfIsLeaf(i)) {
+        if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             float d = sdfLeafDistance(i, p);
             if (d < best.distance)
                 best = sdfMaterialSurface(d, sdfInstructions[i].objectId,
                                           sdfInstructions[i].material, sdfInstructionPoint(i, p));
         }
+#if SDF_HAS_BOUNDS
+        else if (op == SDF_OPCODE_BOUND_SKIP) {
+            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructions[i].kind;
+        }
+#endif
     }
     return best;
 }

@@ -183,9 +183,15 @@ SdfSurface sdfEmptySurface(vec3 p) {
 
 // a combined with b by op, materials blended with the distances' factor: the id and textures of
 // the side with weight >= 0.5.
+SdfSurface sdfBlendSurfaces(SdfSurface a, SdfSurface b, float d, float w);
 SdfSurface sdfCombineSurfaces(uint op, SdfSurface a, SdfSurface b, vec4 opParams) {
     float w;
     float d = sdfCombine(op, a.distance, b.distance, opParams, w);
+    return sdfBlendSurfaces(a, b, d, w);
+}
+
+// a and b combined into distance d with a's weight w (sdfCombine's weightA).
+SdfSurface sdfBlendSurfaces(SdfSurface a, SdfSurface b, float d, float w) {
     SdfSurface r = w >= 0.5 ? a : b; // the dominant side; exact for the hard ops
     if (w > 0.0 && w < 1.0) {
         r.baseColor = mix(b.baseColor, a.baseColor, w);

@@ -20,42 +20,79 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 
 // One instruction of sdfDistance (the loop body, repeated to unroll the loop). The point stack
 // is handled inline (an array passed to a function would be copied in and out on every call).
+// Each opcode the program does not use is left out (SDF_HAS_*, common/sdf_instructions.glsl).
+#if SDF_HAS_BOUNDS
+#define SDF_DISTANCE_STEP_BOUNDS \
+    else if (op == SDF_OPCODE_BOUND_SKIP) { \
+        if (sdfBoundDistance(i, p) >= best) n += sdfInstructions[i].kind; \
+    } else if (op == SDF_OPCODE_SEED_BEST) { \
+        best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
+                                         sdfInstructions[i].params[1], \
+                                         sdfInstructions[i].params[2], \
+                                         sdfInstructions[i].misc.x)); \
+    } else if (op == SDF_OPCODE_ACCUMULATE) { \
+        --top; \
+        best = min(best, stack[top]); \
+    }
+#else
+#define SDF_DISTANCE_STEP_BOUNDS
+#endif
+#if SDF_HAS_POINT_FRAMES
+#define SDF_DISTANCE_STEP_FRAMES \
+    else if (op == SDF_OPCODE_PUSH_POINT) { \
+        saved[savedTop] = p; \
+        ++savedTop; \
+        p = sdfInstructionPoint(i, p); \
+    } else if (op == SDF_OPCODE_POP_POINT) { \
+        --savedTop; \
+        p = saved[savedTop]; \
+    }
+#else
+#define SDF_DISTANCE_STEP_FRAMES
+#endif
+#if SDF_HAS_POINT_MODIFIERS
+#define SDF_DISTANCE_STEP_POINT_MODIFIERS \
+    else if (op == SDF_OPCODE_POINT_MODIFIER) { \
+        p = sdfInstructionPointModifier(i, p); \
+    }
+#else
+#define SDF_DISTANCE_STEP_POINT_MODIFIERS
+#endif
+#if SDF_HAS_DISTANCE_MODIFIERS
+#define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS \
+    else if (op == SDF_OPCODE_DISTANCE_MODIFIER) { \
+        stack[top - 1] = sdfDistanceModifierUsed(sdfInstructions[i].kind, stack[top - 1], p, \
+                                                 sdfInstructions[i].params[0]); \
+    }
+#else
+#define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS
+#endif
+#if SDF_HAS_COMBINE
+#define SDF_DISTANCE_STEP_COMBINE \
+    else if (op == SDF_OPCODE_COMBINE) { \
+        float weightA; \
+        float b = stack[top - 1]; \
+        float a = stack[top - 2]; \
+        stack[top - 2] = \
+            sdfCombineUsed(sdfInstructions[i].kind, a, b, sdfInstructions[i].params[0], weightA); \
+        --top; \
+    }
+#else
+#define SDF_DISTANCE_STEP_COMBINE
+#endif
 #define SDF_DISTANCE_STEP \
     if (n < count) { \
         uint i = SDF_PROGRAM_AT(base + n); \
-        if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) { \
-            if (sdfBoundDistance(i, p) >= best) n += sdfInstructions[i].kind; \
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_SEED_BEST) { \
-            best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
-                                             sdfInstructions[i].params[1], \
-                                             sdfInstructions[i].params[2], \
-                                             sdfInstructions[i].misc.x)); \
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_ACCUMULATE) { \
-            --top; \
-            best = min(best, stack[top]); \
-        } else if (sdfIsLeaf(i)) { \
+        uint op = sdfInstructions[i].opcode; \
+        if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) { \
             stack[top] = sdfLeafDistance(i, p); \
             ++top; \
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_PUSH_POINT) { \
-            saved[savedTop] = p; \
-            ++savedTop; \
-            p = sdfInstructionPoint(i, p); \
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_POINT_MODIFIER) { \
-            p = sdfInstructionPointModifier(i, p); \
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_POP_POINT) { \
-            --savedTop; \
-            p = saved[savedTop]; \
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_DISTANCE_MODIFIER) { \
-            stack[top - 1] = sdfDistanceModifier(sdfInstructions[i].kind, stack[top - 1], p, \
-                                                 sdfInstructions[i].params[0]); \
-        } else { \
-            float weightA; \
-            float b = stack[top - 1]; \
-            float a = stack[top - 2]; \
-            stack[top - 2] = sdfCombine(sdfInstructions[i].kind, a, b, \
-                                        sdfInstructions[i].params[0], weightA); \
-            --top; \
         } \
+        SDF_DISTANCE_STEP_BOUNDS \
+        SDF_DISTANCE_STEP_FRAMES \
+        SDF_DISTANCE_STEP_POINT_MODIFIERS \
+        SDF_DISTANCE_STEP_DISTANCE_MODIFIERS \
+        SDF_DISTANCE_STEP_COMBINE \
     } \
     ++n;
 
@@ -73,9 +110,15 @@ float sdfDistance(vec3 p) {
     // Eight instructions per loop iteration: Mesa's llvmpipe ends a shader invocation's loops
     // after a budget of iterations shared by every loop (LP_MAX_TGSI_LOOP_ITERATIONS), which
     // large programs would exhaust within a few march steps; unrolling stretches it 8 times.
+    // A cell's program is short (sdf/cell_pruning.hpp): there llvmpipe would run the unrolled
+    // instructions past its end for nothing (masked), so two per iteration.
     for (uint n = 0u; n < count;) {
+#ifdef SDF_CELLS
+        SDF_DISTANCE_STEP SDF_DISTANCE_STEP
+#else
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP
+#endif
     }
     return top == 0 ? best : stack[0];
 }
@@ -94,35 +137,51 @@ SdfSurface sdfSurface(vec3 p) {
     stack[0] = best;                      // (read only if the program pushes nothing)
     for (uint n = 0u; n < count; ++n) {
         uint i = SDF_PROGRAM_AT(base + n);
-        if (sdfInstructions[i].opcode == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructions[i].kind;
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_SEED_BEST) {
-            // Surfaces are not seeded: `best` must be a part's surface.
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_ACCUMULATE) {
-            --top;
-            if (stack[top].distance < best.distance) best = stack[top];
-        } else if (sdfIsLeaf(i)) {
+        uint op = sdfInstructions[i].opcode;
+        if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), sdfInstructions[i].objectId,
                                             sdfInstructions[i].material,
                                             sdfInstructionPoint(i, p));
             ++top;
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_PUSH_POINT) {
+        }
+#if SDF_HAS_BOUNDS
+        else if (op == SDF_OPCODE_BOUND_SKIP) {
+            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructions[i].kind;
+        } else if (op == SDF_OPCODE_ACCUMULATE) {
+            --top;
+            if (stack[top].distance < best.distance) best = stack[top];
+        } // SDF_OPCODE_SEED_BEST: surfaces are not seeded (`best` must be a part's surface)
+#endif
+#if SDF_HAS_POINT_FRAMES
+        else if (op == SDF_OPCODE_PUSH_POINT) {
             saved[savedTop] = p;
             ++savedTop;
             p = sdfInstructionPoint(i, p);
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_POINT_MODIFIER) {
-            p = sdfInstructionPointModifier(i, p);
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_POP_POINT) {
+        } else if (op == SDF_OPCODE_POP_POINT) {
             --savedTop;
             p = saved[savedTop];
-        } else if (sdfInstructions[i].opcode == SDF_OPCODE_DISTANCE_MODIFIER) {
-            stack[top - 1].distance = sdfDistanceModifier(
+        }
+#endif
+#if SDF_HAS_POINT_MODIFIERS
+        else if (op == SDF_OPCODE_POINT_MODIFIER) {
+            p = sdfInstructionPointModifier(i, p);
+        }
+#endif
+#if SDF_HAS_DISTANCE_MODIFIERS
+        else if (op == SDF_OPCODE_DISTANCE_MODIFIER) {
+            stack[top - 1].distance = sdfDistanceModifierUsed(
                 sdfInstructions[i].kind, stack[top - 1].distance, p, sdfInstructions[i].params[0]);
-        } else {
-            stack[top - 2] = sdfCombineSurfaces(sdfInstructions[i].kind, stack[top - 2],
-                                                stack[top - 1], sdfInstructions[i].params[0]);
+        }
+#endif
+#if SDF_HAS_COMBINE
+        else if (op == SDF_OPCODE_COMBINE) {
+            float w;
+            float d = sdfCombineUsed(sdfInstructions[i].kind, stack[top - 2].distance,
+                                     stack[top - 1].distance, sdfInstructions[i].params[0], w);
+            stack[top - 2] = sdfBlendSurfaces(stack[top - 2], stack[top - 1], d, w);
             --top;
         }
+#endif
     }
     return top == 0 ? best : stack[0];
 }
