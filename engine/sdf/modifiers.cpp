@@ -417,6 +417,12 @@ float displaceGrowth(const SdfModifier& m) {
     return std::abs(m.amount);
 }
 
+// Round (d - radius), onion (|d| - thickness) and displace (d + amplitude * noise, the noise in
+// [-1, 1]) lower a value by at most their first packed parameter.
+float firstParamGrowth(const glm::vec4* params) {
+    return std::abs(params[0].x);
+}
+
 constexpr const char* kIq =
     "Quilez, Distance functions (https://iquilezles.org/articles/distfunctions/)";
 
@@ -503,7 +509,8 @@ constexpr ModifierSpec kCatalogue[] = {
      .source = kIq,
      .changeDistance = changeDistanceBy<SdfDistanceModifierKind::Round>,
      .pack = packRound,
-     .growth = roundGrowth},
+     .growth = roundGrowth,
+     .packedGrowth = firstParamGrowth},
     {.type = SdfModifierType::Onion,
      .name = "onion",
      .stage = ModifierStage::Distance,
@@ -512,7 +519,8 @@ constexpr ModifierSpec kCatalogue[] = {
      .source = kIq,
      .changeDistance = changeDistanceBy<SdfDistanceModifierKind::Onion>,
      .pack = packOnion,
-     .growth = onionGrowth},
+     .growth = onionGrowth,
+     .packedGrowth = firstParamGrowth},
     {.type = SdfModifierType::Displace,
      .name = "displace",
      .stage = ModifierStage::Distance,
@@ -524,7 +532,8 @@ constexpr ModifierSpec kCatalogue[] = {
      .pack = packDisplace,
      .readsPoint = true,
      .gradientGain = displaceGradientGain,
-     .growth = displaceGrowth},
+     .growth = displaceGrowth,
+     .packedGrowth = firstParamGrowth},
 };
 
 constexpr std::size_t kModifierCount = std::size(kCatalogue);

@@ -124,4 +124,31 @@ SdfOp withCombination(SdfOp op, SdfOpCombination combination) {
     return op;
 }
 
+SdfOperationFloor operationFloor(SdfOp op, SmoothBlend blend) {
+    const OperationSpec& spec = operationSpec(op);
+    switch (spec.combination) {
+    case SdfOpCombination::Subtraction: // max(a, -b) and its seams are never below a
+        return {SdfFloorBox::FirstOperand};
+    case SdfOpCombination::Intersection: // max(a, b) and its seams are never below either
+        return {SdfFloorBox::EitherOperand};
+    case SdfOpCombination::Xor: // max(min(a, b), -max(a, b)) >= min(a, b)
+        return {SdfFloorBox::BothOperands};
+    case SdfOpCombination::Union:
+        break;
+    }
+    constexpr float kSqrt2 = 1.41421356f;
+    switch (spec.seam) {
+    case SdfOpSeam::Hard:
+        return {SdfFloorBox::BothOperands};
+    case SdfOpSeam::Smooth: // Quilez's smooth minimum dips k/4 (polynomial), k(1 - 1/sqrt 2)
+        return {SdfFloorBox::BothOperands, 1.0f,
+                blend == SmoothBlend::Circular ? 1.0f - 1.0f / kSqrt2 : 0.25f};
+    case SdfOpSeam::Chamfer: // (a + b - k) / sqrt 2 with a, b >= m: sqrt 2 m - k / sqrt 2
+        return {SdfFloorBox::BothOperands, kSqrt2, 1.0f / kSqrt2};
+    case SdfOpSeam::Round: // k - |(k - a, k - b)| with a, b >= m: sqrt 2 m - (sqrt 2 - 1) k
+        return {SdfFloorBox::BothOperands, kSqrt2, kSqrt2 - 1.0f};
+    }
+    return {SdfFloorBox::BothOperands};
+}
+
 } // namespace rmsc

@@ -17,6 +17,14 @@
 // SdfCellOptions::farConstants asks for them: where the whole program is at least the cell's
 // edge everywhere in the cell and its program is long, a constant lower bound of that (never
 // above the true distance). Outside the grid the whole program runs.
+//
+// What it costs: a node whose floor (its exact distance to a box, less how far its operations
+// may dip below it) already decides its operation over a cell is dropped without being
+// evaluated, and when the tree's root is a chain of unions of small operands (a scene of many
+// objects), each cell is pruned straight from the whole chain, the operands that can matter
+// found nearest first in a bounding-volume hierarchy of their floors: a cell costs what it
+// keeps, not what its parent kept. An edit of numbers prunes again only the cells where a
+// changed object is not dropped by its floor, before or after the edit (repruneSdfCells).
 #pragma once
 
 #include "core/limits.hpp"

@@ -76,6 +76,10 @@ struct ModifierSpec {
     // reaches a level than the unmodified one (`growth`).
     SdfBounds (*preimage)(const SdfModifier& m, const Aabb& box) = nullptr;
     float (*growth)(const SdfModifier& m) = nullptr;
+    // Distance modifiers: the same from the instruction's packed params (the field units the
+    // instruction works in): the modified value is never more than this below the unmodified
+    // one (the per-cell pruning's lower bounds, sdf/cell_pruning.hpp). nullptr: unknown.
+    float (*packedGrowth)(const glm::vec4* params) = nullptr;
 };
 
 std::span<const ModifierSpec> modifierCatalogue();

@@ -63,6 +63,22 @@ const SdfParamSpec& smoothnessParam();
 bool takesBlend(SdfOp op);
 // The name for messages: "smooth union".
 std::string operationLabel(SdfOp op);
+// Lower bounds of the form f(y) >= distance(y, box) - drop, for every y outside the box (the
+// per-cell pruning skips a subtree whose bound already decides the operation, sdf/
+// cell_pruning.hpp): given such bounds for the operands, which box bounds the operation and
+// how much further it may fall. Derived from the row's combination and seam: a union-like one
+// is bounded by the box around both operands, its seam dipping below their minimum (a smooth
+// minimum by its curve's dip; a chamfer or round union by up to sqrt 2 times the operands'
+// drop plus a share of k where an operand is below zero); a subtraction is at least its first
+// operand, an intersection at least either, xor at least their minimum.
+enum class SdfFloorBox { BothOperands, FirstOperand, EitherOperand };
+struct SdfOperationFloor {
+    SdfFloorBox box = SdfFloorBox::BothOperands;
+    float dropScale = 1.0f;      // the operands' largest drop times this...
+    float smoothnessDrop = 0.0f; // ...plus smoothness k times this
+};
+SdfOperationFloor operationFloor(SdfOp op, SmoothBlend blend);
+
 // The operation of `op`'s seam that makes `combination` (a plain one for xor):
 // cut children are subtracted with withCombination(op, Subtraction).
 SdfOp withCombination(SdfOp op, SdfOpCombination combination);
