@@ -107,6 +107,8 @@ constexpr KeyControl kCameraKeys[] = {
     {"fov", "fov"},
     {"near", "near"},
     {"far", "far"},
+    {"projection", "projection"},
+    {"ortho_height", "ortho height (shown for an orthographic camera)"},
 };
 
 // engine/viewer/inspector_mesh.cpp.

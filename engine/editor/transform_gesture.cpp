@@ -7,7 +7,38 @@
 namespace rmsc::editor {
 namespace {
 
-// The rotation part of an affine matrix (its columns normalized; exact without shear).
+glm::vec3 startWorld(const TransformGesture& gesture) {
+    return glm::vec3(gesture.parentWorld * glm::vec4(gesture.start.position, 1.0f));
+}
+
+// The world movement for a move gesture with the mouse at `mouse`.
+glm::vec3 moveDelta(const TransformGesture& gesture, glm::vec2 mouse) {
+    const glm::vec3 origin = startWorld(gesture);
+    if (gesture.axis < 0)
+        return screenToWorldAtDepth(gesture.view, mouse, origin) -
+               screenToWorldAtDepth(gesture.view, gesture.startMouse, origin);
+    // Along an axis: the mouse movement projected on the axis as drawn on screen, one unit of
+    // the axis per its length in pixels.
+    const glm::vec3 axis = constraintAxis(gesture);
+    const glm::vec2 screenAxis =
+        worldToScreen(gesture.view, origin + axis) - worldToScreen(gesture.view, origin);
+    const float length2 = glm::dot(screenAxis, screenAxis);
+    if (length2 < 1e-6f) return glm::vec3(0.0f); // the axis points at the camera
+    const float along = glm::dot(mouse - gesture.startMouse, screenAxis) / length2;
+    return axis * (gesture.snap ? snapToStep(along, gesture.steps.distance) : along);
+}
+
+// The world movement with snapping: a free move in steps along each world axis.
+glm::vec3 snappedMoveDelta(const TransformGesture& gesture, glm::vec2 mouse) {
+    glm::vec3 delta = moveDelta(gesture, mouse);
+    if (gesture.snap && gesture.axis < 0)
+        for (int i = 0; i < 3; ++i)
+            delta[i] = snapToStep(delta[i], gesture.steps.distance);
+    return delta;
+}
+
+} // namespace
+
 glm::quat rotationOf(const glm::mat4& m) {
     glm::mat3 r(m);
     for (int c = 0; c < 3; ++c) {
@@ -17,14 +48,9 @@ glm::quat rotationOf(const glm::mat4& m) {
     return glm::normalize(glm::quat_cast(r));
 }
 
-glm::vec3 startWorld(const TransformGesture& gesture) {
-    return glm::vec3(gesture.parentWorld * glm::vec4(gesture.start.position, 1.0f));
-}
-
-// The world point under screen point `screen` on the plane through `world` that faces the
-// camera (the plane of constant depth): normalized device coordinates back through the inverse
-// view-projection matrix.
-glm::vec3 screenToWorldAtDepthOf(const GestureView& view, glm::vec2 screen, glm::vec3 world) {
+// Normalized device coordinates back through the inverse view-projection matrix, at the depth
+// `world` has: right for both projections (an orthographic one has w = 1 throughout).
+glm::vec3 screenToWorldAtDepth(const GestureView& view, glm::vec2 screen, glm::vec3 world) {
     const glm::vec4 clip = view.viewProjection * glm::vec4(world, 1.0f);
     const float depth = clip.z / clip.w;
     const glm::vec2 ndc(screen.x / view.viewportSize.x * 2.0f - 1.0f,
@@ -33,36 +59,36 @@ glm::vec3 screenToWorldAtDepthOf(const GestureView& view, glm::vec2 screen, glm:
     return glm::vec3(back) / back.w;
 }
 
-// The world movement for a move gesture with the mouse at `mouse`.
-glm::vec3 moveDelta(const TransformGesture& gesture, glm::vec2 mouse) {
-    const glm::vec3 origin = startWorld(gesture);
-    if (gesture.axis < 0)
-        return screenToWorldAtDepthOf(gesture.view, mouse, origin) -
-               screenToWorldAtDepthOf(gesture.view, gesture.startMouse, origin);
-    // Along an axis: the mouse movement projected on the axis as drawn on screen, one unit of
-    // the axis per its length in pixels.
-    const glm::vec3 axis = constraintAxis(gesture);
-    const glm::vec2 screenAxis =
-        worldToScreen(gesture.view, origin + axis) - worldToScreen(gesture.view, origin);
-    const float length2 = glm::dot(screenAxis, screenAxis);
-    if (length2 < 1e-6f) return glm::vec3(0.0f); // the axis points at the camera
-    const float along = glm::dot(mouse - gesture.startMouse, screenAxis) / length2;
-    return axis * (gesture.snap ? snapToStep(along, kSnapDistance) : along);
-}
-
-// The world movement with snapping: a free move in steps along each world axis.
-glm::vec3 snappedMoveDelta(const TransformGesture& gesture, glm::vec2 mouse) {
-    glm::vec3 delta = moveDelta(gesture, mouse);
-    if (gesture.snap && gesture.axis < 0)
-        for (int i = 0; i < 3; ++i)
-            delta[i] = snapToStep(delta[i], kSnapDistance);
-    return delta;
-}
-
-} // namespace
-
 float snapToStep(float value, float step) {
+    if (!(step > 0.0f)) return value;
     return std::round(value / step) * step;
+}
+
+Transform movedTransform(const Transform& start, const glm::mat4& parentWorld,
+                         glm::vec3 worldDelta) {
+    Transform result = start;
+    result.position = start.position + glm::inverse(glm::mat3(parentWorld)) * worldDelta;
+    return result;
+}
+
+Transform turnedTransform(const Transform& start, const glm::mat4& parentWorld, glm::vec3 worldAxis,
+                          float angle) {
+    Transform result = start;
+    const glm::quat worldTurn = glm::angleAxis(angle, worldAxis);
+    // A world-space turn seen from the parent's frame, P^-1 * turn * P, applied after the
+    // object's own rotation.
+    const glm::quat parent = rotationOf(parentWorld);
+    result.rotation = glm::normalize(glm::inverse(parent) * worldTurn * parent * start.rotation);
+    return result;
+}
+
+Transform scaledTransform(const Transform& start, int axis, float factor) {
+    Transform result = start;
+    if (axis < 0)
+        result.scale = start.scale * factor;
+    else
+        result.scale[axis] = start.scale[axis] * factor;
+    return result;
 }
 
 glm::vec2 worldToScreen(const GestureView& view, glm::vec3 world) {
@@ -110,37 +136,22 @@ glm::vec3 rotationAxis(const TransformGesture& gesture) {
 }
 
 Transform gestureTransform(const TransformGesture& gesture, glm::vec2 mouse) {
-    Transform result = gesture.start;
     switch (gesture.kind) {
-    case GestureKind::Move: {
-        // The world movement seen from the parent's frame.
-        const glm::mat3 parent(gesture.parentWorld);
-        result.position =
-            gesture.start.position + glm::inverse(parent) * snappedMoveDelta(gesture, mouse);
-        break;
-    }
+    case GestureKind::Move:
+        return movedTransform(gesture.start, gesture.parentWorld, snappedMoveDelta(gesture, mouse));
     case GestureKind::Rotate: {
         float angle = screenAngle(gesturePivot(gesture), gesture.startMouse, mouse);
-        if (gesture.snap) angle = snapToStep(angle, kSnapAngle);
-        const glm::quat worldTurn = glm::angleAxis(angle, rotationAxis(gesture));
-        // A world-space turn seen from the parent's frame, P^-1 * turn * P, applied after the
-        // object's own rotation.
-        const glm::quat parent = rotationOf(gesture.parentWorld);
-        result.rotation =
-            glm::normalize(glm::inverse(parent) * worldTurn * parent * gesture.start.rotation);
-        break;
+        if (gesture.snap) angle = snapToStep(angle, gesture.steps.angle);
+        return turnedTransform(gesture.start, gesture.parentWorld, rotationAxis(gesture), angle);
     }
     case GestureKind::Scale: {
         float factor = scaleFactor(gesturePivot(gesture), gesture.startMouse, mouse);
-        if (gesture.snap) factor = std::max(kSnapScale, snapToStep(factor, kSnapScale));
-        if (gesture.axis < 0)
-            result.scale = gesture.start.scale * factor;
-        else
-            result.scale[gesture.axis] = gesture.start.scale[gesture.axis] * factor;
-        break;
+        if (gesture.snap)
+            factor = std::max(gesture.steps.scale, snapToStep(factor, gesture.steps.scale));
+        return scaledTransform(gesture.start, gesture.axis, factor);
     }
     }
-    return result;
+    return gesture.start;
 }
 
 } // namespace rmsc::editor

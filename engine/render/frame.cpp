@@ -12,22 +12,36 @@ namespace rmsc {
 FrameCamera makeFrameCamera(const Camera& camera, int width, int height) {
     FrameCamera frame;
     const float aspect = float(width) / float(std::max(height, 1));
-    const float fovY = glm::radians(camera.fovYDegrees);
     frame.view = glm::lookAt(camera.position, camera.target, camera.up);
-    frame.projection = glm::perspective(fovY, aspect, camera.nearPlane, camera.farPlane);
-    frame.viewProjection = frame.projection * frame.view;
     frame.position = camera.position;
     frame.forward = glm::normalize(camera.target - camera.position);
     const glm::vec3 right = glm::normalize(glm::cross(frame.forward, camera.up));
     const glm::vec3 up = glm::cross(right, frame.forward);
+    frame.nearPlane = camera.nearPlane;
+    frame.farPlane = camera.farPlane;
+    if (camera.projection == CameraProjection::Orthographic) {
+        // Parallel rays along `forward`, each from its point of the camera's plane.
+        const float halfHeight = 0.5f * camera.orthoHeight;
+        const float halfWidth = halfHeight * aspect;
+        frame.projection = glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight,
+                                      camera.nearPlane, camera.farPlane);
+        frame.viewProjection = frame.projection * frame.view;
+        const glm::vec4 along(frame.forward, 0.0f);
+        frame.frustumCorners = glm::mat4(along, along, along, along);
+        frame.orthographic = true;
+        frame.orthoRight = right * halfWidth;
+        frame.orthoUp = up * halfHeight;
+        return frame;
+    }
+    const float fovY = glm::radians(camera.fovYDegrees);
+    frame.projection = glm::perspective(fovY, aspect, camera.nearPlane, camera.farPlane);
+    frame.viewProjection = frame.projection * frame.view;
     const float tanY = std::tan(0.5f * fovY);
     const float tanX = tanY * aspect;
     auto corner = [&](float sx, float sy) {
         return glm::vec4(frame.forward + sx * tanX * right + sy * tanY * up, 0.0f);
     };
     frame.frustumCorners = glm::mat4(corner(-1, -1), corner(1, -1), corner(-1, 1), corner(1, 1));
-    frame.nearPlane = camera.nearPlane;
-    frame.farPlane = camera.farPlane;
     return frame;
 }
 
@@ -40,8 +54,27 @@ glm::vec3 pixelRayDirection(const FrameCamera& camera, float x, float y, int wid
     return glm::mix(bottom, top, v);
 }
 
+glm::vec3 pixelRayOrigin(const FrameCamera& camera, float x, float y, int width, int height) {
+    if (!camera.orthographic) return camera.position;
+    const float sx = (x + 0.5f) / float(width) * 2.0f - 1.0f;
+    const float sy = (y + 0.5f) / float(height) * 2.0f - 1.0f;
+    return camera.position + sx * camera.orthoRight + sy * camera.orthoUp;
+}
+
 ConeTile coneTile(const FrameCamera& camera, int tileX, int tileY, int tileSize, int width,
                   int height) {
+    if (camera.orthographic) {
+        // As shaders/passes/cone.frag: the cylinder of the tile's parallel rays.
+        ConeTile tile;
+        tile.axis = camera.forward;
+        const float centre = 0.5f * float(tileSize);
+        tile.origin = pixelRayOrigin(camera, float(tileX * tileSize) + centre - 0.5f,
+                                     float(tileY * tileSize) + centre - 0.5f, width, height);
+        const glm::vec2 pixel(2.0f * glm::length(camera.orthoRight) / float(width),
+                              2.0f * glm::length(camera.orthoUp) / float(height));
+        tile.radius = 0.5f * float(tileSize) * glm::length(pixel);
+        return tile;
+    }
     // pixelRayDirection takes pixel indices; a window position p is pixel p - 0.5.
     auto unitRay = [&](float windowX, float windowY) {
         return glm::normalize(
@@ -82,6 +115,8 @@ GpuFrame packFrame(const FrameCamera& camera, const RenderSettings& settings, in
     frame.ao = glm::vec4(float(std::clamp(settings.ao.samples, 0, 16)), settings.ao.distance,
                          settings.ao.strength, settings.fxaa ? 1.0f : 0.0f);
     frame.fog = glm::vec4(0.0f);
+    frame.orthoRight = glm::vec4(camera.orthoRight, 0.0f);
+    frame.orthoUp = glm::vec4(camera.orthoUp, camera.orthographic ? 1.0f : 0.0f);
     return frame;
 }
 

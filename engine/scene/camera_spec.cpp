@@ -5,6 +5,16 @@
 
 namespace rmsc {
 
+std::string_view cameraProjectionName(CameraProjection projection) {
+    return projection == CameraProjection::Orthographic ? "orthographic" : "perspective";
+}
+
+std::optional<CameraProjection> findCameraProjection(std::string_view name) {
+    for (const CameraProjection p : {CameraProjection::Perspective, CameraProjection::Orthographic})
+        if (cameraProjectionName(p) == name) return p;
+    return std::nullopt;
+}
+
 std::optional<CameraProblem> cameraFrameProblem(const Camera& camera) {
     const glm::vec3 view = camera.target - camera.position;
     if (view == glm::vec3(0.0f))

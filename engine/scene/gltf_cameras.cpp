@@ -38,10 +38,6 @@ std::optional<Camera> gltfCameraAt(const MeshRig& rig, int index, const MeshPose
     const RigCamera& camera = rig.cameras.at(std::size_t(index));
     const std::string name =
         "camera " + std::to_string(index) + (camera.name.empty() ? "" : " \"" + camera.name + "\"");
-    if (camera.orthographic) {
-        why = name + " is orthographic; rmsc renders perspective cameras only";
-        return std::nullopt;
-    }
     if (camera.node < 0) {
         why = name + " is not placed by any node of the scene drawn";
         return std::nullopt;
@@ -59,8 +55,16 @@ std::optional<Camera> gltfCameraAt(const MeshRig& rig, int index, const MeshPose
     out.position = glm::vec3(position);
     out.target = glm::vec3(position + glm::normalize(forward));
     out.up = glm::vec3(glm::normalize(up));
-    out.fovYDegrees = float(glm::degrees(camera.yfov));
     out.nearPlane = float(camera.znear);
+    if (camera.orthographic) {
+        // glTF's ymag is half the view's height (its xmag is not used: the image's own aspect
+        // gives the width, as it does for a perspective camera's aspectRatio).
+        out.projection = CameraProjection::Orthographic;
+        out.orthoHeight = float(2.0 * camera.ymag);
+        out.farPlane = float(camera.zfar);
+        return out;
+    }
+    out.fovYDegrees = float(glm::degrees(camera.yfov));
     // An infinite far plane (no zfar) is drawn out to 100,000 times the near distance.
     out.farPlane = float(camera.zfar > 0.0 ? camera.zfar : camera.znear * 1e5);
     return out;

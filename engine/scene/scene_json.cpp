@@ -59,7 +59,8 @@ constexpr int kMaxLights = limits::kLights;
 
 const std::vector<std::string> kRootKeys = {"version", "camera", "render",      "materials",
                                             "lights",  "meshes", "environment", "sdf"};
-const std::vector<std::string> kCameraKeys = {"position", "target", "up", "fov", "near", "far"};
+const std::vector<std::string> kCameraKeys = {"position", "target", "up",         "fov",
+                                              "near",     "far",    "projection", "ortho_height"};
 const std::vector<std::string> kRenderKeys = {"max_steps",  "max_distance", "surface_epsilon",
                                               "background", "ambient",      "exposure"};
 const std::vector<std::string> kMaterialKeys = {"base_color", "metallic", "roughness", "emissive"};
@@ -105,6 +106,21 @@ void readCamera(const SceneReader& r, const Json& object, Camera& camera) {
                                                        formatNumber(camera.nearPlane) + "), got " +
                                                        formatNumber(camera.farPlane));
     }
+    if (const Json* projection = findMember(object, "projection")) {
+        const std::string at = childPointer(pointer, "projection");
+        if (const auto name = readString(r.json, *projection, at)) {
+            if (const std::optional<CameraProjection> known = findCameraProjection(*name))
+                camera.projection = *known;
+            else
+                r.json.error(at, "unknown projection \"" + *name +
+                                     "\"; expected \"perspective\" or \"orthographic\"");
+        }
+    }
+    readNumberField(r.json, object, pointer, "ortho_height", &camera.orthoHeight,
+                    numberRange(kCameraOrthoHeightRange));
+    if (findMember(object, "ortho_height") && camera.projection != CameraProjection::Orthographic)
+        r.json.warning(childPointer(pointer, "ortho_height"),
+                       "\"ortho_height\" has no effect without \"projection\": \"orthographic\"");
     if (!positionOk || !targetOk || !upOk) return;
     if (const std::optional<CameraProblem> problem = cameraFrameProblem(camera))
         r.json.error(childPointer(pointer, problem->key), problem->message);

@@ -2,6 +2,7 @@
 // name, shape parameters by their catalogue names, rotations as exact quaternions and numbers in
 // the fewest digits that read back as the same float. Number arrays stay on one line.
 #include "material_texture_json.hpp"
+#include "scene/camera_spec.hpp"
 #include "scene/scene_json.hpp"
 
 #include "lighting_json.hpp"
@@ -52,6 +53,11 @@ Json cameraToJson(const Camera& camera) {
     out["fov"] = floatToJson(camera.fovYDegrees);
     out["near"] = floatToJson(camera.nearPlane);
     out["far"] = floatToJson(camera.farPlane);
+    // Written only for an orthographic camera: a perspective one's file stays as it was.
+    if (camera.projection == CameraProjection::Orthographic) {
+        out["projection"] = std::string(cameraProjectionName(camera.projection));
+        out["ortho_height"] = floatToJson(camera.orthoHeight);
+    }
     return out;
 }
 

@@ -367,16 +367,17 @@ int sdfMarchSteps(const SdfProgram& program, const RenderSettings& settings, glm
 }
 
 SdfConeMarch sdfMarchCone(const SdfProgram& program, const RenderSettings& settings,
-                          glm::vec3 origin, glm::vec3 axis, float chord, float start) {
+                          glm::vec3 origin, glm::vec3 axis, float chord, float start,
+                          float radius) {
     SdfConeMarch cone{start, 0};
     if (program.instructions.empty()) return cone;
     const float epsilon = settings.surfaceEpsilon;
     float& s = cone.distance;
     for (int i = 0; i < settings.maxSteps && s < settings.maxDistance; ++i) {
-        const float g =
-            sdfDistance(program, origin + axis * s) - chord * s - epsilon * std::max(s, 1.0f);
+        const float g = sdfDistance(program, origin + axis * s) - chord * s -
+                        epsilon * std::max(s, 1.0f) - radius;
         cone.steps = i + 1;
-        if (g < 0.25f * chord * s) break;
+        if (g < 0.25f * chord * s + 0.25f * radius) break;
         s += g / (1.0f + chord + epsilon);
     }
     return cone;

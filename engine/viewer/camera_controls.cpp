@@ -31,7 +31,12 @@ void handleCamera(const InputState& input, const Rect& viewport, bool gestureAct
     if (input.clicked[1] && inViewport && !gestureActive) drags.looking = true;
     if (!input.buttons[1]) drags.looking = false;
     if (drags.looking) fly.look = input.mouseDelta;
-    if (input.wheel != 0.0f && inViewport) session.camera.changeSpeed(input.wheel);
+    if (input.wheel != 0.0f && inViewport) { // orthographic: zoom, else the fly speed
+        if (session.camera.orthographic)
+            session.camera.zoom(input.wheel);
+        else
+            session.camera.changeSpeed(input.wheel);
+    }
 
     if (input.clicked[0] && input.alt() && inViewport && !gestureActive) drags.orbiting = true;
     if (!input.buttons[0]) drags.orbiting = false;
@@ -53,6 +58,12 @@ void frameSelection(EditorSession& session) {
         bounds = editor::selectionBounds(session.document.scene(), editor::Selection::sdf({}));
     if (!bounds) return;
     session.camera.frame(bounds->center, bounds->radius, session.sceneCamera.fovYDegrees);
+}
+
+std::string viewLabel(const editor::FlyCamera& camera) {
+    const std::optional<editor::AxisView> along = camera.axisView();
+    return std::string(along ? editor::axisViewName(*along) : "User") +
+           (camera.orthographic ? " Ortho" : " Persp") + (camera.allowRoll ? ", roll" : "");
 }
 
 } // namespace rmsc::app

@@ -1,12 +1,15 @@
 // The fly camera's controls: W / A / S / D, Space and Left Shift (while the right button is
-// held) fly (Shift with a movement key is fast), Q / E roll, the right button held looks around,
-// the wheel sets the speed, Alt + left drag orbits around the selection; and framing the
-// selection (F).
+// held) fly (Shift with a movement key is fast), Q / E roll (when roll is allowed), the right
+// button held looks around, the wheel sets the speed (zooms an orthographic view), Alt + left
+// drag orbits around the selection; and framing the selection (F). The numpad views and the
+// bookmarks are view_shortcuts.hpp.
 #pragma once
 
 #include "editor_session.hpp"
 #include "input_state.hpp"
 #include "panel_layout.hpp"
+
+#include <string>
 
 namespace rmsc::app {
 
@@ -23,5 +26,8 @@ void handleCamera(const InputState& input, const Rect& viewport, bool gestureAct
                   CameraDrags& drags, EditorSession& session, float seconds);
 // Looks at the selection (or the whole SDF) so that it fills the view.
 void frameSelection(EditorSession& session);
+// The view's name, as Blender shows it: "Front Ortho", "User Persp" (a view along no axis), with
+// ", roll" while roll is allowed.
+std::string viewLabel(const editor::FlyCamera& camera);
 
 } // namespace rmsc::app

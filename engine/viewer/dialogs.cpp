@@ -1,6 +1,7 @@
 // The modal dialogs, each a function of its own (see dialogs.hpp).
 #include "dialogs.hpp"
 
+#include "editor/camera_edits.hpp"
 #include "editor/recovery.hpp"
 #include "editor/scene_edits.hpp"
 
@@ -146,7 +147,53 @@ void drawChangedOnDiskDialog(Dialogs& dialogs, editor::Document& document, Messa
     ImGui::EndPopup();
 }
 
+// Saves, or asks for the file to save as.
+void goOnSaving(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Messages& messages,
+                bool saveAs) {
+    if (saveAs)
+        dialogs.askForPath(PathPurpose::SaveAs, session.document.file().empty()
+                                                    ? "scene.json"
+                                                    : session.document.file().string());
+    else
+        saveScene(session, files, messages, dialogs);
+}
+
+void drawCameraOnSaveDialog(Dialogs& dialogs, EditorSession& session, SceneFiles& files,
+                            Messages& messages) {
+    if (!beginModal("Scene camera", dialogs.askCamera)) return;
+    ImGui::TextUnformatted("The view is not the scene camera's. Should the saved scene's camera\n"
+                           "look from the view (rmsc render draws what the scene camera sees)?");
+    if (ImGui::Button("Update the scene camera")) {
+        session.saveCameraToScene(); // an undo step of its own
+        goOnSaving(dialogs, session, files, messages, dialogs.cameraThenSaveAs);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    // The default (Enter): the scene as edited, its camera as it was.
+    if (ImGui::Button("Keep the scene camera") ||
+        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) {
+        goOnSaving(dialogs, session, files, messages, dialogs.cameraThenSaveAs);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (cancelled("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::TextDisabled("Enter keeps the scene camera; Esc cancels the save.");
+    ImGui::EndPopup();
+}
+
 } // namespace
+
+void requestSave(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Messages& messages,
+                 bool saveAs) {
+    if (editor::viewDiffersFromCamera(session.viewCamera(), session.document.scene().camera)) {
+        messages.notice("the view is not the scene camera's: update the scene camera, keep it, "
+                        "or cancel the save?");
+        dialogs.askCamera = true;
+        dialogs.cameraThenSaveAs = saveAs;
+        return;
+    }
+    goOnSaving(dialogs, session, files, messages, saveAs);
+}
 
 void Dialogs::askForPath(PathPurpose purpose, std::string initial) {
     askPath = true;
@@ -173,6 +220,7 @@ void drawDialogs(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Me
     drawUnsavedChangesDialog(dialogs, session, files, messages);
     drawPathDialog(dialogs, session, files, messages);
     drawChangedOnDiskDialog(dialogs, session.document, messages);
+    drawCameraOnSaveDialog(dialogs, session, files, messages);
 }
 
 } // namespace rmsc::app

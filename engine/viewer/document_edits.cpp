@@ -4,9 +4,11 @@
 #include "core/limits.hpp"
 #include "editor/clipboard.hpp"
 #include "editor/multi_selection.hpp"
+#include "editor/new_object_place.hpp"
 #include "editor/profile_edits.hpp"
 #include "editor/scene_edits.hpp"
 #include "editor/selection_edits.hpp"
+#include "render/frame.hpp"
 #include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
 #include "sdf/profiles.hpp"
@@ -17,11 +19,35 @@ namespace rmsc::app {
 
 using editor::Selection;
 
-void addShape(editor::Document& document, const PrimitiveSpec& spec) {
-    document.apply("Add " + std::string(spec.name), [&](Scene& scene, Selection& selection) {
-        selection =
-            Selection::sdf(editor::insertSdfNode(scene, selection, editor::makeShape(spec.id)));
+glm::vec3 newShapePoint(const NewShapePlace& place) {
+    // The ray through the view's centre, as the march pass builds it (from the centre of the
+    // near plane for an orthographic view), between the near and the far plane.
+    const FrameCamera frame = makeFrameCamera(place.camera, 2, 2);
+    editor::PickRay ray;
+    ray.origin = pixelRayOrigin(frame, 0.5f, 0.5f, 2, 2);
+    ray.direction = frame.forward;
+    ray.tMin = place.camera.nearPlane;
+    ray.tMax = place.camera.farPlane;
+    return editor::newObjectPoint(place.prepared, ray, place.fallbackDistance);
+}
+
+namespace {
+
+// Adds `node` into the selection with its origin at the new shape's point, selected.
+void addPlacedNode(editor::Document& document, const std::string& label, SdfNode node,
+                   const NewShapePlace& place) {
+    const glm::vec3 where = newShapePoint(place);
+    document.apply(label, [&](Scene& scene, Selection& selection) {
+        const std::vector<int> path = editor::insertSdfNode(scene, selection, std::move(node));
+        editor::placeSdfNodeAt(scene, path, where);
+        selection = Selection::sdf(path);
     });
+}
+
+} // namespace
+
+void addShape(editor::Document& document, const PrimitiveSpec& spec, const NewShapePlace& place) {
+    addPlacedNode(document, "Add " + std::string(spec.name), editor::makeShape(spec.id), place);
 }
 
 void addGroup(editor::Document& document, SdfOp op) {
@@ -30,12 +56,10 @@ void addGroup(editor::Document& document, SdfOp op) {
     });
 }
 
-void addProfileShape(editor::Document& document, SdfProfileSolid solid) {
-    document.apply("Add " + std::string(profileSolidSpec(solid).name),
-                   [&](Scene& scene, Selection& selection) {
-                       selection = Selection::sdf(editor::insertSdfNode(
-                           scene, selection, editor::makeProfileShape(solid)));
-                   });
+void addProfileShape(editor::Document& document, SdfProfileSolid solid,
+                     const NewShapePlace& place) {
+    addPlacedNode(document, "Add " + std::string(profileSolidSpec(solid).name),
+                  editor::makeProfileShape(solid), place);
 }
 
 void addLight(editor::Document& document, LightType type, glm::vec3 position) {

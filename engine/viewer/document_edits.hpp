@@ -3,6 +3,7 @@
 #pragma once
 
 #include "editor/document.hpp"
+#include "prepare/prepared_scene.hpp"
 #include "sdf/primitives.hpp"
 
 #include <glm/glm.hpp>
@@ -12,9 +13,21 @@
 
 namespace rmsc::app {
 
-void addShape(editor::Document& document, const PrimitiveSpec& spec);    // into the selection
-void addProfileShape(editor::Document& document, SdfProfileSolid solid); // into the selection
-void addGroup(editor::Document& document, SdfOp op);                     // into the selection
+// What decides where a new shape goes (editor/new_object_place.hpp): the view's camera and
+// the newest scene that compiled (nullptr: none yet), looked at only when a shape is added.
+struct NewShapePlace {
+    const PreparedScene* prepared = nullptr;
+    Camera camera;                 // the view
+    float fallbackDistance = 5.0f; // along the view when its centre ray meets nothing
+};
+// The world point under the view's centre (on the surface it meets, else at the fallback
+// distance).
+glm::vec3 newShapePoint(const NewShapePlace& place);
+
+// A shape into the selection (its group, or next to it), its origin at newShapePoint(place).
+void addShape(editor::Document& document, const PrimitiveSpec& spec, const NewShapePlace& place);
+void addProfileShape(editor::Document& document, SdfProfileSolid solid, const NewShapePlace& place);
+void addGroup(editor::Document& document, SdfOp op); // into the selection
 // A light of `type` at `position` (where the view looks), selected; nothing at the limit.
 void addLight(editor::Document& document, LightType type, glm::vec3 position);
 bool canAddLight(const editor::Document& document);

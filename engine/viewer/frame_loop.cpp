@@ -12,6 +12,7 @@
 #include "render/shader_library.hpp"
 #include "screenshots.hpp"
 #include "shortcuts.hpp"
+#include "view_shortcuts.hpp"
 #include "viewport_pick.hpp"
 
 #include <backends/imgui_impl_opengl3.h>
@@ -119,7 +120,8 @@ ScriptActions Viewer::readInput() {
             ++scriptHoldFrames_;
         else
             playScriptFrame(*script_, scriptFrame_++, glfwGetTime(), queue_, scriptMods_);
-    } else if (queue_.empty() && gpu_.refined() && !ImGui::IsAnyItemActive() && !gesture_.active) {
+    } else if (queue_.empty() && gpu_.refined() && !ImGui::IsAnyItemActive() && !gesture_.active &&
+               !gizmo_.dragging()) {
         glfwWaitEventsTimeout(0.25); // idle: wake for input or the file poll
     } else {
         glfwPollEvents();
@@ -146,33 +148,46 @@ void Viewer::handleInput(float seconds) {
     handleShortcuts(input_, gesture_, commands);
     carryOut(commands);
     // Before the camera, so the S of "scale" does not also fly back.
-    startGesture(gesture_, input_, session_, layout_.viewport, inspector_.worldCoordinates);
-    handleCamera(input_, layout_.viewport, gesture_.active, cameraDrags_, session_, seconds);
-    handleViewportClick(input_, layout_.viewport, gesture_.active, gpu_.newestScene(), session_);
+    if (!gizmo_.dragging())
+        startGesture(gesture_, input_, session_, layout_.viewport, inspector_.worldCoordinates,
+                     gizmo_.steps);
+    // Before the click to select: a press on a handle drags it and selects nothing.
+    handleGizmo(gizmo_, input_, session_.document, session_.viewCamera(), layout_.viewport,
+                inspector_.worldCoordinates, gesture_.active);
+    const bool busy = gesture_.active || gizmo_.dragging();
+    handleViewShortcuts(input_, busy, session_, messages_);
+    handleCamera(input_, layout_.viewport, busy, cameraDrags_, session_, seconds);
+    handleViewportClick(input_, layout_.viewport, busy, gpu_.newestScene(), session_);
     updateGesture(gesture_, input_, session_.document, layout_.viewport);
 }
 
 void Viewer::drawUi() {
     ViewerCommands commands;
+    const NewShapePlace place = newShapePlace();
     if (ImGui::BeginMainMenuBar()) {
-        drawMenus(session_.document, view_, commands);
+        drawMenus(session_, view_, place, messages_, commands);
         carryOut(commands); // before the title, which shows whether the scene is saved
         drawMenuBarTitle(session_.document);
         ImGui::EndMainMenuBar();
     }
-    drawHierarchyPanel(session_.document, layout_, commands);
+    drawHierarchyPanel(session_.document, layout_, place, commands);
     carryOut(commands);
     drawInspectorPanel(session_, inspector_, view_, layout_, commands);
     carryOut(commands);
     drawStatusOverlay(layout_.viewport, gpu_.status(), frameMilliseconds_, view_,
                       session_.camera.speed, gesture_.active ? &gesture_.math : nullptr, messages_);
+    drawGizmo(gizmo_, session_.document, session_.viewCamera(), layout_.viewport,
+              inspector_.worldCoordinates);
+    drawViewportToolbar(gizmo_, inspector_.worldCoordinates, viewLabel(session_.camera),
+                        layout_.viewport);
     drawProblems(layout_.viewport, messages_);
     drawDialogs(dialogs_, session_, files_, messages_);
 }
 
 void Viewer::commitFinishedEdits() {
     editor::Document& document = session_.document;
-    if (!ImGui::IsAnyItemActive() && !gesture_.active && document.hasPendingChange())
+    if (!ImGui::IsAnyItemActive() && !gesture_.active && !gizmo_.dragging() &&
+        document.hasPendingChange())
         document.commit();
     if (!editor::selectionValid(document.scene(), document.selection))
         document.selection = editor::Selection::none();
@@ -252,6 +267,16 @@ bool Viewer::loadShaders(bool initial) {
         gpu_.useShaders(embeddedShaderFiles(), error))
         return true;
     return gpu_.hasShaders();
+}
+
+NewShapePlace Viewer::newShapePlace() const {
+    NewShapePlace place;
+    place.prepared = gpu_.newestScene();
+    place.camera = session_.viewCamera();
+    // Where the view looks when its centre meets nothing: its focus (the scene camera's target,
+    // or what was framed or orbited last), within reason.
+    place.fallbackDistance = std::clamp(session_.camera.focusDistance, 0.5f, 50.0f);
+    return place;
 }
 
 ViewInput Viewer::viewInput() const {

@@ -1,18 +1,21 @@
 // The viewer (`rmsc view`, started by runViewer in viewer/viewer.hpp): owns the window and the
 // parts, and runs the frame loop. A frame takes its events from the input queue (real or
-// replayed input, editor/input_queue.hpp), runs the shortcuts,
-// gestures and camera, draws the menus, panels, overlay and dialogs (carrying out the commands
-// each queues right after it), commits finished edits, looks at the files, hands the scene to
-// the GPU side and draws the view; then writes the screenshots a replay script asks for.
+// replayed input, editor/input_queue.hpp), runs the shortcuts, gestures, the gizmo and the
+// camera, draws the menus, panels, overlay, gizmo, toolbar and dialogs (carrying out the
+// commands each queues right after it), commits finished edits, looks at the files, hands the
+// scene to the GPU side and draws the view; then writes the screenshots a replay script asks
+// for.
 #pragma once
 
 #include "camera_controls.hpp"
 #include "dialogs.hpp"
+#include "document_edits.hpp"
 #include "editor/file_watcher.hpp"
 #include "editor/input_queue.hpp"
 #include "editor_session.hpp"
 #include "frame_stats.hpp"
 #include "gesture_controls.hpp"
+#include "gizmo_controls.hpp"
 #include "input_state.hpp"
 #include "inspector.hpp"
 #include "messages.hpp"
@@ -54,7 +57,8 @@ class Viewer {
     void updateView(bool waitForBuilds, bool refineAll);
     int writeScriptShots(const ScriptActions& actions); // returns how many failed
     bool loadShaders(bool initial);
-    ViewInput viewInput() const; // what the view shows this frame
+    ViewInput viewInput() const;         // what the view shows this frame
+    NewShapePlace newShapePlace() const; // where a shape added this frame goes
     void screenshotToDefaultFile();
     double now() const; // seconds since the start
 
@@ -83,6 +87,7 @@ class Viewer {
     InspectorState inspector_;
     ViewSettings view_;
     ViewportGesture gesture_;
+    ViewportGizmo gizmo_;
     CameraDrags cameraDrags_;
     ViewRenderer gpu_; // after window_: goes first, while its context exists
 };

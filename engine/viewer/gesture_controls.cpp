@@ -22,7 +22,7 @@ std::string gestureLabel(const editor::TransformGesture& g) {
 } // namespace
 
 void startGesture(ViewportGesture& gesture, const InputState& input, EditorSession& session,
-                  const Rect& viewport, bool worldAxes) {
+                  const Rect& viewport, bool worldAxes, const editor::SnapSteps& steps) {
     if (gesture.active || !keyboardFree(input)) return;
     editor::GestureKind kind;
     if (input.pressed(GLFW_KEY_G))
@@ -43,6 +43,7 @@ void startGesture(ViewportGesture& gesture, const InputState& input, EditorSessi
     g.space = worldAxes ? editor::AxisSpace::World : editor::AxisSpace::Local;
     g.start = target->start;
     g.parentWorld = target->parentWorld;
+    g.steps = steps;
     const FrameCamera frame =
         makeFrameCamera(session.viewCamera(), int(viewport.width), int(viewport.height));
     g.view.viewProjection = frame.viewProjection;

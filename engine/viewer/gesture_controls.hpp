@@ -1,6 +1,7 @@
 // Moving (G), rotating (R) and scaling (S) the selected shape, group or mesh, and moving and
 // turning the selected light, with the mouse, like Blender: X / Y / Z constrain to an axis (again:
-// free), Ctrl held snaps (steps of 0.1 m, 15 degrees, tenths of the scale), a click or Enter
+// free), Ctrl held snaps (by default steps of 0.1 m, 15 degrees, tenths of the scale; the
+// view's toolbar sets them), a click or Enter
 // keeps the result as one undo step, Esc or the right button cancels. The math is
 // editor/transform_gesture.hpp.
 #pragma once
@@ -20,9 +21,9 @@ struct ViewportGesture {
 };
 
 // Starts a gesture when G, R or S is pressed with something movable selected; `worldAxes`
-// makes X / Y / Z the world's axes (otherwise the object's own).
+// makes X / Y / Z the world's axes (otherwise the object's own); Ctrl snaps to `steps`.
 void startGesture(ViewportGesture& gesture, const InputState& input, EditorSession& session,
-                  const Rect& viewport, bool worldAxes);
+                  const Rect& viewport, bool worldAxes, const editor::SnapSteps& steps);
 // Follows the mouse; keeps, cancels or changes the axis.
 void updateGesture(ViewportGesture& gesture, const InputState& input, editor::Document& document,
                    const Rect& viewport);

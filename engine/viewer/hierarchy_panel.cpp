@@ -33,15 +33,16 @@ std::string pathId(const std::vector<int>& path) {
     return id;
 }
 
-void drawAddButtons(editor::Document& document, ViewerCommands& commands) {
+void drawAddButtons(editor::Document& document, const NewShapePlace& place,
+                    ViewerCommands& commands) {
     if (ImGui::Button("+ Shape")) ImGui::OpenPopup("add shape");
     if (ImGui::BeginPopup("add shape")) {
         for (const PrimitiveSpec& spec : primitiveCatalogue())
-            if (ImGui::Selectable(std::string(spec.name).c_str())) addShape(document, spec);
+            if (ImGui::Selectable(std::string(spec.name).c_str())) addShape(document, spec, place);
         ImGui::Separator();
         for (const ProfileSolidSpec& solid : profileSolidCatalogue())
             if (ImGui::Selectable(std::string(solid.name).c_str()))
-                addProfileShape(document, solid.solid);
+                addProfileShape(document, solid.solid, place);
         ImGui::EndPopup();
     }
     ImGui::SameLine();
@@ -210,14 +211,14 @@ void drawHierarchyHelp() {
 } // namespace
 
 void drawHierarchyPanel(editor::Document& document, const PanelLayout& layout,
-                        ViewerCommands& commands) {
+                        const NewShapePlace& place, ViewerCommands& commands) {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(0, top));
     ImGui::SetNextWindowSize(ImVec2(layout.leftPanelWidth, io.DisplaySize.y - top));
     ImGui::Begin("Scene", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    drawAddButtons(document, commands);
+    drawAddButtons(document, place, commands);
     ImGui::Separator();
     drawSdfTree(document);
     drawMeshAndLightLists(document);

@@ -3,13 +3,15 @@
 // help text.
 #pragma once
 
+#include "document_edits.hpp"
 #include "editor/document.hpp"
 #include "panel_layout.hpp"
 #include "viewer_commands.hpp"
 
 namespace rmsc::app {
 
+// New shapes go where `place` says.
 void drawHierarchyPanel(editor::Document& document, const PanelLayout& layout,
-                        ViewerCommands& commands);
+                        const NewShapePlace& place, ViewerCommands& commands);
 
 } // namespace rmsc::app

@@ -63,6 +63,24 @@ void drawCameraInspector(EditorSession& session, std::string& refusal) {
         session.sceneCamera.farPlane = c.farPlane;
         session.document.markChanged("Camera lens");
     }
+    // The scene camera's projection (the view's own is numpad 5 / View > Orthographic; "Reset
+    // to scene camera" takes this one, "Save camera to scene" gives it the view's).
+    const char* projections[] = {"perspective", "orthographic"};
+    int projection = int(c.projection);
+    if (ImGui::Combo("projection", &projection, projections, 2)) {
+        c.projection = CameraProjection(projection);
+        session.document.markChanged("Camera projection");
+    }
+    helpTooltip("How rmsc render projects the scene: perspective, or orthographic (parallel "
+                "rays; sizes do not shrink with distance). The view's own projection is numpad "
+                "5 or View > Orthographic.");
+    if (c.projection == CameraProjection::Orthographic) {
+        const editor::FloatFieldRange height = editor::floatFieldRange(kCameraOrthoHeightRange);
+        if (ImGui::DragFloat("ortho height", &c.orthoHeight, 0.02f, std::max(height.min, 1e-4f),
+                             std::min(height.max, 1e5f), "%.3f m", ImGuiSliderFlags_AlwaysClamp))
+            session.document.markChanged("Camera ortho height");
+        helpTooltip("The height of the orthographic view, world units (> 0)");
+    }
     if (ImGui::Button("Save camera to scene")) session.saveCameraToScene();
     ImGui::SameLine();
     if (ImGui::Button("Reset to scene camera")) session.resetCamera();

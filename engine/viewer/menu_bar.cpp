@@ -8,6 +8,7 @@
 #include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
 #include "sdf/profiles.hpp"
+#include "view_shortcuts.hpp"
 
 #include <imgui.h>
 
@@ -65,17 +66,17 @@ void drawEditMenu(editor::Document& document, ViewerCommands& commands) {
     ImGui::EndMenu();
 }
 
-void drawAddMenu(editor::Document& document, ViewerCommands& commands) {
+void drawAddMenu(editor::Document& document, const NewShapePlace& place, ViewerCommands& commands) {
     if (!ImGui::BeginMenu("Add")) return;
     if (ImGui::BeginMenu("Shape")) {
         for (const PrimitiveSpec& spec : primitiveCatalogue()) {
-            if (ImGui::MenuItem(std::string(spec.name).c_str())) addShape(document, spec);
+            if (ImGui::MenuItem(std::string(spec.name).c_str())) addShape(document, spec, place);
             helpTooltip(spec.description);
         }
         ImGui::Separator();
         for (const ProfileSolidSpec& solid : profileSolidCatalogue()) {
             if (ImGui::MenuItem(std::string(solid.name).c_str()))
-                addProfileShape(document, solid.solid);
+                addProfileShape(document, solid.solid, place);
             helpTooltip(solid.description);
         }
         ImGui::EndMenu();
@@ -96,11 +97,37 @@ void drawAddMenu(editor::Document& document, ViewerCommands& commands) {
     ImGui::EndMenu();
 }
 
-void drawViewMenu(ViewSettings& view) {
+// A menu item for a view request, with its shortcut's keys.
+void viewItem(const char* label, ViewRequest request, EditorSession& session, Messages& messages,
+              bool selected = false, bool enabled = true) {
+    if (ImGui::MenuItem(label, viewShortcutKeys(request), selected, enabled))
+        applyViewRequest(session, request, messages);
+}
+
+void drawViewMenu(EditorSession& session, ViewSettings& view, Messages& messages) {
     if (!ImGui::BeginMenu("View")) return;
     const char* names[] = {"Colour", "Normals", "Depth", "Object id", "March steps"};
     for (int i = 0; i < 5; ++i)
         if (ImGui::MenuItem(names[i], nullptr, int(view.mode) == i)) view.mode = ViewMode(i);
+    ImGui::Separator();
+    // The views along the axes, looking at the point the view looks at.
+    const std::optional<editor::AxisView> along = session.camera.axisView();
+    const struct {
+        const char* label;
+        ViewAction action;
+        editor::AxisView view;
+    } axisViews[] = {
+        {"Front", ViewAction::FromFront, editor::AxisView::Front},
+        {"Back", ViewAction::FromBack, editor::AxisView::Back},
+        {"Right", ViewAction::FromRight, editor::AxisView::Right},
+        {"Left", ViewAction::FromLeft, editor::AxisView::Left},
+        {"Top", ViewAction::FromTop, editor::AxisView::Top},
+        {"Bottom", ViewAction::FromBottom, editor::AxisView::Bottom},
+    };
+    for (const auto& v : axisViews)
+        viewItem(v.label, {v.action}, session, messages, along == v.view);
+    viewItem("Orthographic", {ViewAction::ToggleOrthographic}, session, messages,
+             session.camera.orthographic);
     ImGui::Separator();
     ImGui::MenuItem("Overlay", nullptr, &view.showOverlay);
     ImGui::MenuItem("Light markers", nullptr, &view.showLights);
@@ -110,22 +137,45 @@ void drawViewMenu(ViewSettings& view) {
     ImGui::EndMenu();
 }
 
-void drawCameraMenu(ViewerCommands& commands) {
+void drawCameraMenu(EditorSession& session, Messages& messages, ViewerCommands& commands) {
     if (!ImGui::BeginMenu("Camera")) return;
     if (ImGui::MenuItem("Frame selection", "F")) commands.push_back(ViewerCommand::FrameSelection);
     if (ImGui::MenuItem("Save camera to scene")) commands.push_back(ViewerCommand::SaveCamera);
     if (ImGui::MenuItem("Reset to scene camera")) commands.push_back(ViewerCommand::ResetCamera);
+    ImGui::Separator();
+    // Bookmarks: keep the view in a slot, or go back to a kept one.
+    if (ImGui::BeginMenu("Keep view as bookmark")) {
+        for (int slot = 1; slot <= editor::kViewBookmarks; ++slot)
+            viewItem(("Bookmark " + std::to_string(slot)).c_str(),
+                     {ViewAction::StoreBookmark, slot}, session, messages,
+                     session.bookmarks.recall(slot).has_value());
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Go to bookmark")) {
+        for (int slot = 1; slot <= editor::kViewBookmarks; ++slot)
+            viewItem(("Bookmark " + std::to_string(slot)).c_str(),
+                     {ViewAction::RecallBookmark, slot}, session, messages, false,
+                     session.bookmarks.recall(slot).has_value());
+        ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Allow roll (Q / E)", nullptr, session.camera.allowRoll))
+        applyViewRequest(session, {ViewAction::ToggleRoll}, messages);
+    helpTooltip("Off (the default), the horizon stays level: Q / E do nothing and looking or "
+                "orbiting stops at straight up or down; turning it off levels the view");
     ImGui::EndMenu();
 }
 
 } // namespace
 
-void drawMenus(editor::Document& document, ViewSettings& view, ViewerCommands& commands) {
+void drawMenus(EditorSession& session, ViewSettings& view, const NewShapePlace& place,
+               Messages& messages, ViewerCommands& commands) {
+    editor::Document& document = session.document;
     drawFileMenu(commands);
     drawEditMenu(document, commands);
-    drawAddMenu(document, commands);
-    drawViewMenu(view);
-    drawCameraMenu(commands);
+    drawAddMenu(document, place, commands);
+    drawViewMenu(session, view, messages);
+    drawCameraMenu(session, messages, commands);
 }
 
 void drawMenuBarTitle(const editor::Document& document) {

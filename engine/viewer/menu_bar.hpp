@@ -1,15 +1,22 @@
-// The main menu bar: File, Edit, Add, View and Camera, and the scene's file name at the right.
+// The main menu bar: File, Edit, Add, View (what the view shows, the views along the axes,
+// orthographic) and Camera (framing, the scene camera, bookmarks, roll), and the scene's file
+// name at the right.
 // Items edit the document or the view settings themselves, or queue viewer commands.
 #pragma once
 
+#include "document_edits.hpp"
 #include "editor/document.hpp"
+#include "editor_session.hpp"
+#include "messages.hpp"
 #include "view_settings.hpp"
 #include "viewer_commands.hpp"
 
 namespace rmsc::app {
 
-// The menus; call between ImGui::BeginMainMenuBar and ImGui::EndMainMenuBar.
-void drawMenus(editor::Document& document, ViewSettings& view, ViewerCommands& commands);
+// The menus; call between ImGui::BeginMainMenuBar and ImGui::EndMainMenuBar. New shapes go where
+// `place` says; the View and Camera menus change the session's view.
+void drawMenus(EditorSession& session, ViewSettings& view, const NewShapePlace& place,
+               Messages& messages, ViewerCommands& commands);
 // The scene's file (or "(unsaved scene)"), with " *" when there are unsaved changes; after the
 // menus.
 void drawMenuBarTitle(const editor::Document& document);

@@ -31,6 +31,9 @@ int keyCode(const std::string& name) {
         {"f1", GLFW_KEY_F1},
     };
     if (auto it = named.find(name); it != named.end()) return it->second;
+    // The numpad's digits: kp_0 .. kp_9.
+    if (name.size() == 4 && name.compare(0, 3, "kp_") == 0 && name[3] >= '0' && name[3] <= '9')
+        return GLFW_KEY_KP_0 + (name[3] - '0');
     if (name.size() == 1) {
         const char c = name[0];
         if (c >= 'a' && c <= 'z') return GLFW_KEY_A + (c - 'a');

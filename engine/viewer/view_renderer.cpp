@@ -17,7 +17,9 @@ namespace {
 
 bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.target == b.target && a.up == b.up &&
-           a.fovYDegrees == b.fovYDegrees && a.nearPlane == b.nearPlane && a.farPlane == b.farPlane;
+           a.fovYDegrees == b.fovYDegrees && a.nearPlane == b.nearPlane &&
+           a.farPlane == b.farPlane && a.projection == b.projection &&
+           a.orthoHeight == b.orthoHeight;
 }
 
 } // namespace

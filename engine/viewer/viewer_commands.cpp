@@ -26,9 +26,11 @@ void Viewer::carryOut(ViewerCommands& commands) {
     for (const ViewerCommand command : commands) {
         switch (command) {
         case ViewerCommand::Undo:
+            gizmo_.drag.reset(); // a drag running is committed, then undone
             document.undo();
             break;
         case ViewerCommand::Redo:
+            gizmo_.drag.reset();
             document.redo();
             break;
         case ViewerCommand::Duplicate:
@@ -70,11 +72,10 @@ void Viewer::carryOut(ViewerCommands& commands) {
             dialogs_.askForPath(PathPurpose::Open, document.file().string());
             break;
         case ViewerCommand::Save:
-            saveScene(session_, files_, messages_, dialogs_);
+            requestSave(dialogs_, session_, files_, messages_, false);
             break;
         case ViewerCommand::SaveAs:
-            dialogs_.askForPath(PathPurpose::SaveAs,
-                                document.file().empty() ? "scene.json" : document.file().string());
+            requestSave(dialogs_, session_, files_, messages_, true);
             break;
         case ViewerCommand::AddMesh:
             dialogs_.askForPath(PathPurpose::AddMesh, "");

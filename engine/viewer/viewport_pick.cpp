@@ -6,6 +6,7 @@
 #include "editor/multi_selection.hpp"
 #include "editor/picking.hpp"
 #include "editor/scene_edits.hpp"
+#include "gizmo_controls.hpp"
 #include "render/frame.hpp"
 
 #include <imgui.h>
@@ -27,7 +28,7 @@ editor::Selection pickAt(const PreparedScene& prepared, const Scene& scene, cons
     const glm::vec3 direction = pixelRayDirection(frame, x, y, w, h); // forward component 1
     const float length = glm::length(direction);
     editor::PickRay ray;
-    ray.origin = camera.position;
+    ray.origin = pixelRayOrigin(frame, x, y, w, h); // the eye, or the pixel's (orthographic)
     ray.direction = direction / length;
     ray.tMin = camera.nearPlane * length; // the near and far planes are view depths
     ray.tMax = camera.farPlane * length;
@@ -37,14 +38,8 @@ editor::Selection pickAt(const PreparedScene& prepared, const Scene& scene, cons
 
 // The light whose marker is within a few pixels of window pixel `point`, or -1.
 int lightAt(const Scene& scene, const Camera& camera, const Rect& viewport, glm::vec2 point) {
-    const int w = std::max(1, int(viewport.width)), h = std::max(1, int(viewport.height));
-    const FrameCamera frame = makeFrameCamera(camera, w, h);
-    editor::GestureView view;
-    view.viewProjection = frame.viewProjection;
-    view.viewportSize = glm::vec2(float(w), float(h));
-    view.forward = frame.forward;
-    return editor::pickLight(scene, view, point - glm::vec2(viewport.x, viewport.y),
-                             kLightPickRadius);
+    return editor::pickLight(scene, viewportView(camera, viewport),
+                             point - glm::vec2(viewport.x, viewport.y), kLightPickRadius);
 }
 
 } // namespace

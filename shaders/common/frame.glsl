@@ -24,7 +24,36 @@ layout(std140, binding = FRAME_BINDING) uniform FrameBlock {
     vec4 shadow;         // x = SDF shadow steps (0 = off), y = min distance, z = max distance
     vec4 shadowMap;      // x = map size (texels), y = PCF radius, z = normal offset (texels)
     vec4 ao;             // x = AO samples (0 = off), y = farthest sample, z = strength, w = FXAA
+    vec4 orthoRight;     // orthographic: xyz = the camera's right axis, half the view's width long
+    vec4 orthoUp;        // orthographic: xyz = its up axis, half the view's height long; w = 1
+                         // for an orthographic camera, 0 for a perspective one
 } frame;
+
+// Whether the camera is orthographic: parallel rays (the frustum corners are all `forward`),
+// each starting at its own point of the camera's plane.
+bool cameraIsOrthographic() {
+    return frame.orthoUp.w > 0.5;
+}
+
+// Where the ray through a window position (pixels) starts: the eye for a perspective camera,
+// the point of the camera's plane under it for an orthographic one.
+vec3 frustumOrigin(vec2 windowPosition) {
+    if (!cameraIsOrthographic()) return frame.cameraPosition.xyz;
+    vec2 s = windowPosition / frame.viewport.xy * 2.0 - 1.0;
+    return frame.cameraPosition.xyz + s.x * frame.orthoRight.xyz + s.y * frame.orthoUp.xyz;
+}
+
+// The unit direction from a world point toward the viewer, and the distance a ray travelled to
+// reach it (from the eye, or from the camera's plane when orthographic).
+vec3 toViewer(vec3 worldPosition) {
+    if (cameraIsOrthographic()) return -frame.cameraForward.xyz;
+    return normalize(frame.cameraPosition.xyz - worldPosition);
+}
+float viewerDistance(vec3 worldPosition) {
+    if (cameraIsOrthographic())
+        return dot(worldPosition - frame.cameraPosition.xyz, frame.cameraForward.xyz);
+    return distance(frame.cameraPosition.xyz, worldPosition);
+}
 
 // World direction (unnormalized, forward component 1) through a window position in pixels,
 // from the frustum-corner matrix: bilinear over the image, so exact anywhere on it.

@@ -100,7 +100,7 @@ vec3 lightContribution(SurfacePoint s, vec3 toEye, GpuLight light) {
 
 // Lit colour of a surface point seen from the camera (linear HDR), fogged.
 vec3 shadeSurface(SurfacePoint s) {
-    vec3 toEye = normalize(frame.cameraPosition.xyz - s.position);
+    vec3 toEye = toViewer(s.position);
     vec3 color = s.emissive;
     float occlusion = s.occlusion * sdfAmbientOcclusion(s.position, s.normal);
     vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
@@ -121,5 +121,5 @@ vec3 shadeSurface(SurfacePoint s) {
     }
     uint count = lightHeader.x;
     for (uint i = 0u; i < count; ++i) color += lightContribution(s, toEye, lights[i]);
-    return applyFog(color, distance(frame.cameraPosition.xyz, s.position));
+    return applyFog(color, viewerDistance(s.position));
 }

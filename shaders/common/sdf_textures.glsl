@@ -32,12 +32,15 @@ void applySdfTextures(SdfSurface surface, vec3 p, float viewDepth, inout Surface
     float det = determinant(J);
     if (!(abs(det) > 1e-9)) return; // a modifier flattened the frame here: no texture
     vec3 localNormal = normalize(transpose(inverse(J)) * s.normal);
-    // A pixel's size at this depth (frustum corners have forward component 1), in local units.
-    float pixelWorld = viewDepth * length(frame.frustumCorners[2].xyz -
-                                          frame.frustumCorners[0].xyz) / frame.viewport.y;
+    // A pixel's size at this depth (frustum corners have forward component 1), in local units;
+    // orthographic: the same at every depth.
+    float pixelWorld = cameraIsOrthographic()
+                           ? 2.0 * length(frame.orthoUp.xyz) / frame.viewport.y
+                           : viewDepth * length(frame.frustumCorners[2].xyz -
+                                                frame.frustumCorners[0].xyz) / frame.viewport.y;
     // Seen at a grazing angle a pixel stretches over 1 / cos(angle) as much surface; taking
     // the long side (as GPUs without anisotropic filtering do) blurs instead of aliasing.
-    float cosView = abs(dot(s.normal, normalize(frame.cameraPosition.xyz - p)));
+    float cosView = abs(dot(s.normal, toViewer(p)));
     float localFootprint = pixelWorld * pow(abs(det), 1.0 / 3.0) / max(cosView, 0.2);
     vec3 bent = localNormal;
     applyMaterialTextures(surface.material, surface.localPoint, localFootprint, bent,

@@ -18,6 +18,13 @@
 // (the three terms change by at most 1, k and epsilon per unit of s), so that is the step: no
 // pixel's march meets a surface before the distance written here, and each one finds the same
 // first surface as a march from the near plane.
+//
+// An orthographic camera's rays are parallel: the tile's rays fill a cylinder about the ray
+// through its centre, each at most r (the tile's half diagonal in world units) from it at the
+// same depth s, so d(ray at s) >= d(axis at s) - r, and the same argument with k = 0 and
+//     g(s) = d(axis at s) - r - epsilon * max(s, 1)
+// gives the step g(s) / (1 + epsilon). Both run the one loop below (r is 0 for a perspective
+// camera), so the scene's map is compiled into this shader once.
 #include "common/sdf_scene.glsl"
 #include "generated/constants.glsl"
 #include "common/march_statistics.glsl"
@@ -33,17 +40,24 @@ void main() {
         k = max(k, length(normalize(frustumRay(tileCorner + offset)) - axis));
     }
     vec3 ro = frame.cameraPosition.xyz;
+    float r = 0.0; // the cylinder's radius (orthographic)
+    if (cameraIsOrthographic()) {
+        ro = frustumOrigin(tileCorner + 0.5 * float(CONE_TILE_SIZE));
+        vec2 pixel = 2.0 * vec2(length(frame.orthoRight.xyz), length(frame.orthoUp.xyz)) /
+                     frame.viewport.xy;
+        r = 0.5 * float(CONE_TILE_SIZE) * length(pixel);
+    }
     float epsilon = frame.march.z;
     // The near plane: no pixel's march starts nearer (its start is near / forwardness).
     float s = frame.cameraPosition.w;
     int steps = 0;
     if (!sdfSceneEmpty()) {
         for (int i = SDF_ZERO; i < int(frame.march.x) && s < frame.march.y; ++i) {
-            float g = sdfDistance(ro + axis * s) - k * s - epsilon * max(s, 1.0);
+            float g = sdfDistance(ro + axis * s) - k * s - epsilon * max(s, 1.0) - r;
             steps = i + 1;
             // The cone touches a surface (or nearly: a quarter of its radius left), so the
             // pixels take over.
-            if (g < 0.25 * k * s) break;
+            if (g < 0.25 * k * s + 0.25 * r) break;
             s += g / (1.0 + k + epsilon);
         }
     }

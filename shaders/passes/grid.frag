@@ -20,7 +20,7 @@ float gridLines(vec2 coordinate, out float visibility) {
 
 void main() {
     // Everything that takes derivatives runs before anything is discarded.
-    vec3 origin = frame.cameraPosition.xyz;
+    vec3 origin = frustumOrigin(gl_FragCoord.xy);
     vec3 direction = vRayDirection;
     float t = -origin.y / (abs(direction.y) > 1e-7 ? direction.y : 1e-7); // the plane's view depth
     t = clamp(t, -frame.cameraForward.w, 2.0 * frame.cameraForward.w);

@@ -32,7 +32,7 @@ void main() {
     // vRayDirection has forward component 1: view depth = t * forwardness of the unit ray.
     float forwardness = 1.0 / length(vRayDirection);
     vec3 rd = vRayDirection * forwardness;
-    vec3 ro = frame.cameraPosition.xyz;
+    vec3 ro = frustumOrigin(gl_FragCoord.xy); // the eye, or the pixel's point (orthographic)
     float tMin = max(frame.cameraPosition.w / forwardness,
                      texelFetch(uConeStart, pixel / CONE_TILE_SIZE, 0).x);
     float tMax = min(frame.march.y, rasterViewDepth / forwardness);

@@ -23,6 +23,10 @@ layout(location = 3) out uint outObjectId;
 void main() {
     vec3 ro = frame.cameraPosition.xyz;
     vec3 rd = normalize(vWorldPosition - ro);
+    if (cameraIsOrthographic()) { // parallel rays, each from its point of the camera's plane
+        ro = frustumOrigin(gl_FragCoord.xy);
+        rd = frame.cameraForward.xyz;
+    }
     float forwardness = dot(rd, frame.cameraForward.xyz);
     float tEnter, tExit;
     if (forwardness <= 0.0 || !shellClipRange(ro, rd, tEnter, tExit)) discard;

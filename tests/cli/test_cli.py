@@ -238,9 +238,10 @@ with tempfile.TemporaryDirectory() as tmp:
     import base64
     animated = {
         "asset": {"version": "2.0"}, "scene": 0,
-        "scenes": [{"name": "main", "nodes": [0, 1]}],
+        "scenes": [{"name": "main", "nodes": [0, 1, 2]}],
         "nodes": [{"mesh": 0, "name": "quad"},
-                  {"camera": 0, "translation": [1, 0, 4]}],
+                  {"camera": 0, "translation": [1, 0, 4]},
+                  {"camera": 1, "translation": [0, 0, 4]}],
         "cameras": [{"name": "front", "type": "perspective",
                      "perspective": {"yfov": 0.9, "znear": 0.1, "zfar": 100}},
                     {"name": "flat", "type": "orthographic",
@@ -284,8 +285,19 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("--camera unknown", ["render", anim, "--camera", "7", "-o", single], 1,
            stderr_has=['there is no camera "7"; the file has cameras 0 "front", 1 "flat" '
                        '(orthographic)'])
-    expect("--camera orthographic", ["render", anim, "--camera", "flat", "-o", single], 1,
-           stderr_has=['camera 1 "flat" is orthographic; rmsc renders perspective cameras only'])
+    # The orthographic camera, 4 high (ymag 2) on 32 rows: the unit quad 4 in front of it is
+    # 8 x 8 pixels at view depth 4 wherever it is seen (parallel rays).
+    depth = os.path.join(tmp, "flat.pfm")
+    expect("--camera orthographic", ["render", anim, "--camera", "flat", "--aov", "depth",
+                                     "-o", depth, "--size", "32x32"], 0)
+    if os.path.exists(depth):
+        raw = open(depth, "rb").read()
+        header = raw.split(b"\n", 3)
+        width, height = map(int, header[1].split())
+        values = struct.unpack(f"<{width * height}f", header[3][:4 * width * height])
+        hits = [v for v in values if abs(v) < 1e3]
+        check("the orthographic camera sees the quad 8 x 8 pixels", len(hits) == 64, len(hits))
+        check("all at view depth 4", all(abs(v - 4) < 1e-4 for v in hits), hits[:5])
     expect("--scene unknown", ["render", anim, "--scene", "2", "-o", single], 1,
            stderr_has=['/scenes: there is no scene 2; the file has scenes 0 "main"'])
     expect("--frames without a pattern", ["render", anim, "--frames", "0:1", "-o", single], 2,

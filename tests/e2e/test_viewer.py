@@ -20,6 +20,12 @@ them into a smooth union from the Edit menu, undoes and redoes that, copies the 
 opens a second scene, pastes the group into it and moves the scene's pillar along X with Ctrl
 held (snapping); the test checks both saved files and that the window outlines every selected
 object.
+A sixth run drags the transform gizmo's X arrow, Z ring and X box with Ctrl held (snapping to
+a move step typed into the view's toolbar), undoes and redoes the drag, looks from the top
+(numpad 7) orthographically (numpad 5), keeps that as bookmark 1, looks from the front and goes
+back to it, adds a box (put on the ball under the view's centre), and saves, telling the save's
+question to update the scene camera; the test checks the saved scene, the orthographic view's
+sizes against the analytic ones and the bookmark's view against the first.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -400,6 +406,111 @@ def select_run(rmsc, source, tmp, xvfb_run, check):
         check("and the second scene's pillar is not", pillar < 5, pillar)
 
 
+def ball_disc(shot):
+    """The ball's red pixels in a view screenshot (red with green equal to blue: not the orange
+    outline, the grid's red axis or the grey base): their count, the radius of a disc of that
+    area, and their centroid's offset from the image's centre (x right, y down)."""
+    width, height, channels, rows = shot
+    count, sum_x, sum_y = 0, 0.0, 0.0
+    for y in range(height):
+        for x in range(width):
+            r, g, b = rows[y][x * channels:x * channels + 3]
+            if r - g > 50 and abs(g - b) <= 2:
+                count += 1
+                sum_x += x + 0.5
+                sum_y += y + 0.5
+    if not count:
+        return 0, 0.0, (0.0, 0.0)
+    return count, math.sqrt(count / math.pi), (sum_x / count - width / 2, sum_y / count - height / 2)
+
+
+def gizmo_run(rmsc, source, tmp, xvfb_run, check):
+    """The sixth run (tests/e2e/viewer_gizmo_script.txt): the transform gizmo with snapping, the
+    numpad views, an orthographic view, a bookmark, a shape put in front of the camera and the
+    save's question about the scene camera."""
+    folder = os.path.join(tmp, "gizmo")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_gizmo_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    run = run_viewer(xvfb_run, rmsc, scene, script)
+    check("sixth run: viewer exits 0", run.returncode == 0, run.returncode)
+    keep = os.environ.get("RMSC_E2E_KEEP")
+    if keep:
+        shutil.copytree(folder, keep, dirs_exist_ok=True)
+
+    saved = json.load(open(scene))
+    children = saved["sdf"]["children"]
+    ball = next((c for c in children if c.get("name") == "ball"), {})
+    # The X arrow dragged 35 pixels (0.30 m) with Ctrl: in steps of 0.25 m, set in the toolbar.
+    position = ball.get("position", [0, 0, 0])
+    check("the gizmo's X arrow moved the ball 0.25 m: one step of the toolbar's 0.25",
+          all(abs(a - b) < 1e-6 for a, b in zip(position, [0.25, 0, 0])), position)
+    # The Z ring dragged from 45 to 135 degrees with Ctrl: a quarter turn, in 15 degree steps.
+    q = ball.get("quaternion", [0, 0, 0, 1])
+    half = math.sqrt(0.5)
+    check("the Z ring turned it a quarter turn about Z, snapped",
+          all(abs(a - b) < 1e-6 for a, b in zip(q, [0, 0, half, half])), q)
+    # Its own X box dragged from 90 to 126 pixels out with Ctrl: 1.4.
+    scale = ball.get("scale", 1)
+    check("the X box scaled it 1.4 along its own X only, in tenths",
+          isinstance(scale, list) and all(abs(a - b) < 1e-6 for a, b in zip(scale, [1.4, 1, 1])),
+          scale)
+
+    shots = {}
+    for name in ("moved", "undone", "top", "front", "front-after-q", "top-again"):
+        path = os.path.join(folder, name + ".png")
+        check(f"sixth run: screenshot {name} written", os.path.exists(path))
+        if os.path.exists(path):
+            shots[name] = read_png(path)
+    # One pixel is 8.56 mm at the ball (4.01 m away, 40 degrees over 341 rows): 0.25 m is 29 px.
+    if "moved" in shots and "undone" in shots:
+        moved, undone = ball_disc(shots["moved"])[2][0], ball_disc(shots["undone"])[2][0]
+        check("the drag moved the ball's image right", 27 < moved < 32, moved)
+        check("and one undo put all of it back (the drag is one undo step)", abs(undone) < 1, undone)
+    # The top view, orthographic, 2.92 m high over 341 rows (the perspective view's height at
+    # the 4.01 m it looked at): 116.8 px a metre at every depth. The ball is a circle of
+    # 0.5 m (58.4 px, and the march's hit threshold, about 0.4 px) at x = 0.25 m; the base's top
+    # face is 1.2 m deep (140 px; a perspective view would show it 119 px).
+    if "top" in shots:
+        count, radius, (dx, dy) = ball_disc(shots["top"])
+        check("the orthographic top view shows the ball, 0.5 m in radius, as 58.8 px", abs(radius - 58.8) < 0.5,
+              (count, radius))
+        check("0.25 m right of the centre, 29.2 px", abs(dx - 29.2) < 0.5 and abs(dy) < 0.5, (dx, dy))
+        width, height, channels, rows = shots["top"]
+        base = sum(1 for y in range(height) if min(rows[y][40 * channels:40 * channels + 3]) > 170 and
+                   max(rows[y][40 * channels:40 * channels + 3]) - min(rows[y][40 * channels:40 * channels + 3]) < 20)
+        check("and the base 1.2 m deep as 140 px", abs(base - 140) <= 2, base)
+    if "top" in shots and "top-again" in shots:
+        check("bookmark 1 (Ctrl+1, then 1 from the front view) gives the top view back",
+              len(differing_pixels(shots["top"], shots["top-again"])) < 20)
+    if "front" in shots and "top" in shots:
+        check("numpad 1 looks from the front", len(differing_pixels(shots["front"], shots["top"])) > 5000)
+    if "front" in shots and "front-after-q" in shots:
+        check("Q does not roll the view while roll is off",
+              len(differing_pixels(shots["front"], shots["front-after-q"])) < 20)
+    # The box added from the top view lies where the view's centre ray (straight down x = z = 0)
+    # meets the ball: the ellipsoid of radii 0.5, 0.7 (its own X, turned to Y, times 1.4), 0.5
+    # about (0.25, 0, 0), at y = 0.7 sqrt(1 - (0.25 / 0.5)^2).
+    added = next((c for c in children if c.get("name") not in ("ball", "base")), None)
+    check("a box was added", added is not None and added.get("shape") == "box", children)
+    if added:
+        top = 0.7 * math.sqrt(1 - 0.25 ** 2 / 0.5 ** 2)
+        where = added.get("position", [0, 0, 0])
+        check("on the ball's surface under the view's centre, not at the origin",
+              all(abs(a - b) < 0.01 for a, b in zip(where, [0, top, 0])), (where, top))
+    camera = saved.get("camera", {})
+    check("the save asked about the scene camera", "the view is not the scene camera's" in run.stderr,
+          run.stderr[-1500:])
+    check("and the answer (Update) made the top orthographic view the scene's camera",
+          camera.get("projection") == "orthographic" and
+          abs(camera.get("ortho_height", 0) - 2.92) < 0.01 and
+          all(abs(a - b) < 1e-3 for a, b in zip(camera.get("position", []), [0, 4.0112, 0])) and
+          all(abs(a - b) < 1e-3 for a, b in zip(camera.get("up", []), [0, 0, -1])), camera)
+
+
 def main():
     rmsc, source = sys.argv[1], sys.argv[2]
     if len(sys.argv) > 3 and sys.argv[3] in ("--burst", "--timing"):
@@ -468,10 +579,12 @@ def main():
         check("ball keeps its shape", ball.get("shape") == "sphere" and abs(ball.get("radius", 0) - 0.5) < 1e-6, ball)
         check("base untouched", base.get("position") == [0, -0.9, 0] or
               all(abs(a - b) < 1e-6 for a, b in zip(base.get("position", []), [0, -0.9, 0])), base)
-        check("camera not saved into the scene (not asked)",
+        check("camera not saved into the scene (the save's question answered: keep it)",
               all(abs(a - b) < 1e-6 for a, b in zip(saved["camera"]["position"], [0, 0.3, 4])), saved["camera"])
         backup = scene + ".bak"
         check("backup holds the previous file", os.path.exists(backup) and open(backup).read() == original)
+        check("the save asked whether the scene camera should take the view (it flew)",
+              "the view is not the scene camera's" in run.stderr, run.stderr[-1500:])
 
         shots = {}
         for name in ("before", "after", "undone", "redone"):
@@ -493,6 +606,7 @@ def main():
         refuse_run(rmsc, source, tmp, xvfb_run, check)
         large_scene_run(rmsc, source, tmp, xvfb_run, check)
         select_run(rmsc, source, tmp, xvfb_run, check)
+        gizmo_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

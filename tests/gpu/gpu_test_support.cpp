@@ -67,8 +67,11 @@ float marchStart(const SdfProgram& program, const RenderSettings& settings,
                  const FrameCamera& camera, int x, int yFromBottom, int width, int height) {
     const ConeTile tile = coneTile(camera, x / kConeTileSize, yFromBottom / kConeTileSize,
                                    kConeTileSize, width, height);
-    const SdfConeMarch cone =
-        sdfMarchCone(program, settings, camera.position, tile.axis, tile.chord, camera.nearPlane);
+    const SdfConeMarch cone = camera.orthographic
+                                  ? sdfMarchCone(program, settings, tile.origin, tile.axis, 0.0f,
+                                                 camera.nearPlane, tile.radius)
+                                  : sdfMarchCone(program, settings, camera.position, tile.axis,
+                                                 tile.chord, camera.nearPlane);
     const float forwardness =
         1.0f / glm::length(pixelRayDirection(camera, float(x), float(yFromBottom), width, height));
     return std::max(camera.nearPlane / forwardness, cone.distance);

@@ -15,6 +15,12 @@ namespace rmsc {
 inline constexpr ParamRange kCameraFovRange = {0.0, 180.0, true, true}; // degrees, vertical
 inline constexpr ParamRange kCameraNearRange = {0.0, ParamRange{}.max, true, false}; // > 0
 inline constexpr ParamRange kCameraFarRange = {0.0, ParamRange{}.max, true, false};  // > near
+// The height an orthographic camera shows, world units (> 0).
+inline constexpr ParamRange kCameraOrthoHeightRange = {0.0, ParamRange{}.max, true, false};
+
+// The names of the projections in scene files ("projection"): "perspective", "orthographic".
+std::string_view cameraProjectionName(CameraProjection projection);
+std::optional<CameraProjection> findCameraProjection(std::string_view name);
 
 // What is wrong with a camera's position, target and up: the key to blame and why.
 struct CameraProblem {

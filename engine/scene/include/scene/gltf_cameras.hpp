@@ -16,8 +16,8 @@ std::optional<int> findGltfCamera(const MeshRig& rig, const std::string& nameOrI
                                   std::string& why);
 
 // Camera `camera` of the rig seen from its node at `pose` (glTF 2.0 section 3.10: it looks
-// down the node's -Z with +Y up); nullopt with `why` when no node of the drawn scene places it
-// or it is orthographic (the renderer draws perspective views only).
+// down the node's -Z with +Y up), perspective or orthographic (2 * ymag high; the image's aspect
+// gives the width); nullopt with `why` when no node of the drawn scene places it.
 std::optional<Camera> gltfCameraAt(const MeshRig& rig, int camera, const MeshPose& pose,
                                    std::string& why);
 

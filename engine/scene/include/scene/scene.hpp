@@ -19,13 +19,19 @@
 namespace rmsc {
 
 // A pinhole camera looking from `position` at `target`.
+// How a camera projects: through a point (rays from the eye), or along parallel rays from its
+// image plane (orthographic: sizes do not change with distance).
+enum class CameraProjection { Perspective, Orthographic };
+
 struct Camera {
     glm::vec3 position{0.0f, 1.5f, 5.0f};
     glm::vec3 target{0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fovYDegrees = 45.0f; // vertical field of view
+    float fovYDegrees = 45.0f; // vertical field of view (perspective)
     float nearPlane = 0.05f;
     float farPlane = 200.0f;
+    CameraProjection projection = CameraProjection::Perspective;
+    float orthoHeight = 4.0f; // orthographic: the height of the view in world units
 };
 
 // The sky: what rays that hit nothing see and what lights every surface as ambient light.

@@ -84,13 +84,15 @@ std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::ma
 // over the unit directions u the cone holds. From s = `start`, steps while every ray of the
 // cone stays outside its hit threshold, and stops where the cone (nearly) touches a surface,
 // after settings.maxSteps evaluations or past settings.maxDistance. sdfCastRay along any ray
-// of the cone hits nothing nearer than `distance`.
+// of the cone hits nothing nearer than `distance`. A `radius` > 0 widens it by that much at
+// every distance: a cylinder, with chord 0, holds the parallel rays of an orthographic camera.
 struct SdfConeMarch {
     float distance = 0.0f;
     int steps = 0;
 };
 SdfConeMarch sdfMarchCone(const SdfProgram& program, const RenderSettings& settings,
-                          glm::vec3 origin, glm::vec3 axis, float chord, float start);
+                          glm::vec3 origin, glm::vec3 axis, float chord, float start,
+                          float radius = 0.0f);
 
 // The evaluations sdfCastRay makes, hit or miss: what the steps AOV shows for the ray.
 int sdfMarchSteps(const SdfProgram& program, const RenderSettings& settings, glm::vec3 origin,
