@@ -17,19 +17,26 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
         const std::string error = warmer_->takeError();
         if (!error.empty()) std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
     }
+    updateCells(frameNumber, waitForBuilds);
     const SdfLiveRange live = editor::selectionLiveRange(scene, selection);
     const std::size_t built = warmer_ ? warmer_->finishedCount() : 0;
     if (choiceRevision_ == uploadedRevision_ && choiceLive_.first == live.first &&
-        choiceLive_.last == live.last && choiceBuilt_ == built)
+        choiceLive_.last == live.last && choiceBuilt_ == built && choiceCells_ == cellGridRevision_)
         return;
     choiceRevision_ = uploadedRevision_;
     choiceLive_ = live;
     choiceBuilt_ = built;
+    choiceCells_ = cellGridRevision_;
     // Without a warmer, or for the first picture, every map is built here when it is drawn.
     const bool first = !gpuScene_;
     if (first) choiceRevision_ = 0; // choose again next frame: the other maps build meanwhile
-    auto isReady = [this, first](const std::string& map) {
-        return !warmer_ || first || renderer_->hasPrograms(map) || warmer_->isWarm(map);
+    // A scene drawn with the cells map waits for its cells with the last picture (the
+    // interpreter would take seconds a frame on such a scene).
+    const bool cellsPending =
+        cellsRequested_ == uploadedRevision_ && cellGridRevision_ != uploadedRevision_;
+    auto isReady = [this, first, cellsPending](const std::string& map) {
+        return !cellsPending &&
+               (!warmer_ || first || renderer_->hasPrograms(map) || warmer_->isWarm(map));
     };
     editor::EditingMaps maps =
         editor::chooseEditingMaps(prepared_->sdf, boundedSdf_, live, isReady);
@@ -51,8 +58,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     if (sceneChanged_ || bounded != drawnBounded_ || cells != drawnCells_) {
         if (bounded) std::swap(prepared_->sdf, boundedSdf_);
         if (cells) {
-            const SdfCellGrid grid = pruneCells(frameNumber);
-            fresh = uploadScene(*prepared_, SdfStrategy::Cells, &grid);
+            fresh = uploadScene(*prepared_, SdfStrategy::Cells, &*cellGrid_);
         } else {
             fresh =
                 uploadScene(*prepared_, bounded ? SdfStrategy::Interpreter : SdfStrategy::Buffer);
@@ -102,24 +108,27 @@ namespace rmsc::app {
 
 // The cells of prepared_->sdf, the tree without the bounding hierarchy (whose order follows
 // where things are: a move would change many instructions), with the interpreter's program
-// (the hierarchy's box tests) for points outside the grid: pruned again from the kept state
-// when the edit changed only numbers and the content stays in the grid's cube, else pruned
-// anew (sdf/cell_pruning.hpp).
-SdfCellGrid ViewRenderer::pruneCells(int frameNumber) {
-    const auto start = std::chrono::steady_clock::now();
-    const Aabb content = prepared_->scene.sdf ? sdfContentBox(*prepared_->scene.sdf) : Aabb{};
-    SdfCellGrid grid;
-    bool again = cellState_ && repruneSdfCells(*cellState_, prepared_->sdf, grid, &boundedSdf_);
-    if (again && !content.empty() &&
-        (glm::any(glm::lessThan(content.min, grid.origin)) ||
-         glm::any(glm::greaterThan(content.max, grid.origin + glm::vec3(grid.size)))))
-        again = false; // moved out of the cube: a new one
-    if (!again) grid = buildSdfCells(prepared_->sdf, content, {}, &cellState_, &boundedSdf_);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "rmsc view: frame %d: pruned %zu cells in %.0f ms (%s)\n", frameNumber,
-                 grid.stats.prunedCells, ms, again ? "again, after an edit of numbers" : "all");
-    return grid;
+// (the hierarchy's box tests) for points outside the grid, pruned by cellPruning_ on its
+// worker: again from the kept state after an edit of numbers, else anew.
+void ViewRenderer::updateCells(int frameNumber, bool wait) {
+    const bool wanted =
+        effectiveSdfStrategy(prepared_->sdf, SdfStrategy::Baked) == SdfStrategy::Cells;
+    if (wanted && cellsRequested_ != uploadedRevision_) {
+        cellsRequested_ = uploadedRevision_;
+        cellPruning_.request(
+            {uploadedRevision_, frameNumber, prepared_->sdf, boundedSdf_,
+             prepared_->scene.sdf ? sdfContentBox(*prepared_->scene.sdf) : Aabb{}});
+    }
+    if (wait) cellPruning_.waitUntilIdle();
+    std::optional<editor::CellPruningResult> result = cellPruning_.take();
+    if (!result) return;
+    std::fprintf(stderr, "rmsc view: frame %d: pruned %zu cells in %.0f ms (%s)\n", result->frame,
+                 result->grid.stats.prunedCells, result->milliseconds,
+                 result->again ? "again, after an edit of numbers" : "all");
+    // (An older revision's: a newer one is pruned next.)
+    if (result->revision != cellsRequested_) return;
+    cellGrid_ = std::move(result->grid);
+    cellGridRevision_ = result->revision;
 }
 
 } // namespace rmsc::app

@@ -9,6 +9,7 @@
 #include "core/image_io.hpp"
 #include "display_pass.hpp"
 #include "editor/adaptive_scale.hpp"
+#include "editor/cell_pruning_job.hpp"
 #include "editor/editing_map.hpp"
 #include "editor/refinement.hpp"
 #include "editor/scene_edits.hpp"
@@ -101,7 +102,9 @@ class ViewRenderer {
 
   private:
     void startWarmer();
-    SdfCellGrid pruneCells(int frameNumber);
+    // Asks for the cells of the newest scene when it is drawn with the cells map, and takes
+    // them once pruned (waiting for them with `wait`): cellGrid_ holds the newest.
+    void updateCells(int frameNumber, bool wait);
 
     ShaderFiles shaderFiles_;
     std::optional<Renderer> renderer_;
@@ -115,7 +118,11 @@ class ViewRenderer {
                                 // for it is ready
     bool drawnBounded_ = false; // gpuScene_ holds boundedSdf_ (the interpreter draws)
     bool drawnCells_ = false;   // gpuScene_ holds the cells of prepared_->sdf (the cells map)
-    SdfCellStatePtr cellState_; // what they were pruned from, to prune them again after an edit
+    // The cells map's grid, pruned on a worker (editor/cell_pruning_job.hpp): the newest one
+    // taken and the revision it is of; the revision last asked for.
+    editor::CellPruningJob cellPruning_;
+    std::optional<SdfCellGrid> cellGrid_;
+    std::uint64_t cellGridRevision_ = 0, cellsRequested_ = 0;
     std::uint64_t uploadedRevision_ = 0;
     // The SDF map drawn: the best one that is ready; the warmer builds better ones on its
     // hidden window's context meanwhile.
@@ -123,7 +130,7 @@ class ViewRenderer {
     std::unique_ptr<ShaderWarmer> warmer_; // after warmerWindow_: goes first
     editor::EditingMapKind drawnMap_ = editor::EditingMapKind::Buffer;
     // What the map choice was made for: the revision, the selection, the warmer's finished maps.
-    std::uint64_t choiceRevision_ = 0;
+    std::uint64_t choiceRevision_ = 0, choiceCells_ = 0;
     std::size_t choiceBuilt_ = 0;
     SdfLiveRange choiceLive_;
     // What is shown: the full-resolution image, refined up to refinement_.shownRows(), over

@@ -1,0 +1,80 @@
+// The worker that prunes the edited scene's cells (see cell_pruning_job.hpp).
+#include "editor/cell_pruning_job.hpp"
+
+#include <chrono>
+#include <utility>
+
+namespace rmsc::editor {
+
+CellPruningJob::CellPruningJob() : thread_([this] { run(); }) {}
+
+CellPruningJob::~CellPruningJob() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+}
+
+void CellPruningJob::request(CellPruningRequest request) {
+    {
+        std::lock_guard lock(mutex_);
+        waiting_ = std::move(request);
+    }
+    changed_.notify_all();
+}
+
+std::optional<CellPruningResult> CellPruningJob::take() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(finished_, std::nullopt);
+}
+
+bool CellPruningJob::idle() const {
+    std::lock_guard lock(mutex_);
+    return !waiting_ && !working_;
+}
+
+void CellPruningJob::waitUntilIdle() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [this] { return !waiting_ && !working_; });
+}
+
+void CellPruningJob::run() {
+    for (;;) {
+        CellPruningRequest request;
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [this] { return stopping_ || waiting_; });
+            if (stopping_) return;
+            request = std::move(*waiting_);
+            waiting_.reset();
+            working_ = true;
+        }
+        const auto start = std::chrono::steady_clock::now();
+        CellPruningResult result;
+        result.revision = request.revision;
+        result.frame = request.frame;
+        result.again =
+            state_ && repruneSdfCells(*state_, request.program, result.grid, &request.outside);
+        const Aabb& content = request.content;
+        if (result.again && !content.empty() &&
+            (glm::any(glm::lessThan(content.min, result.grid.origin)) ||
+             glm::any(
+                 glm::greaterThan(content.max, result.grid.origin + glm::vec3(result.grid.size)))))
+            result.again = false; // moved out of the cube: a new one
+        if (!result.again)
+            result.grid = buildSdfCells(request.program, content, {}, &state_, &request.outside);
+        result.milliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        {
+            std::lock_guard lock(mutex_);
+            finished_ = std::move(result);
+            working_ = false;
+        }
+        changed_.notify_all();
+    }
+}
+
+} // namespace rmsc::editor

@@ -1,0 +1,65 @@
+// The cells of the scene being edited, pruned on a worker thread (sdf/cell_pruning.hpp): the
+// viewer asks for the newest revision's cells and keeps drawing the last ones until they are
+// ready, so neither opening a scene of thousands of shapes nor an edit of it stops a frame.
+// The worker keeps what it pruned from and prunes again from it after an edit of numbers (a
+// shape moved, resized or retyped, an operation's or modifier's parameters changed) that keeps
+// the content in the grid's cube; after any other edit it prunes anew. Only the newest request
+// waits: one that arrives while another is pruned replaces the one waiting.
+#pragma once
+
+#include "sdf/bounds.hpp"
+#include "sdf/cell_pruning.hpp"
+#include "sdf/program.hpp"
+
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace rmsc::editor {
+
+struct CellPruningRequest {
+    std::uint64_t revision = 0; // the document's
+    int frame = 0;              // the viewer's frame that asked (for its log)
+    SdfProgram program;         // the tree pruned (without the bounding hierarchy)
+    SdfProgram outside;         // what points outside the grid run (with it)
+    Aabb content;               // sdfContentBox of the scene's tree
+};
+
+struct CellPruningResult {
+    std::uint64_t revision = 0;
+    int frame = 0;
+    SdfCellGrid grid;
+    bool again = false; // pruned again from the kept state (an edit of numbers), not anew
+    double milliseconds = 0.0;
+};
+
+class CellPruningJob {
+  public:
+    CellPruningJob();
+    ~CellPruningJob(); // waits for the pruning under way
+    CellPruningJob(const CellPruningJob&) = delete;
+    CellPruningJob& operator=(const CellPruningJob&) = delete;
+
+    void request(CellPruningRequest request);
+    // The newest finished result, once (nullopt while none is new).
+    std::optional<CellPruningResult> take();
+    // Nothing waits and nothing is pruned.
+    bool idle() const;
+    void waitUntilIdle();
+
+  private:
+    void run();
+
+    mutable std::mutex mutex_;
+    std::condition_variable changed_;
+    std::optional<CellPruningRequest> waiting_;
+    std::optional<CellPruningResult> finished_;
+    bool working_ = false;
+    bool stopping_ = false;
+    SdfCellStatePtr state_; // the worker's alone
+    std::thread thread_;    // last: starts once the rest is made
+};
+
+} // namespace rmsc::editor
