@@ -26,8 +26,10 @@ namespace {
 constexpr int kWidth = 96;
 constexpr int kHeight = 64;
 
+// A folder of this test's own: ctest runs the tests of this file in parallel processes.
 fs::path folder() {
-    const fs::path f = fs::temp_directory_path() / "rmsc_gpu_gltf_features";
+    const fs::path f = fs::temp_directory_path() / "rmsc_gpu_gltf_features" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::create_directories(f);
     return f;
 }

@@ -22,11 +22,13 @@ constexpr int kSize = 128;
 constexpr float kCameraZ = 5.0f;
 constexpr float kFovY = 30.0f;
 
-// A folder with checker.png (64 x 64, squares of 8 pixels: 1/8 of a repeat, white where
-// (x / 8 + y / 8) is even, dark grey otherwise) and tilted_normal.png (every texel encodes the
-// tangent-space normal (0.6, 0, 0.8)).
+// A folder of this test's own (ctest runs the tests of this file in parallel processes, which
+// must not write the same scene.json) with checker.png (64 x 64, squares of 8 pixels: 1/8 of a
+// repeat, white where (x / 8 + y / 8) is even, dark grey otherwise) and tilted_normal.png (every
+// texel encodes the tangent-space normal (0.6, 0, 0.8)).
 fs::path textureFolder() {
-    const fs::path folder = fs::temp_directory_path() / "rmsc_gpu_material_textures";
+    const fs::path folder = fs::temp_directory_path() / "rmsc_gpu_material_textures" /
+                            ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::create_directories(folder);
     Pixels<std::uint8_t> checker{64, 64, 4, {}};
     Pixels<std::uint8_t> tilted{4, 4, 4, {}};
