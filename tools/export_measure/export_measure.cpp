@@ -5,8 +5,8 @@
 // plain marching cubes on the same grid instead (vertices linearly interpolated on the crossed
 // edges, one polygon per cell component): a baseline for the table, not a feature of rmsc.
 //
-//   rmsc_export_measure SCENE [--node P] [--resolution N | --voxel S] [--marching-cubes]
-//                       [--corner X,Y,Z]... [--threads N]
+//   rmsc_export_measure SCENE [--node P] [--resolution N | --voxel S] [--tolerance T]
+//                       [--marching-cubes] [--corner X,Y,Z]... [--threads N]
 // Prints one JSON object.
 #include "export/cell_components.hpp"
 #include "export/dual_contouring.hpp"
@@ -209,6 +209,8 @@ int main(int argc, char** argv) {
             settings.resolution = std::stoi(value), ++i;
         else if (arg == "--voxel")
             settings.voxel = std::stof(value), ++i;
+        else if (arg == "--tolerance")
+            settings.tolerance = std::stof(value), ++i;
         else if (arg == "--threads")
             threads = std::stoi(value), ++i;
         else if (arg == "--marching-cubes")
@@ -241,7 +243,8 @@ int main(int argc, char** argv) {
     DcGrid grid;
     std::uint64_t estimate = 0;
     std::int64_t flips = 0;
-    double mcSeconds = 0.0; // marching cubes alone (its grid comes from a dual contouring run)
+    std::uint64_t uniform = 0; // dual contouring's triangles before the adaptive octree
+    double mcSeconds = 0.0;    // marching cubes alone (its grid comes from a dual contouring run)
     if (marching) {
         // The grid exportSdf would use, from a tiny export's settings.
         std::optional<SdfExport> probe = exportSdf(*scene, settings, diagnostics);
@@ -265,6 +268,7 @@ int main(int argc, char** argv) {
         grid = exported->grid;
         estimate = exported->estimatedTriangles;
         flips = exported->faceFlips;
+        uniform = exported->uniformTriangles;
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -327,9 +331,12 @@ int main(int argc, char** argv) {
         {"boundary_edges", topology.boundaryEdges},
         {"misoriented_edges", topology.misorientedEdges},
         {"degenerate_triangles", topology.degenerateTriangles},
+        {"self_intersections", countSelfIntersections(mesh)},
         {"seconds", elapsed},
         {"estimated_triangles", estimate},
         {"face_flips", flips},
+        {"uniform_triangles", uniform},
+        {"tolerance", marching ? 0.0f : settings.tolerance},
         {"threads", threads},
     };
     std::puts(out.dump().c_str());
