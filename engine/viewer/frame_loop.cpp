@@ -98,7 +98,8 @@ int Viewer::run() {
             return kExitSystem;
         }
         if (scriptHoldFrames_ > 5000) {
-            std::fprintf(stderr, "rmsc view: the view was not refined in 5000 frames\n");
+            std::fprintf(stderr, "rmsc view: the view was not refined (or the export did not "
+                                 "end) in 5000 frames\n");
             return kExitSystem;
         }
     }
@@ -114,7 +115,9 @@ ScriptActions Viewer::readInput() {
     input_.beginFrame();
     if (script_) {
         glfwPollEvents();
-        if (scriptHoldFrames_ >= 0 && gpu_.refined()) scriptHoldFrames_ = -1;
+        if (scriptHoldFrames_ >= 0 &&
+            (scriptWaitsForExport_ ? !export_.job.running() : gpu_.refined()))
+            scriptHoldFrames_ = -1;
         if (scriptHoldFrames_ >= 0)
             ++scriptHoldFrames_;
         else
@@ -132,7 +135,10 @@ ScriptActions Viewer::readInput() {
     }
     ScriptActions actions;
     if (script_) actions = scriptActions(*script_, taken);
-    if (actions.waitRefined) scriptHoldFrames_ = 0;
+    if (actions.waitRefined || actions.waitExport) {
+        scriptHoldFrames_ = 0;
+        scriptWaitsForExport_ = actions.waitExport;
+    }
     input_.finishEvents();
     if (window_->shouldClose()) {
         window_->setShouldClose(false);
@@ -155,7 +161,7 @@ void Viewer::handleInput(float seconds) {
 void Viewer::drawUi() {
     ViewerCommands commands;
     if (ImGui::BeginMainMenuBar()) {
-        drawMenus(session_.document, view_, commands);
+        drawMenus(session_.document, view_, export_.job.running(), commands);
         carryOut(commands); // before the title, which shows whether the scene is saved
         drawMenuBarTitle(session_.document);
         ImGui::EndMainMenuBar();
@@ -168,6 +174,8 @@ void Viewer::drawUi() {
                       session_.camera.speed, gesture_.active ? &gesture_.math : nullptr, messages_);
     drawProblems(layout_.viewport, messages_);
     drawDialogs(dialogs_, session_, files_, messages_);
+    drawExportDialog(export_, session_.document);
+    drawExportProgress(export_, layout_.viewport, messages_);
 }
 
 void Viewer::commitFinishedEdits() {

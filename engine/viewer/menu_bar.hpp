@@ -8,8 +8,10 @@
 
 namespace rmsc::app {
 
-// The menus; call between ImGui::BeginMainMenuBar and ImGui::EndMainMenuBar.
-void drawMenus(editor::Document& document, ViewSettings& view, ViewerCommands& commands);
+// The menus; call between ImGui::BeginMainMenuBar and ImGui::EndMainMenuBar. `exporting`: an
+// export runs (File > Export waits for it).
+void drawMenus(editor::Document& document, ViewSettings& view, bool exporting,
+               ViewerCommands& commands);
 // The scene's file (or "(unsaved scene)"), with " *" when there are unsaved changes; after the
 // menus.
 void drawMenuBarTitle(const editor::Document& document);
