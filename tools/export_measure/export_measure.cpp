@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <random>
 #include <sstream>
 #include <string>
@@ -239,6 +240,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock(); // the process's CPU time, every thread's
+    std::clock_t mcCpuStart = 0;
     ExportMesh mesh;
     DcGrid grid;
     std::uint64_t estimate = 0;
@@ -255,6 +258,7 @@ int main(int argc, char** argv) {
         grid = probe->grid;
         mcSeconds = -1.0;
         const auto mcStart = std::chrono::steady_clock::now();
+        mcCpuStart = std::clock();
         mesh = marchingCubes(field->field, grid, threads);
         mcSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - mcStart).count();
@@ -273,6 +277,8 @@ int main(int argc, char** argv) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double elapsed = marching ? mcSeconds : seconds;
+    const double cpuSeconds =
+        double(std::clock() - (marching ? mcCpuStart : cpuStart)) / double(CLOCKS_PER_SEC);
     const float voxel = grid.voxel;
     double maxVertex = 0.0, sumVertex = 0.0;
     for (glm::vec3 p : mesh.positions) {
@@ -333,6 +339,7 @@ int main(int argc, char** argv) {
         {"degenerate_triangles", topology.degenerateTriangles},
         {"self_intersections", countSelfIntersections(mesh)},
         {"seconds", elapsed},
+        {"cpu_seconds", cpuSeconds},
         {"estimated_triangles", estimate},
         {"face_flips", flips},
         {"uniform_triangles", uniform},
