@@ -1,11 +1,16 @@
 // Dual contouring in five passes over the blocks near the surface, each on every core: find the
 // blocks, sample their corners, find where the surface crosses their edges (Hermite data: point
 // and normal), place one vertex per cell component (QEF, clamped to the cell, then moved onto
-// the surface along the gradient), and join the four cells around each crossed edge by a quad.
+// the surface along the gradient), and join the four cells around each crossed edge by a quad;
+// then the quads that intersect others untangled, and the adaptive octree's collapse.
 #include "export/dual_contouring.hpp"
 
+#include "adaptive_octree.hpp"
 #include "export/cell_components.hpp"
+#include "field_steps.hpp"
+#include "parallel_for.hpp"
 #include "qef.hpp"
+#include "quad_fans.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,12 +27,18 @@ using exporter::CellComponents;
 using exporter::cellEdge;
 using exporter::kEdgeAxis;
 using exporter::kEdgeCorners;
+using exporter::parallelFor;
 using exporter::Qef;
+using exporter::unitGradient;
 
 constexpr int B = kDcBlock;
 // How far (in cells) the steps onto the surface may take a vertex out of its cell.
 constexpr float kNewtonMargin = 0.25f;
 constexpr int kCornersPerSide = B + 1;
+// The share of the progress the uniform passes report when the adaptive octree follows.
+constexpr double kUniformShare = 0.8;
+// Rounds of making intersecting quads fans and moving their vertices into their cells.
+constexpr int kUntangleRounds = 12;
 
 struct Hermite {
     glm::vec3 point;
@@ -51,8 +62,12 @@ struct Block {
     std::vector<Checkerboard> checkerboards; // the low faces with four crossed edges
     std::vector<glm::vec3> positions, normals, colors;
     std::vector<std::uint32_t> materials;
+    std::vector<Qef> qefs;               // each vertex's planes (for the adaptive octree)
+    std::vector<glm::ivec3> vertexCells; // each vertex's cell
+    std::vector<glm::vec3> massPoints;   // each vertex's crossings' mean
     std::uint32_t vertexBase = 0;
     std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<exporter::DcQuad> quads; // each the source of two triangles, in order
     std::int64_t evaluations = 0;
 };
 
@@ -71,57 +86,6 @@ glm::ivec3 axisVector(int axis) {
     return v;
 }
 
-// Runs body(i) for i in [0, count) on `threads` threads; progress is reported for the pass.
-template <class Body>
-bool parallelFor(std::int64_t count, int threads, const DcOptions& options, double progressFrom,
-                 double progressTo, Body body) {
-    std::atomic<std::int64_t> next{0};
-    std::atomic<std::int64_t> done{0};
-    std::mutex progressMutex;
-    std::int64_t reportedStep = -1;
-    auto work = [&] {
-        for (;;) {
-            if (options.cancel && options.cancel->load()) return;
-            const std::int64_t i = next++;
-            if (i >= count) return;
-            body(i);
-            const std::int64_t finished = ++done;
-            if (options.progress) {
-                const std::int64_t step = finished * 100 / std::max<std::int64_t>(count, 1);
-                std::lock_guard lock(progressMutex);
-                if (step > reportedStep) {
-                    reportedStep = step;
-                    options.progress(progressFrom + (progressTo - progressFrom) * double(finished) /
-                                                        double(std::max<std::int64_t>(count, 1)));
-                }
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    const int n = int(std::min<std::int64_t>(threads, std::max<std::int64_t>(count, 1)));
-    for (int t = 1; t < n; ++t)
-        pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool)
-        t.join();
-    return !(options.cancel && options.cancel->load());
-}
-
-// The gradient by the tetrahedron technique (4 evaluations; Quilez, "normals for an SDF"):
-// sum k_i f(p + h k_i) = 4 h grad f + O(h^3).
-glm::vec3 rawGradient(const SdfField& field, glm::vec3 p, float h, std::int64_t& evaluations) {
-    const glm::vec3 k0(1, -1, -1), k1(-1, -1, 1), k2(-1, 1, -1), k3(1, 1, 1);
-    evaluations += 4;
-    return (k0 * field.distance(p + h * k0) + k1 * field.distance(p + h * k1) +
-            k2 * field.distance(p + h * k2) + k3 * field.distance(p + h * k3)) /
-           (4.0f * h);
-}
-glm::vec3 gradient(const SdfField& field, glm::vec3 p, float h, std::int64_t& evaluations) {
-    const glm::vec3 g = rawGradient(field, p, h, evaluations);
-    const float length = glm::length(g);
-    return length > 0.0f ? g / length : glm::vec3(0.0f, 1.0f, 0.0f);
-}
-
 } // namespace
 
 std::uint64_t estimateDcTriangles(std::int64_t activeBlocks) {
@@ -137,6 +101,10 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
     grid.cells = blocks * B;
     const float voxel = grid.voxel;
     const std::int64_t blockCount = std::int64_t(blocks.x) * blocks.y * blocks.z;
+    // The uniform passes' share of the progress; the adaptive octree takes the rest.
+    const double share = options.tolerance > 0.0f ? kUniformShare : 1.0;
+    std::function<void(double)> progress;
+    if (options.progress) progress = [&](double f) { options.progress(share * f); };
     auto blockCoord = [&](std::int64_t i) {
         return glm::ivec3(int(i % blocks.x), int((i / blocks.x) % blocks.y),
                           int(i / (std::int64_t(blocks.x) * blocks.y)));
@@ -149,7 +117,7 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
     // Chamfer operations make the field up to sqrt(2) steep ((a + b) / sqrt(2) where both
     // sides fall), so the half diagonal is scaled by that, plus half a cell for rounding.
     const float reach = std::sqrt(2.0f) * halfDiagonal + 0.5f * voxel;
-    if (!parallelFor(blockCount, threads, options, 0.0, 0.05, [&](std::int64_t i) {
+    if (!parallelFor(blockCount, threads, options.cancel, progress, 0.0, 0.05, [&](std::int64_t i) {
             const glm::vec3 centre = cornerPosition(blockCoord(i) * B) + 0.5f * voxel * float(B);
             near[std::size_t(i)] = std::abs(field.distance(centre)) <= reach ? 1 : 0;
         })) {
@@ -190,33 +158,36 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
     };
 
     // Pass 2: the corners of the blocks near the surface.
-    if (!parallelFor(activeCount, threads, options, 0.05, 0.35, [&](std::int64_t i) {
-            Block& block = active[std::size_t(i)];
-            block.corners.resize(std::size_t(kCornersPerSide * kCornersPerSide * kCornersPerSide));
-            for (int z = 0; z <= B; ++z)
-                for (int y = 0; y <= B; ++y)
-                    for (int x = 0; x <= B; ++x)
-                        block.corners[std::size_t(cornerIndex({x, y, z}))] =
-                            field.distance(cornerPosition(block.cell + glm::ivec3(x, y, z)));
-            block.evaluations += kCornersPerSide * kCornersPerSide * kCornersPerSide;
-            block.cellConfig.assign(std::size_t(B * B * B), 0);
-            block.faceFlip.assign(std::size_t(B * B * B * 3), 0);
-            for (int z = 0; z < B; ++z)
-                for (int y = 0; y < B; ++y)
-                    for (int x = 0; x < B; ++x) {
-                        const glm::ivec3 l(x, y, z);
-                        int config = 0;
-                        for (int c = 0; c < 8; ++c)
-                            if (block.corners[std::size_t(cornerIndex(l + cornerOffset(c)))] < 0.0f)
-                                config |= 1 << c;
-                        block.cellConfig[std::size_t(cellIndex(l))] = std::uint8_t(config);
-                        // Checkerboard faces on the cell's low sides: candidates for a flip.
-                        if (config != 0 && config != 255)
-                            for (int axis = 0; axis < 3; ++axis)
-                                if (exporter::checkerboardFace(std::uint8_t(config), 2 * axis))
-                                    block.checkerboards.push_back({block.cell + l, axis});
-                    }
-        })) {
+    if (!parallelFor(
+            activeCount, threads, options.cancel, progress, 0.05, 0.35, [&](std::int64_t i) {
+                Block& block = active[std::size_t(i)];
+                block.corners.resize(
+                    std::size_t(kCornersPerSide * kCornersPerSide * kCornersPerSide));
+                for (int z = 0; z <= B; ++z)
+                    for (int y = 0; y <= B; ++y)
+                        for (int x = 0; x <= B; ++x)
+                            block.corners[std::size_t(cornerIndex({x, y, z}))] =
+                                field.distance(cornerPosition(block.cell + glm::ivec3(x, y, z)));
+                block.evaluations += kCornersPerSide * kCornersPerSide * kCornersPerSide;
+                block.cellConfig.assign(std::size_t(B * B * B), 0);
+                block.faceFlip.assign(std::size_t(B * B * B * 3), 0);
+                for (int z = 0; z < B; ++z)
+                    for (int y = 0; y < B; ++y)
+                        for (int x = 0; x < B; ++x) {
+                            const glm::ivec3 l(x, y, z);
+                            int config = 0;
+                            for (int c = 0; c < 8; ++c)
+                                if (block.corners[std::size_t(cornerIndex(l + cornerOffset(c)))] <
+                                    0.0f)
+                                    config |= 1 << c;
+                            block.cellConfig[std::size_t(cellIndex(l))] = std::uint8_t(config);
+                            // Checkerboard faces on the cell's low sides: candidates for a flip.
+                            if (config != 0 && config != 255)
+                                for (int axis = 0; axis < 3; ++axis)
+                                    if (exporter::checkerboardFace(std::uint8_t(config), 2 * axis))
+                                        block.checkerboards.push_back({block.cell + l, axis});
+                        }
+            })) {
         result.cancelled = true;
         return result;
     }
@@ -304,143 +275,140 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
 
     // Pass 3: where the surface crosses the edges each block owns (start corner inside it).
     const float gradientStep = 0.01f * voxel;
-    if (!parallelFor(activeCount, threads, options, 0.35, 0.55, [&](std::int64_t i) {
-            Block& block = active[std::size_t(i)];
-            block.edgeIndex.assign(std::size_t(B * B * B * 3), -1);
-            for (int z = 0; z < B; ++z)
-                for (int y = 0; y < B; ++y)
-                    for (int x = 0; x < B; ++x)
-                        for (int axis = 0; axis < 3; ++axis) {
-                            const glm::ivec3 l(x, y, z);
-                            const float d0 = block.corners[std::size_t(cornerIndex(l))];
-                            const float d1 =
-                                block.corners[std::size_t(cornerIndex(l + axisVector(axis)))];
-                            if ((d0 < 0.0f) == (d1 < 0.0f)) continue;
-                            const glm::vec3 a = cornerPosition(block.cell + l);
-                            const glm::vec3 b = a + voxel * glm::vec3(axisVector(axis));
-                            // The root by false position with the Illinois correction.
-                            float lo = 0.0f, hi = 1.0f, flo = d0, fhi = d1;
-                            float t = flo / (flo - fhi);
-                            int side = 0;
-                            for (int it = 0; it < 10; ++it) {
-                                t = lo + (hi - lo) * flo / (flo - fhi);
-                                const float f = field.distance(a + t * (b - a));
-                                ++block.evaluations;
-                                if (std::abs(f) < 1e-5f * voxel) break;
-                                if ((f < 0.0f) == (flo < 0.0f)) {
-                                    lo = t;
-                                    flo = f;
-                                    if (side == -1) fhi *= 0.5f;
-                                    side = -1;
-                                } else {
-                                    hi = t;
-                                    fhi = f;
-                                    if (side == 1) flo *= 0.5f;
-                                    side = 1;
+    if (!parallelFor(
+            activeCount, threads, options.cancel, progress, 0.35, 0.55, [&](std::int64_t i) {
+                Block& block = active[std::size_t(i)];
+                block.edgeIndex.assign(std::size_t(B * B * B * 3), -1);
+                for (int z = 0; z < B; ++z)
+                    for (int y = 0; y < B; ++y)
+                        for (int x = 0; x < B; ++x)
+                            for (int axis = 0; axis < 3; ++axis) {
+                                const glm::ivec3 l(x, y, z);
+                                const float d0 = block.corners[std::size_t(cornerIndex(l))];
+                                const float d1 =
+                                    block.corners[std::size_t(cornerIndex(l + axisVector(axis)))];
+                                if ((d0 < 0.0f) == (d1 < 0.0f)) continue;
+                                const glm::vec3 a = cornerPosition(block.cell + l);
+                                const glm::vec3 b = a + voxel * glm::vec3(axisVector(axis));
+                                // The root by false position with the Illinois correction.
+                                float lo = 0.0f, hi = 1.0f, flo = d0, fhi = d1;
+                                float t = flo / (flo - fhi);
+                                int side = 0;
+                                for (int it = 0; it < 10; ++it) {
+                                    t = lo + (hi - lo) * flo / (flo - fhi);
+                                    const float f = field.distance(a + t * (b - a));
+                                    ++block.evaluations;
+                                    if (std::abs(f) < 1e-5f * voxel) break;
+                                    if ((f < 0.0f) == (flo < 0.0f)) {
+                                        lo = t;
+                                        flo = f;
+                                        if (side == -1) fhi *= 0.5f;
+                                        side = -1;
+                                    } else {
+                                        hi = t;
+                                        fhi = f;
+                                        if (side == 1) flo *= 0.5f;
+                                        side = 1;
+                                    }
                                 }
+                                const glm::vec3 p = a + t * (b - a);
+                                block.edgeIndex[std::size_t(cellIndex(l) * 3 + axis)] =
+                                    std::int32_t(block.hermite.size());
+                                block.hermite.push_back(
+                                    {p, unitGradient(field, p, gradientStep, block.evaluations)});
                             }
-                            const glm::vec3 p = a + t * (b - a);
-                            block.edgeIndex[std::size_t(cellIndex(l) * 3 + axis)] =
-                                std::int32_t(block.hermite.size());
-                            block.hermite.push_back(
-                                {p, gradient(field, p, gradientStep, block.evaluations)});
-                        }
-        })) {
+            })) {
         result.cancelled = true;
         return result;
     }
 
     // Pass 4: a vertex per component of each cell the surface crosses.
-    if (!parallelFor(activeCount, threads, options, 0.55, 0.9, [&](std::int64_t i) {
-            Block& block = active[std::size_t(i)];
-            block.cellVertex.assign(std::size_t(B * B * B), ~0u);
-            block.cellFlips.assign(std::size_t(B * B * B), 0);
-            for (int z = 0; z < B; ++z)
-                for (int y = 0; y < B; ++y)
-                    for (int x = 0; x < B; ++x) {
-                        const glm::ivec3 l(x, y, z);
-                        const glm::ivec3 cell = block.cell + l;
-                        std::uint8_t config = 0, flips = 0;
-                        cellAt(cell, config, flips);
-                        if (config == 0 || config == 255) continue;
-                        const CellComponents& parts = cellComponents(config, flips);
-                        block.cellFlips[std::size_t(cellIndex(l))] = flips;
-                        block.cellVertex[std::size_t(cellIndex(l))] =
-                            std::uint32_t(block.positions.size());
-                        const glm::vec3 lo = cornerPosition(cell);
-                        const glm::vec3 hi = lo + voxel;
-                        for (int k = 0; k < parts.count; ++k) {
-                            Qef qef;
-                            for (int s = parts.start[k]; s < parts.start[k + 1]; ++s) {
-                                const int e = parts.cycle[std::size_t(s)];
-                                const Hermite* h = hermiteAt(
-                                    cell + cornerOffset(kEdgeCorners[e][0]), kEdgeAxis[e]);
-                                if (h) qef.add(h->point, h->normal);
-                            }
-                            int rank = 0;
-                            const glm::vec3 solution = qef.solve(0.01, &rank);
-                            glm::vec3 p = glm::clamp(solution, lo, hi);
-                            // Where the planes meet in a point (rank 3), that point is a
-                            // corner of the surface. A corner in this cell whose faces do not
-                            // all cross the cell's edges leaves fewer planes: those of the
-                            // crossings around the cell (its 26 neighbours' edges) may meet
-                            // there.
-                            glm::vec3 corner = solution;
-                            bool haveCorner = rank == 3;
-                            if (rank < 3) {
-                                Qef wide;
-                                for (int dz = -1; dz <= 1; ++dz)
-                                    for (int dy = -1; dy <= 1; ++dy)
-                                        for (int dx = -1; dx <= 1; ++dx)
-                                            for (int e = 0; e < 12; ++e) {
-                                                const Hermite* h =
-                                                    hermiteAt(cell + glm::ivec3(dx, dy, dz) +
-                                                                  cornerOffset(kEdgeCorners[e][0]),
-                                                              kEdgeAxis[e]);
-                                                if (h) wide.add(h->point, h->normal);
-                                            }
-                                int wideRank = 0;
-                                corner = wide.solve(0.01, &wideRank);
-                                haveCorner = wideRank == 3;
-                            }
-                            // The corner is taken when it lies on the surface, in this cell,
-                            // or in an empty neighbour (a tip that crosses none of its edges)
-                            // whose nearest non-empty neighbour this cell is.
-                            bool cornerTaken = false;
-                            if (haveCorner &&
-                                (inCell(corner, lo, hi) || takesOutsideCorner(cell, corner))) {
-                                ++block.evaluations;
-                                if (std::abs(field.distance(corner)) < 0.01f * voxel) {
-                                    p = corner;
-                                    cornerTaken = true;
+    if (!parallelFor(
+            activeCount, threads, options.cancel, progress, 0.55, 0.9, [&](std::int64_t i) {
+                Block& block = active[std::size_t(i)];
+                block.cellVertex.assign(std::size_t(B * B * B), ~0u);
+                block.cellFlips.assign(std::size_t(B * B * B), 0);
+                for (int z = 0; z < B; ++z)
+                    for (int y = 0; y < B; ++y)
+                        for (int x = 0; x < B; ++x) {
+                            const glm::ivec3 l(x, y, z);
+                            const glm::ivec3 cell = block.cell + l;
+                            std::uint8_t config = 0, flips = 0;
+                            cellAt(cell, config, flips);
+                            if (config == 0 || config == 255) continue;
+                            const CellComponents& parts = cellComponents(config, flips);
+                            block.cellFlips[std::size_t(cellIndex(l))] = flips;
+                            block.cellVertex[std::size_t(cellIndex(l))] =
+                                std::uint32_t(block.positions.size());
+                            const glm::vec3 lo = cornerPosition(cell);
+                            const glm::vec3 hi = lo + voxel;
+                            for (int k = 0; k < parts.count; ++k) {
+                                Qef qef;
+                                for (int s = parts.start[k]; s < parts.start[k + 1]; ++s) {
+                                    const int e = parts.cycle[std::size_t(s)];
+                                    const Hermite* h = hermiteAt(
+                                        cell + cornerOffset(kEdgeCorners[e][0]), kEdgeAxis[e]);
+                                    if (h) qef.add(h->point, h->normal);
                                 }
-                            }
-                            // Onto the surface along the gradient (Newton steps, which also
-                            // hold where step corrections make the field's slope below 1), in
-                            // the cell.
-                            for (int it = 0; it < 4 && !cornerTaken; ++it) {
-                                const float d = field.distance(p);
+                                int rank = 0;
+                                const glm::vec3 solution = qef.solve(0.01, &rank);
+                                glm::vec3 p = glm::clamp(solution, lo, hi);
+                                // Where the planes meet in a point (rank 3), that point is a
+                                // corner of the surface. A corner in this cell whose faces do not
+                                // all cross the cell's edges leaves fewer planes: those of the
+                                // crossings around the cell (its 26 neighbours' edges) may meet
+                                // there.
+                                glm::vec3 corner = solution;
+                                bool haveCorner = rank == 3;
+                                if (rank < 3) {
+                                    Qef wide;
+                                    for (int dz = -1; dz <= 1; ++dz)
+                                        for (int dy = -1; dy <= 1; ++dy)
+                                            for (int dx = -1; dx <= 1; ++dx)
+                                                for (int e = 0; e < 12; ++e) {
+                                                    const Hermite* h = hermiteAt(
+                                                        cell + glm::ivec3(dx, dy, dz) +
+                                                            cornerOffset(kEdgeCorners[e][0]),
+                                                        kEdgeAxis[e]);
+                                                    if (h) wide.add(h->point, h->normal);
+                                                }
+                                    int wideRank = 0;
+                                    corner = wide.solve(0.01, &wideRank);
+                                    haveCorner = wideRank == 3;
+                                }
+                                // The corner is taken when it lies on the surface, in this cell,
+                                // or in an empty neighbour (a tip that crosses none of its edges)
+                                // whose nearest non-empty neighbour this cell is.
+                                bool cornerTaken = false;
+                                if (haveCorner &&
+                                    (inCell(corner, lo, hi) || takesOutsideCorner(cell, corner))) {
+                                    ++block.evaluations;
+                                    if (std::abs(field.distance(corner)) < 0.01f * voxel) {
+                                        p = corner;
+                                        cornerTaken = true;
+                                    }
+                                }
+                                // Onto the surface along the gradient, near the cell.
+                                if (!cornerTaken)
+                                    p = exporter::stepOntoSurface(
+                                        field, p, lo - kNewtonMargin * voxel,
+                                        hi + kNewtonMargin * voxel, gradientStep, 1e-4f * voxel,
+                                        block.evaluations);
+                                std::uint32_t material = 0;
+                                glm::vec3 color(0.8f);
+                                field.surface(p, material, color);
                                 ++block.evaluations;
-                                if (std::abs(d) < 1e-4f * voxel) break;
-                                const glm::vec3 g =
-                                    rawGradient(field, p, gradientStep, block.evaluations);
-                                const float slope = glm::dot(g, g);
-                                if (!(slope > 1e-8f)) break;
-                                p = glm::clamp(p - d * g / slope, lo - kNewtonMargin * voxel,
-                                               hi + kNewtonMargin * voxel);
+                                block.positions.push_back(p);
+                                block.normals.push_back(
+                                    unitGradient(field, p, gradientStep, block.evaluations));
+                                block.colors.push_back(color);
+                                block.materials.push_back(material);
+                                block.vertexCells.push_back(cell);
+                                block.massPoints.push_back(qef.massPoint());
+                                if (options.tolerance > 0.0f) block.qefs.push_back(qef);
                             }
-                            std::uint32_t material = 0;
-                            glm::vec3 color(0.8f);
-                            field.surface(p, material, color);
-                            ++block.evaluations;
-                            block.positions.push_back(p);
-                            block.normals.push_back(
-                                gradient(field, p, gradientStep, block.evaluations));
-                            block.colors.push_back(color);
-                            block.materials.push_back(material);
                         }
-                    }
-        })) {
+            })) {
         result.cancelled = true;
         return result;
     }
@@ -473,7 +441,7 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
 
     // Pass 5: a quad (two triangles) around every crossed edge, facing the outside.
     std::atomic<bool> broken{false};
-    if (!parallelFor(activeCount, threads, options, 0.9, 1.0, [&](std::int64_t i) {
+    if (!parallelFor(activeCount, threads, options.cancel, progress, 0.9, 1.0, [&](std::int64_t i) {
             Block& block = active[std::size_t(i)];
             for (int z = 0; z < B; ++z)
                 for (int y = 0; y < B; ++y)
@@ -509,6 +477,13 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
                             const float d13 = std::abs(field.distance(0.5f * (p1 + p3)));
                             block.evaluations += 2;
                             auto id = [](std::int64_t value) { return std::uint32_t(value); };
+                            const Hermite& crossing = block.hermite[std::size_t(
+                                block.edgeIndex[std::size_t(cellIndex(l) * 3 + axis)])];
+                            block.quads.push_back(
+                                {{id(quad[0]), id(quad[1]), id(quad[2]), id(quad[3])},
+                                 crossing.point,
+                                 crossing.normal,
+                                 corner});
                             if (d02 <= d13) {
                                 block.triangles.push_back({id(quad[0]), id(quad[1]), id(quad[2])});
                                 block.triangles.push_back({id(quad[0]), id(quad[2]), id(quad[3])});
@@ -552,6 +527,58 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
         mesh.triangleMaterial.push_back(b == c ? b : a);
     }
     (void)broken;
+    std::vector<Qef> qefs;
+    std::vector<glm::ivec3> cells;
+    std::vector<glm::vec3> masses;
+    std::vector<exporter::DcQuad> quads;
+    quads.reserve(triangleCount / 2);
+    const bool adaptive = options.tolerance > 0.0f;
+    cells.reserve(vertexCount);
+    if (adaptive) qefs.reserve(vertexCount);
+    for (Block& block : active) {
+        quads.insert(quads.end(), block.quads.begin(), block.quads.end());
+        cells.insert(cells.end(), block.vertexCells.begin(), block.vertexCells.end());
+        masses.insert(masses.end(), block.massPoints.begin(), block.massPoints.end());
+        if (adaptive) qefs.insert(qefs.end(), block.qefs.begin(), block.qefs.end());
+        block = Block{}; // its memory, for what follows
+    }
+    // Quads that pass through others become fans around their edge's crossing.
+    const exporter::UntangleStats untangled =
+        exporter::untangleQuads(field, grid, mesh, quads, cells, masses, adaptive ? &qefs : nullptr,
+                                kUntangleRounds, options.cancel);
+    if (options.cancel && options.cancel->load()) {
+        result.cancelled = true;
+        result.mesh = ExportMesh{};
+        return result;
+    }
+    result.fannedQuads = untangled.fannedQuads;
+    result.verticesMovedIn = untangled.verticesMovedIn;
+    result.selfIntersections = untangled.left;
+    result.evaluations += untangled.evaluations;
+    quads = {};
+    result.uniformTriangles = mesh.triangles.size();
+    if (adaptive) {
+        exporter::OctreeSettings octree;
+        octree.origin = grid.origin;
+        octree.voxel = voxel;
+        octree.tolerance = options.tolerance;
+        octree.maxLevel = options.octreeLevels;
+        octree.threads = threads;
+        octree.cancel = options.cancel;
+        if (options.progress)
+            octree.progress = [&](double f) {
+                options.progress(kUniformShare + (1.0 - kUniformShare) * f);
+            };
+        exporter::OctreeStats stats;
+        if (!exporter::collapseOctree(field, mesh, std::move(cells), std::move(qefs), octree,
+                                      stats)) {
+            result.cancelled = true;
+            result.mesh = ExportMesh{};
+            return result;
+        }
+        result.collapsedClusters = stats.collapsed;
+        result.evaluations += stats.evaluations;
+    }
     return result;
 }
 

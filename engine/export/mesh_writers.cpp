@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 namespace rmsc {
 namespace {
@@ -35,14 +36,40 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-// Whether smooth operations blended any vertex's colour away from its material's.
-bool colorsBlended(const MeshFile& file) {
-    for (std::size_t v = 0; v < file.mesh.colors.size(); ++v) {
-        const glm::vec3 own = file.materials[file.mesh.vertexMaterial[v]].baseColor;
-        if (glm::any(glm::greaterThan(glm::abs(file.mesh.colors[v] - own), glm::vec3(1e-3f))))
-            return true;
+// One glTF primitive: the triangles of one material, with vertices of their own (numbered from
+// 0 in first-use order), and whether smooth operations blended the base colour of any of them
+// away from the material's.
+struct Primitive {
+    std::vector<std::uint32_t> vertices; // mesh vertex of each primitive vertex
+    std::vector<std::uint32_t> indices;  // into `vertices`, three per triangle
+    bool blended = false;
+};
+
+std::vector<Primitive> primitivesOf(const MeshFile& file) {
+    const ExportMesh& mesh = file.mesh;
+    std::vector<Primitive> out(file.materials.size());
+    std::vector<std::uint32_t> local(mesh.positions.size(), ~0u);
+    for (std::uint32_t m = 0; m < out.size(); ++m) {
+        Primitive& primitive = out[m];
+        const glm::vec3 own = file.materials[m].baseColor;
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            if (mesh.triangleMaterial[t] != m) continue;
+            for (std::uint32_t v : mesh.triangles[t]) {
+                if (local[v] == ~0u) {
+                    local[v] = std::uint32_t(primitive.vertices.size());
+                    primitive.vertices.push_back(v);
+                    if (v < mesh.colors.size() &&
+                        glm::any(
+                            glm::greaterThan(glm::abs(mesh.colors[v] - own), glm::vec3(1e-3f))))
+                        primitive.blended = true;
+                }
+                primitive.indices.push_back(local[v]);
+            }
+        }
+        for (std::uint32_t v : primitive.vertices)
+            local[v] = ~0u;
     }
-    return false;
+    return out;
 }
 
 nlohmann::json vec(glm::vec3 v) {
@@ -70,7 +97,7 @@ bool meshFormatOf(const std::filesystem::path& path, MeshFormat& format) {
 
 std::string gltfBytes(const MeshFile& file, bool binary) {
     const ExportMesh& mesh = file.mesh;
-    const bool blended = colorsBlended(file);
+    const std::vector<Primitive> parts = primitivesOf(file);
     std::string buffer;
     nlohmann::json views = nlohmann::json::array();
     nlohmann::json accessors = nlohmann::json::array();
@@ -79,17 +106,19 @@ std::string gltfBytes(const MeshFile& file, bool binary) {
             {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}, {"target", target}});
         return int(views.size()) - 1;
     };
-    auto addVec3 = [&](const std::vector<glm::vec3>& values, bool bounds) {
+    // A VEC3 float accessor of `value(v)` for the primitive's vertices.
+    auto addVec3 = [&](const Primitive& primitive, bool bounds, auto value) {
         const std::size_t offset = buffer.size();
         glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        for (glm::vec3 v : values) {
-            append(buffer, v);
-            lo = glm::min(lo, v);
-            hi = glm::max(hi, v);
+        for (std::uint32_t v : primitive.vertices) {
+            const glm::vec3 x = value(v);
+            append(buffer, x);
+            lo = glm::min(lo, x);
+            hi = glm::max(hi, x);
         }
         nlohmann::json accessor = {{"bufferView", addView(offset, buffer.size() - offset, 34962)},
                                    {"componentType", 5126},
-                                   {"count", values.size()},
+                                   {"count", primitive.vertices.size()},
                                    {"type", "VEC3"}};
         if (bounds) {
             accessor["min"] = vec(lo);
@@ -98,53 +127,43 @@ std::string gltfBytes(const MeshFile& file, bool binary) {
         accessors.push_back(accessor);
         return int(accessors.size()) - 1;
     };
-    const int position = addVec3(mesh.positions, true);
-    const int normal = addVec3(mesh.normals, false);
-    int color = -1;
-    if (blended) {
-        std::vector<glm::vec3> ratio(mesh.colors.size());
-        for (std::size_t v = 0; v < ratio.size(); ++v) {
-            const glm::vec3 own = file.materials[mesh.vertexMaterial[v]].baseColor;
-            for (int c = 0; c < 3; ++c)
-                ratio[v][c] = own[c] > 1e-4f ? mesh.colors[v][c] / own[c] : 1.0f;
-        }
-        color = addVec3(ratio, false);
-    }
     nlohmann::json primitives = nlohmann::json::array();
-    for (std::uint32_t m = 0; m < file.materials.size(); ++m) {
+    for (std::uint32_t m = 0; m < parts.size(); ++m) {
+        const Primitive& primitive = parts[m];
+        if (primitive.indices.empty()) continue;
+        nlohmann::json attributes = {
+            {"POSITION",
+             addVec3(primitive, true, [&](std::uint32_t v) { return mesh.positions[v]; })},
+            {"NORMAL",
+             addVec3(primitive, false, [&](std::uint32_t v) { return mesh.normals[v]; })}};
+        // COLOR_0 multiplies the material's base colour (glTF 2.0, 3.7.2.1 and 3.9.2): the
+        // blended colour itself, with the material's factor white.
+        if (primitive.blended)
+            attributes["COLOR_0"] = addVec3(primitive, false, [&](std::uint32_t v) {
+                return glm::clamp(mesh.colors[v], glm::vec3(0.0f), glm::vec3(1.0f));
+            });
         const std::size_t offset = buffer.size();
-        std::uint32_t count = 0, lo = ~0u, hi = 0;
-        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-            if (mesh.triangleMaterial[t] != m) continue;
-            for (std::uint32_t v : mesh.triangles[t]) {
-                append(buffer, v);
-                lo = std::min(lo, v);
-                hi = std::max(hi, v);
-            }
-            count += 3;
-        }
-        if (count == 0) continue;
+        for (std::uint32_t i : primitive.indices)
+            append(buffer, i);
         accessors.push_back({{"bufferView", addView(offset, buffer.size() - offset, 34963)},
                              {"componentType", 5125},
-                             {"count", count},
+                             {"count", primitive.indices.size()},
                              {"type", "SCALAR"},
-                             {"min", {lo}},
-                             {"max", {hi}}});
-        nlohmann::json attributes = {{"POSITION", position}, {"NORMAL", normal}};
-        if (color >= 0) attributes["COLOR_0"] = color;
+                             {"min", {0}},
+                             {"max", {primitive.vertices.size() - 1}}});
         primitives.push_back({{"attributes", attributes},
                               {"indices", int(accessors.size()) - 1},
                               {"material", m},
                               {"mode", 4}});
     }
     nlohmann::json materials = nlohmann::json::array();
-    for (const Material& material : file.materials) {
-        nlohmann::json entry = {
-            {"pbrMetallicRoughness",
-             {{"baseColorFactor",
-               {material.baseColor.x, material.baseColor.y, material.baseColor.z, 1.0}},
-              {"metallicFactor", material.metallic},
-              {"roughnessFactor", material.roughness}}}};
+    for (std::uint32_t m = 0; m < file.materials.size(); ++m) {
+        const Material& material = file.materials[m];
+        const glm::vec3 factor = parts[m].blended ? glm::vec3(1.0f) : material.baseColor;
+        nlohmann::json entry = {{"pbrMetallicRoughness",
+                                 {{"baseColorFactor", {factor.x, factor.y, factor.z, 1.0}},
+                                  {"metallicFactor", material.metallic},
+                                  {"roughnessFactor", material.roughness}}}};
         if (!material.name.empty()) entry["name"] = material.name;
         if (glm::any(glm::greaterThan(material.emissive, glm::vec3(0.0f)))) {
             const float peak =

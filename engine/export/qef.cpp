@@ -54,8 +54,24 @@ void Qef::add(glm::vec3 point, glm::vec3 normal) {
     const glm::dvec3 p(point);
     ata += glm::outerProduct(n, n);
     atb += n * glm::dot(n, p);
+    btb += glm::dot(n, p) * glm::dot(n, p);
     sum += p;
     ++count;
+}
+
+Qef& Qef::operator+=(const Qef& other) {
+    ata += other.ata;
+    atb += other.atb;
+    sum += other.sum;
+    btb += other.btb;
+    count += other.count;
+    return *this;
+}
+
+double Qef::error(glm::vec3 point) const {
+    // sum (n . x - n . p)^2 = x^T (sum n n^T) x - 2 x . sum n (n . p) + sum (n . p)^2
+    const glm::dvec3 x(point);
+    return std::max(0.0, glm::dot(x, ata * x) - 2.0 * glm::dot(x, atb) + btb);
 }
 
 glm::vec3 Qef::massPoint() const {

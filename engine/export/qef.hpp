@@ -15,9 +15,14 @@ struct Qef {
     glm::dmat3 ata{0.0}; // sum n n^T
     glm::dvec3 atb{0.0}; // sum n (n . p)
     glm::dvec3 sum{0.0}; // sum p
+    double btb = 0.0;    // sum (n . p)^2
     int count = 0;
 
     void add(glm::vec3 point, glm::vec3 normal);
+    // The planes of both (the QEF of a cluster of vertices is the sum of theirs).
+    Qef& operator+=(const Qef& other);
+    // E(x): the sum of squared distances from x to the planes.
+    double error(glm::vec3 x) const;
     // The minimizer; eigenvalues of A^T A under `truncation` times the largest are treated as 0.
     // `rank`, when given, gets how many eigenvalues were kept (1: a plane, 2: an edge, 3: a
     // corner).

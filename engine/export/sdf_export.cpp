@@ -69,35 +69,68 @@ struct Compiled {
 
 } // namespace
 
-std::optional<ExportField> exportField(const Scene& scene, const std::string& node,
-                                       const std::optional<Aabb>& clip, Diagnostics& diagnostics) {
+namespace {
+
+// The path to the node at `node` ("" : the root), or false with the problem in `diagnostics`.
+bool nodePath(const Scene& scene, const std::string& node, std::vector<const SdfNode*>& path,
+              Diagnostics& diagnostics) {
     const std::string file = scene.file.string();
     if (!scene.sdf) {
         diagnostics.error(file, "/sdf", "the scene has no SDF tree: nothing to export");
-        return std::nullopt;
+        return false;
     }
     const std::string pointer = node.empty() ? scene.sdf->pointer : node;
-    std::vector<const SdfNode*> path;
     if (!findPath(*scene.sdf, pointer, path)) {
         diagnostics.error(file, pointer,
                           "no SDF node at this JSON pointer (expected the pointer of a node "
                           "under /sdf, such as /sdf/children/0)");
-        return std::nullopt;
+        return false;
     }
+    return true;
+}
+
+// The shell bound of the node at the end of `path`, as a world box.
+std::optional<Aabb> shellBound(const std::vector<const SdfNode*>& path) {
+    const SdfNode& target = *path.back();
+    if (!target.shell || !target.shell->bound) return std::nullopt;
+    return transformAabb(aabbAround(glm::vec3(0.0f), *target.shell->bound), nodeToWorld(path));
+}
+
+} // namespace
+
+std::optional<SdfBounds> exportContentBounds(const Scene& scene, const std::string& node,
+                                             Diagnostics& diagnostics) {
+    std::vector<const SdfNode*> path;
+    if (!nodePath(scene, node, path, diagnostics)) return std::nullopt;
+    SdfBounds bounds = sdfNodeBounds(inPlace(path));
+    if (const std::optional<Aabb> shell = shellBound(path)) {
+        bounds.box = bounds.bounded ? intersectAabb(bounds.box, *shell) : *shell;
+        bounds.bounded = true;
+        bounds.unboundedBy.clear();
+    }
+    return bounds;
+}
+
+std::optional<ExportField> exportField(const Scene& scene, const std::string& node,
+                                       const std::optional<Aabb>& clip, Diagnostics& diagnostics) {
+    const std::string file = scene.file.string();
+    std::vector<const SdfNode*> path;
+    if (!nodePath(scene, node, path, diagnostics)) return std::nullopt;
+    const std::string pointer = path.back()->pointer;
     const SdfNode& target = *path.back();
     const SdfNode root = inPlace(path);
     SdfBounds bounds = sdfNodeBounds(root);
     Aabb box = bounds.box;
     bool clipped = false;
     std::optional<Aabb> cut = clip;
-    if (!cut && target.shell && target.shell->bound)
-        cut = transformAabb(aabbAround(glm::vec3(0.0f), *target.shell->bound), nodeToWorld(path));
+    if (!cut) cut = shellBound(path);
     if (!bounds.bounded) {
         if (!cut) {
             diagnostics.error(
                 file, bounds.unboundedBy.empty() ? pointer : bounds.unboundedBy,
                 "the content reaches infinity (a plane or an infinite repetition): give "
-                "--bounds, or a shell \"bound\" on the exported node, to export it");
+                "bounds to cut it to (rmsc export --bounds; in the viewer's export dialog, "
+                "\"Cut to bounds\"), or a shell \"bound\" on the exported node, to export it");
             return std::nullopt;
         }
         box = *cut;
@@ -167,6 +200,12 @@ std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& set
                               shortestNumberText(voxel));
         return std::nullopt;
     }
+    if (!(settings.tolerance >= 0.0f) || !std::isfinite(settings.tolerance)) {
+        diagnostics.error(file, field->pointer,
+                          "the tolerance must be a number of voxels >= 0, got " +
+                              shortestNumberText(settings.tolerance));
+        return std::nullopt;
+    }
     // Two cells of margin on every side: the grid's outer corners lie outside the content. The
     // grid is moved off round numbers by a few hundredths of a cell, so faces at round
     // coordinates (a box at the origin) do not lie exactly on its corners, where the distance
@@ -196,6 +235,7 @@ std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& set
     options.maxTriangles = limits::kExportTriangles;
     options.progress = settings.progress;
     options.cancel = settings.cancel;
+    options.tolerance = settings.tolerance;
     DcResult result = dualContour(field->field, grid, options);
     SdfExport out;
     if (result.cancelled) {
@@ -239,6 +279,11 @@ std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& set
     out.evaluations = result.evaluations;
     out.estimatedTriangles = result.estimatedTriangles;
     out.faceFlips = result.faceFlips;
+    out.uniformTriangles = result.uniformTriangles;
+    out.collapsedClusters = result.collapsedClusters;
+    out.fannedQuads = result.fannedQuads;
+    out.verticesMovedIn = result.verticesMovedIn;
+    out.untangledLeft = result.selfIntersections;
     return out;
 }
 

@@ -99,7 +99,8 @@ int Viewer::run() {
             return kExitSystem;
         }
         if (scriptHoldFrames_ > 5000) {
-            std::fprintf(stderr, "rmsc view: the view was not refined in 5000 frames\n");
+            std::fprintf(stderr, "rmsc view: the view was not refined (or the export did not "
+                                 "end) in 5000 frames\n");
             return kExitSystem;
         }
     }
@@ -115,7 +116,9 @@ ScriptActions Viewer::readInput() {
     input_.beginFrame();
     if (script_) {
         glfwPollEvents();
-        if (scriptHoldFrames_ >= 0 && gpu_.refined()) scriptHoldFrames_ = -1;
+        if (scriptHoldFrames_ >= 0 &&
+            (scriptWaitsForExport_ ? !export_.job.running() : gpu_.refined()))
+            scriptHoldFrames_ = -1;
         if (scriptHoldFrames_ >= 0)
             ++scriptHoldFrames_;
         else
@@ -134,7 +137,10 @@ ScriptActions Viewer::readInput() {
     }
     ScriptActions actions;
     if (script_) actions = scriptActions(*script_, taken);
-    if (actions.waitRefined) scriptHoldFrames_ = 0;
+    if (actions.waitRefined || actions.waitExport) {
+        scriptHoldFrames_ = 0;
+        scriptWaitsForExport_ = actions.waitExport;
+    }
     input_.finishEvents();
     if (window_->shouldClose()) {
         window_->setShouldClose(false);
@@ -165,7 +171,7 @@ void Viewer::drawUi() {
     ViewerCommands commands;
     const NewShapePlace place = newShapePlace();
     if (ImGui::BeginMainMenuBar()) {
-        drawMenus(session_, view_, place, messages_, commands);
+        drawMenus(session_, view_, place, export_.job.running(), messages_, commands);
         carryOut(commands); // before the title, which shows whether the scene is saved
         drawMenuBarTitle(session_.document);
         ImGui::EndMainMenuBar();
@@ -182,6 +188,8 @@ void Viewer::drawUi() {
                         layout_.viewport);
     drawProblems(layout_.viewport, messages_);
     drawDialogs(dialogs_, session_, files_, messages_);
+    drawExportDialog(export_, session_.document);
+    drawExportProgress(export_, layout_.viewport, messages_);
 }
 
 void Viewer::commitFinishedEdits() {

@@ -13,6 +13,7 @@
 #include "editor/file_watcher.hpp"
 #include "editor/input_queue.hpp"
 #include "editor_session.hpp"
+#include "export_dialog.hpp"
 #include "frame_stats.hpp"
 #include "gesture_controls.hpp"
 #include "gizmo_controls.hpp"
@@ -71,6 +72,7 @@ class Viewer {
     int scriptFrame_ = 0;       // the replay script's frame: stops while it waits for refining
     int scriptMods_ = 0;        // the modifiers the script holds
     int scriptHoldFrames_ = -1; // frames the script has waited for refining; -1: not waiting
+    bool scriptWaitsForExport_ = false; // the wait is for the export, not the refining
     int frameNumber_ = 0;
     float frameMilliseconds_ = 0.0f;
     float viewMilliseconds_ = 0.0f; // of the last frame spent in updateView
@@ -83,6 +85,7 @@ class Viewer {
     editor::FileWatcher shaderWatcher_; // the source tree's shaders, when they are read from it
     Messages messages_;
     Dialogs dialogs_;
+    ExportUi export_; // the export dialog and the export running on its thread
     PanelLayout layout_;
     InspectorState inspector_;
     ViewSettings view_;

@@ -4,6 +4,7 @@
 #include "document_edits.hpp"
 #include "editor/multi_selection.hpp"
 #include "editor/selection_edits.hpp"
+#include "export_dialog.hpp"
 #include "panel_widgets.hpp"
 #include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
@@ -17,12 +18,19 @@
 namespace rmsc::app {
 namespace {
 
-void drawFileMenu(ViewerCommands& commands) {
+void drawFileMenu(const editor::Document& document, bool exporting, ViewerCommands& commands) {
     if (!ImGui::BeginMenu("File")) return;
     if (ImGui::MenuItem("New")) commands.push_back(ViewerCommand::NewScene);
     if (ImGui::MenuItem("Open...", "Ctrl+O")) commands.push_back(ViewerCommand::Open);
     if (ImGui::MenuItem("Save", "Ctrl+S")) commands.push_back(ViewerCommand::Save);
     if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) commands.push_back(ViewerCommand::SaveAs);
+    ImGui::Separator();
+    // One export at a time: the items wait while one runs.
+    if (ImGui::MenuItem("Export scene...", nullptr, false, !exporting && document.scene().sdf))
+        commands.push_back(ViewerCommand::ExportScene);
+    if (ImGui::MenuItem("Export selection...", nullptr, false,
+                        !exporting && canExportSelection(document)))
+        commands.push_back(ViewerCommand::ExportSelection);
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot", "F12")) commands.push_back(ViewerCommand::Screenshot);
     ImGui::Separator();
@@ -169,9 +177,9 @@ void drawCameraMenu(EditorSession& session, Messages& messages, ViewerCommands& 
 } // namespace
 
 void drawMenus(EditorSession& session, ViewSettings& view, const NewShapePlace& place,
-               Messages& messages, ViewerCommands& commands) {
+               bool exporting, Messages& messages, ViewerCommands& commands) {
     editor::Document& document = session.document;
-    drawFileMenu(commands);
+    drawFileMenu(document, exporting, commands);
     drawEditMenu(document, commands);
     drawAddMenu(document, place, commands);
     drawViewMenu(session, view, messages);

@@ -14,9 +14,10 @@
 namespace rmsc::app {
 
 // The menus; call between ImGui::BeginMainMenuBar and ImGui::EndMainMenuBar. New shapes go where
-// `place` says; the View and Camera menus change the session's view.
+// `place` says; the View and Camera menus change the session's view. `exporting`: an export
+// runs (File > Export waits for it).
 void drawMenus(EditorSession& session, ViewSettings& view, const NewShapePlace& place,
-               Messages& messages, ViewerCommands& commands);
+               bool exporting, Messages& messages, ViewerCommands& commands);
 // The scene's file (or "(unsaved scene)"), with " *" when there are unsaved changes; after the
 // menus.
 void drawMenuBarTitle(const editor::Document& document);

@@ -127,9 +127,11 @@ std::optional<Script> parseScript(const std::string& text, const std::string& fi
                            : verb == "screenshot" ? K::Screenshot
                                                   : K::WindowShot;
             script.events.push_back({frame, kind, 0, {}, rest, lineNumber});
-        } else if (verb == "quit" || verb == "wait-shaders" || verb == "wait-refined") {
+        } else if (verb == "quit" || verb == "wait-shaders" || verb == "wait-refined" ||
+                   verb == "wait-export") {
             const K kind = verb == "quit"           ? K::Quit
                            : verb == "wait-shaders" ? K::WaitShaders
+                           : verb == "wait-export"  ? K::WaitExport
                                                     : K::WaitRefined;
             script.events.push_back({frame, kind, 0, {}, {}, lineNumber});
         } else {
@@ -219,6 +221,9 @@ ScriptActions scriptActions(const Script& script, const std::vector<editor::Inpu
             break;
         case K::WaitRefined:
             actions.waitRefined = true;
+            break;
+        case K::WaitExport:
+            actions.waitExport = true;
             break;
         case K::Quit:
             actions.quit = true;

@@ -16,6 +16,7 @@
 //                             and in use (the view is drawn with them from this frame on)
 //   FRAME wait-refined        hold the script until the view is fully refined (its frame
 //                             count stops meanwhile; the viewer draws on)
+//   FRAME wait-export         hold the script until the export running (File > Export) ends
 //   FRAME quit                close the window (asks when there are unsaved changes)
 //
 // Frames count from 0. A frame's events join the viewer's input queue (editor/input_queue.hpp)
@@ -47,6 +48,7 @@ struct ScriptEvent {
         WindowShot,
         WaitShaders,
         WaitRefined,
+        WaitExport,
         Quit
     } kind = Kind::Quit;
     int code = 0; // key or button
@@ -71,6 +73,7 @@ struct ScriptActions {
     std::vector<std::string> windowShots;
     bool waitShaders = false;
     bool waitRefined = false;
+    bool waitExport = false;
     bool quit = false;
 };
 

@@ -80,6 +80,13 @@ void Viewer::carryOut(ViewerCommands& commands) {
         case ViewerCommand::AddMesh:
             dialogs_.askForPath(PathPurpose::AddMesh, "");
             break;
+        case ViewerCommand::ExportScene:
+        case ViewerCommand::ExportSelection: {
+            const editor::FlyCamera& camera = session_.camera;
+            openExportDialog(export_, document, command == ViewerCommand::ExportSelection,
+                             camera.position + camera.forward() * camera.focusDistance);
+            break;
+        }
         case ViewerCommand::AddDirectionalLight:
         case ViewerCommand::AddPointLight:
         case ViewerCommand::AddSpotLight: {

@@ -13,21 +13,23 @@ namespace rmsc::app {
 enum class ViewerCommand {
     Undo,
     Redo,
-    Duplicate,      // the active object
-    Delete,         // everything selected, when anything is
-    Copy,           // everything selected, to the system clipboard as scene-file text
-    Paste,          // the system clipboard's scene objects, next to the active object
-    Group,          // the selected SDF nodes into a new union group (Edit > Group: any operation)
-    NewScene,       // asks first when there are unsaved changes
-    Open,           // asks for the file
-    Save,           // asks for a file when the scene has none yet
-    SaveAs,         // asks for the file
-    AddMesh,        // asks for the glTF file
-    Screenshot,     // the view, next to the scene file
-    Quit,           // asks first when there are unsaved changes
-    FrameSelection, // the camera looks at the selection (or the whole SDF)
-    SaveCamera,     // the view becomes the scene's camera
-    ResetCamera,    // the view from the scene's camera
+    Duplicate,       // the active object
+    Delete,          // everything selected, when anything is
+    Copy,            // everything selected, to the system clipboard as scene-file text
+    Paste,           // the system clipboard's scene objects, next to the active object
+    Group,           // the selected SDF nodes into a new union group (Edit > Group: any operation)
+    NewScene,        // asks first when there are unsaved changes
+    Open,            // asks for the file
+    Save,            // asks for a file when the scene has none yet
+    SaveAs,          // asks for the file
+    AddMesh,         // asks for the glTF file
+    ExportScene,     // the export dialog for the whole SDF tree (export_dialog.hpp)
+    ExportSelection, // the export dialog for the selected SDF node
+    Screenshot,      // the view, next to the scene file
+    Quit,            // asks first when there are unsaved changes
+    FrameSelection,  // the camera looks at the selection (or the whole SDF)
+    SaveCamera,      // the view becomes the scene's camera
+    ResetCamera,     // the view from the scene's camera
     // A light of each type, at the point the view looks at (its focus straight ahead).
     AddDirectionalLight,
     AddPointLight,

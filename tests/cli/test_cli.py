@@ -7,6 +7,7 @@ usage: test_cli.py RMSC_BINARY REPOSITORY_ROOT
 """
 import json
 import os
+import re
 import struct
 import subprocess
 import sys
@@ -515,6 +516,15 @@ with tempfile.TemporaryDirectory() as tmp:
         data = f.read()
     check("export pawn: a glb", data[:4] == b"glTF" and struct.unpack("<I", data[8:12])[0] == len(data))
     expect("export pawn: rmsc opens it", ["validate", glb], 0)
+    # The adaptive octree (default tolerance 0.1 voxel) against a vertex per cell (0).
+    uniform = expect("export pawn without the octree", ["export", pawn, "-o", glb, "--resolution",
+                     "32", "--tolerance", "0"], 0, stdout_has=["triangles"])
+    counts = [int(re.search(r"(\d+) triangles", x.stdout).group(1)) for x in (r, uniform)
+              if re.search(r"(\d+) triangles", x.stdout)]
+    check("export pawn: the octree makes fewer triangles than a vertex per cell",
+          len(counts) == 2 and counts[0] < counts[1], counts)
+    expect("export bad tolerance", ["export", pawn, "-o", glb, "--tolerance", "-1"], 2,
+           stderr_has=["--tolerance", "voxels >= 0"])
     expect("export a node to stl", ["export", os.path.join(SAMPLES, "scenes", "csg.json"), "--node",
            "/sdf/children/1", "-o", os.path.join(exports, "cut.stl"), "--voxel", "0.05"], 0,
            stdout_has=["from /sdf/children/1"])

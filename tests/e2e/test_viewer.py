@@ -26,6 +26,10 @@ a move step typed into the view's toolbar), undoes and redoes the drag, looks fr
 back to it, adds a box (put on the ball under the view's centre), and saves, telling the save's
 question to update the scene camera; the test checks the saved scene, the orthographic view's
 sizes against the analytic ones and the bookmark's view against the first.
+A seventh run selects the ball, exports it with File > Export selection (its dialog, a
+resolution typed in, Export), and checks the .glb it writes (the ball's box, its material, the
+notice's triangle count, no temporary file left) and, from window shots, the dialog and the
+progress bar shown while the export runs on its thread.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -511,6 +515,104 @@ def gizmo_run(rmsc, source, tmp, xvfb_run, check):
           all(abs(a - b) < 1e-3 for a, b in zip(camera.get("up", []), [0, 0, -1])), camera)
 
 
+def glb_summary(path):
+    """The JSON of a .glb and the box of its positions (the accessors' min and max)."""
+    data = open(path, "rb").read()
+    magic, version, length = struct.unpack("<4sII", data[:12])
+    assert magic == b"glTF" and version == 2 and length == len(data), (magic, version, length)
+    json_length, kind = struct.unpack("<I4s", data[12:20])
+    assert kind == b"JSON", kind
+    doc = json.loads(data[20:20 + json_length])
+    lo, hi = [1e30] * 3, [-1e30] * 3
+    for primitive in doc["meshes"][0]["primitives"]:
+        accessor = doc["accessors"][primitive["attributes"]["POSITION"]]
+        lo = [min(a, b) for a, b in zip(lo, accessor["min"])]
+        hi = [max(a, b) for a, b in zip(hi, accessor["max"])]
+    triangles = sum(doc["accessors"][p["indices"]]["count"] // 3
+                    for p in doc["meshes"][0]["primitives"])
+    return doc, lo, hi, triangles
+
+
+# Window-shot rectangles of the seventh run: the export dialog's title bar, and the progress bar of
+# the export's window at the bottom right of the view.
+DIALOG_TITLE_BOX = (80, 58, 560, 72)
+PROGRESS_BAR_BOX = (180, 300, 430, 322)
+
+
+def near_colour_pixels(shot, box, colours, tolerance=10):
+    """Pixels in box (x0, y0, x1, y1) within `tolerance` of one of `colours` (RGB) per channel."""
+    width, height, channels, rows = shot
+    count = 0
+    for y in range(box[1], box[3]):
+        for x in range(box[0], box[2]):
+            pixel = rows[y][x * channels:x * channels + 3]
+            if any(all(abs(p - c) <= tolerance for p, c in zip(pixel, colour)) for colour in colours):
+                count += 1
+    return count
+
+
+def dialog_pixels(shot):
+    """Dear ImGui's active title bar blue (41, 74, 122) where the export dialog's title is."""
+    return near_colour_pixels(shot, DIALOG_TITLE_BOX, [(41, 74, 122)], 6)
+
+
+def progress_pixels(shot):
+    """A progress bar: its frame (39, 57, 83) or its fill (230, 179, 0)."""
+    return near_colour_pixels(shot, PROGRESS_BAR_BOX, [(39, 57, 83), (230, 179, 0)])
+
+
+def export_run(rmsc, source, tmp, xvfb_run, check):
+    """The seventh run (tests/e2e/viewer_export_script.txt): File > Export selection of the ball,
+    its dialog, its progress window and the file it writes."""
+    folder = os.path.join(tmp, "export")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    original = open(scene).read()
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_export_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    run = run_viewer(xvfb_run, rmsc, scene, script)
+    check("seventh run: viewer exits 0", run.returncode == 0, run.returncode)
+    keep = os.environ.get("RMSC_E2E_KEEP")
+    if keep:
+        shutil.copytree(folder, keep, dirs_exist_ok=True)
+    notice = re.search(r"rmsc view: exported /sdf/children/0 to (.*ball\.glb): (\d+) triangles",
+                       run.stderr)
+    check("the export's notice names the ball's node and the file", notice is not None,
+          run.stderr[-2000:])
+    glb = os.path.join(folder, "ball.glb")
+    check("File > Export selection wrote the .glb", os.path.exists(glb))
+    if os.path.exists(glb):
+        doc, lo, hi, triangles = glb_summary(glb)
+        # The ball alone (radius 0.5 at the origin), not the base below it.
+        check("the mesh is the ball: its box is [-0.5, 0.5] on every axis",
+              all(abs(a + 0.5) < 0.01 for a in lo) and all(abs(b - 0.5) < 0.01 for b in hi), (lo, hi))
+        check("with the triangles the notice counted",
+              notice is not None and int(notice.group(2)) == triangles, triangles)
+        names = [m.get("name") for m in doc.get("materials", [])]
+        check("and the ball's material only", names == ["red"], names)
+    leftovers = [f for f in os.listdir(folder) if f.startswith("ball") and f != "ball.glb"]
+    check("no temporary file is left beside it", leftovers == [], leftovers)
+    check("the export did not change the scene file", open(scene).read() == original)
+    shots = {}
+    for name in ("dialog", "progress", "done"):
+        path = os.path.join(folder, name + ".png")
+        check(f"seventh run: window shot {name} written", os.path.exists(path))
+        if os.path.exists(path):
+            shots[name] = read_png(path)
+    if "dialog" in shots and "progress" in shots:
+        check("the dialog is open before Export", dialog_pixels(shots["dialog"]) > 2000,
+              dialog_pixels(shots["dialog"]))
+        check("and closed once the export runs", dialog_pixels(shots["progress"]) < 50,
+              dialog_pixels(shots["progress"]))
+    if "progress" in shots and "done" in shots:
+        check("while it runs, its progress bar is at the bottom right of the view",
+              progress_pixels(shots["progress"]) > 2000, progress_pixels(shots["progress"]))
+        check("and gone once it has ended", progress_pixels(shots["done"]) < 50,
+              progress_pixels(shots["done"]))
+
+
 def main():
     rmsc, source = sys.argv[1], sys.argv[2]
     if len(sys.argv) > 3 and sys.argv[3] in ("--burst", "--timing"):
@@ -607,6 +709,7 @@ def main():
         large_scene_run(rmsc, source, tmp, xvfb_run, check)
         select_run(rmsc, source, tmp, xvfb_run, check)
         gizmo_run(rmsc, source, tmp, xvfb_run, check)
+        export_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

@@ -1,6 +1,6 @@
-// rmsc export's mesh (export/sdf_export.hpp): closed, consistently oriented 2-manifolds with
-// every vertex within 0.1 voxel of the SDF surface for every bounded primitive, every operation
-// and the modifiers; sharp box corners and subtraction rims; the cell components of manifold
+// rmsc export's mesh (export/sdf_export.hpp): closed, consistently oriented 2-manifolds without
+// self-intersections, every vertex within 0.1 voxel of the SDF surface, for every bounded
+// primitive, every operation and the modifiers (export_checks.hpp); sharp box corners and subtraction rims; the cell components of manifold
 // dual contouring; materials and colours; and the refusals.
 #include "export/dual_contouring.hpp"
 #include "export/mesh_writers.hpp"
@@ -10,6 +10,7 @@
 #include "sdf/primitives.hpp"
 
 #include "export/cell_components.hpp"
+#include "export_checks.hpp"
 #include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -23,68 +24,13 @@ using namespace rmsc;
 
 namespace {
 
+using test::atResolution;
+using test::expectGoodMesh;
+using test::Exported;
+using test::exportOf;
+
 Scene sceneOf(const std::string& sdfJson, const std::string& extra = "") {
-    Diagnostics diagnostics;
-    std::optional<Scene> scene = parseScene(
-        R"({"version": 1, )" + extra + R"("sdf": )" + sdfJson + "}", "t.json", diagnostics);
-    EXPECT_TRUE(scene) << diagnostics.format();
-    return scene ? std::move(*scene) : Scene{};
-}
-
-struct Exported {
-    SdfExport mesh;
-    ExportField field;
-};
-
-std::optional<Exported> exportOf(const Scene& scene, ExportSettings settings,
-                                 Diagnostics* errors = nullptr) {
-    Diagnostics diagnostics;
-    std::optional<SdfExport> mesh = exportSdf(scene, settings, diagnostics);
-    if (errors) *errors = diagnostics;
-    if (!mesh) return std::nullopt;
-    std::optional<ExportField> field =
-        exportField(scene, settings.node, settings.bounds, diagnostics);
-    if (!field) return std::nullopt;
-    return Exported{std::move(*mesh), std::move(*field)};
-}
-
-// The largest |distance| at a vertex, in voxels.
-float maxVertexError(const Exported& e) {
-    float worst = 0.0f;
-    for (glm::vec3 p : e.mesh.mesh.positions)
-        worst = std::max(worst, std::abs(e.field.field.distance(p)));
-    return worst / e.mesh.grid.voxel;
-}
-
-// Closed 2-manifold, outward (the enclosed volume is positive), every vertex on the surface.
-void expectGoodMesh(const Scene& scene, ExportSettings settings, const std::string& what,
-                    float maxError = 0.1f) {
-    const std::optional<Exported> e = exportOf(scene, settings);
-    ASSERT_TRUE(e) << what;
-    const ExportMesh& mesh = e->mesh.mesh;
-    ASSERT_GT(mesh.triangles.size(), 20u) << what;
-    const MeshTopology topology = meshTopology(mesh);
-    EXPECT_TRUE(topology.closedManifold())
-        << what << ": " << topology.boundaryEdges << " boundary, " << topology.overSharedEdges
-        << " over-shared, " << topology.misorientedEdges << " misoriented edges, "
-        << topology.pinchedVertices << " pinched vertices, " << topology.degenerateTriangles
-        << " degenerate triangles";
-    // The divergence theorem: 1/6 sum a . (b x c) is the volume, positive when the triangles
-    // face outwards.
-    double volume = 0.0;
-    for (const auto& t : mesh.triangles)
-        volume += glm::dot(glm::dvec3(mesh.positions[t[0]]),
-                           glm::cross(glm::dvec3(mesh.positions[t[1]]),
-                                      glm::dvec3(mesh.positions[t[2]]))) /
-                  6.0;
-    EXPECT_GT(volume, 0.0) << what;
-    EXPECT_LE(maxVertexError(*e), maxError) << what;
-}
-
-ExportSettings atResolution(int n) {
-    ExportSettings settings;
-    settings.resolution = n;
-    return settings;
+    return test::exportSceneOf(sdfJson, extra);
 }
 
 bool unbounded(PrimitiveId id) {
@@ -239,13 +185,16 @@ TEST(ExportMesh, BoxCornersStaySharp) {
 }
 
 // A cylinder cut out of a box: the rims where the hole meets the top and bottom faces are chains
-// of vertices on them (within 0.1 voxel of the circles), one per cell the rim crosses.
+// of vertices on them (within 0.1 voxel of the circles), one per cell the rim crosses. This is
+// about the cells' own vertices: the adaptive octree, which joins cells along the rims too, is
+// off (tolerance 0).
 TEST(ExportMesh, SubtractionRimStaysSharp) {
     const Scene scene = sceneOf(R"({"op": "subtraction", "children": [
         {"shape": "box", "half_extents": [0.5, 0.2, 0.5]},
         {"shape": "capped_cylinder", "radius": 0.27, "half_height": 0.5}]})");
     ExportSettings settings;
     settings.voxel = 1.0f / 30.0f;
+    settings.tolerance = 0.0f;
     const std::optional<Exported> e = exportOf(scene, settings);
     ASSERT_TRUE(e);
     const float voxel = e->mesh.grid.voxel;

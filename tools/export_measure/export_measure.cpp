@@ -5,8 +5,8 @@
 // plain marching cubes on the same grid instead (vertices linearly interpolated on the crossed
 // edges, one polygon per cell component): a baseline for the table, not a feature of rmsc.
 //
-//   rmsc_export_measure SCENE [--node P] [--resolution N | --voxel S] [--marching-cubes]
-//                       [--corner X,Y,Z]... [--threads N]
+//   rmsc_export_measure SCENE [--node P] [--resolution N | --voxel S] [--tolerance T]
+//                       [--marching-cubes] [--corner X,Y,Z]... [--threads N]
 // Prints one JSON object.
 #include "export/cell_components.hpp"
 #include "export/dual_contouring.hpp"
@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <random>
 #include <sstream>
 #include <string>
@@ -209,6 +210,8 @@ int main(int argc, char** argv) {
             settings.resolution = std::stoi(value), ++i;
         else if (arg == "--voxel")
             settings.voxel = std::stof(value), ++i;
+        else if (arg == "--tolerance")
+            settings.tolerance = std::stof(value), ++i;
         else if (arg == "--threads")
             threads = std::stoi(value), ++i;
         else if (arg == "--marching-cubes")
@@ -237,11 +240,14 @@ int main(int argc, char** argv) {
         return 1;
     }
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock(); // the process's CPU time, every thread's
+    std::clock_t mcCpuStart = 0;
     ExportMesh mesh;
     DcGrid grid;
     std::uint64_t estimate = 0;
     std::int64_t flips = 0;
-    double mcSeconds = 0.0; // marching cubes alone (its grid comes from a dual contouring run)
+    std::uint64_t uniform = 0; // dual contouring's triangles before the adaptive octree
+    double mcSeconds = 0.0;    // marching cubes alone (its grid comes from a dual contouring run)
     if (marching) {
         // The grid exportSdf would use, from a tiny export's settings.
         std::optional<SdfExport> probe = exportSdf(*scene, settings, diagnostics);
@@ -252,6 +258,7 @@ int main(int argc, char** argv) {
         grid = probe->grid;
         mcSeconds = -1.0;
         const auto mcStart = std::chrono::steady_clock::now();
+        mcCpuStart = std::clock();
         mesh = marchingCubes(field->field, grid, threads);
         mcSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - mcStart).count();
@@ -265,10 +272,13 @@ int main(int argc, char** argv) {
         grid = exported->grid;
         estimate = exported->estimatedTriangles;
         flips = exported->faceFlips;
+        uniform = exported->uniformTriangles;
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double elapsed = marching ? mcSeconds : seconds;
+    const double cpuSeconds =
+        double(std::clock() - (marching ? mcCpuStart : cpuStart)) / double(CLOCKS_PER_SEC);
     const float voxel = grid.voxel;
     double maxVertex = 0.0, sumVertex = 0.0;
     for (glm::vec3 p : mesh.positions) {
@@ -327,9 +337,13 @@ int main(int argc, char** argv) {
         {"boundary_edges", topology.boundaryEdges},
         {"misoriented_edges", topology.misorientedEdges},
         {"degenerate_triangles", topology.degenerateTriangles},
+        {"self_intersections", countSelfIntersections(mesh)},
         {"seconds", elapsed},
+        {"cpu_seconds", cpuSeconds},
         {"estimated_triangles", estimate},
         {"face_flips", flips},
+        {"uniform_triangles", uniform},
+        {"tolerance", marching ? 0.0f : settings.tolerance},
         {"threads", threads},
     };
     std::puts(out.dump().c_str());

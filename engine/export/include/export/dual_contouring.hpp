@@ -3,7 +3,10 @@
 // (Schaefer, Ju and Warren, "Manifold Dual Contouring", 2007), sampled sparsely: the grid is cut
 // into blocks of kDcBlock^3 cells, and a block whose centre's |distance| exceeds its half
 // diagonal times sqrt(2) (the steepest slope of the fields: the chamfer operations) holds no
-// surface and is never sampled further.
+// surface and is never sampled further. Quads that would pass through others become fans
+// around their edge's crossing (Ju and Udeshi 2006; export/quad_fans.hpp), so the mesh has no
+// self-intersections; then, with a tolerance, the adaptive octree collapses clusters of cells
+// where the surface is flat enough (export/adaptive_octree.hpp).
 #pragma once
 
 #include "export/export_mesh.hpp"
@@ -39,6 +42,12 @@ struct DcOptions {
     std::uint64_t maxTriangles = ~std::uint64_t(0);
     std::function<void(double fraction)> progress; // called from the worker threads, serialized
     const std::atomic<bool>* cancel = nullptr;     // set: stop soon, return cancelled
+    // The adaptive octree (Manifold Dual Contouring's vertex clustering,
+    // export/adaptive_octree.hpp): clusters of cells whose surface is flat to within `tolerance`
+    // voxels become one vertex, in nodes of up to 2^octreeLevels cells a side. 0: every cell keeps
+    // its vertices.
+    float tolerance = 0.0f;
+    int octreeLevels = 6;
 };
 
 struct DcResult {
@@ -49,6 +58,11 @@ struct DcResult {
     std::int64_t activeBlocks = 0;
     std::int64_t evaluations = 0; // distance evaluations in all
     std::int64_t faceFlips = 0;   // checkerboard faces whose rule was flipped (manifold repair)
+    std::uint64_t uniformTriangles = 0; // before the adaptive octree collapsed clusters
+    std::int64_t collapsedClusters = 0;
+    std::int64_t fannedQuads = 0;       // quads made fans so they do not intersect others
+    std::int64_t verticesMovedIn = 0;   // of fans that did, moved back into their cells
+    std::int64_t selfIntersections = 0; // pairs of the uniform mesh's left intersecting
 };
 
 DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& options = {});

@@ -1,6 +1,7 @@
 // The triangle mesh an export makes, before it is written: positions in world units, unit
 // normals from the SDF gradient, the blended base colour and the dominant material of each
-// vertex, and each triangle's material (counter-clockwise seen from outside).
+// vertex, and each triangle's material (counter-clockwise seen from outside); and the checks
+// made on it (topology, self-intersections).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -36,5 +37,13 @@ struct MeshTopology {
 };
 
 MeshTopology meshTopology(const ExportMesh& mesh);
+
+// Pairs of triangles that share no vertex and yet cross or overlap: a mesh free of them does not
+// pass through itself. Tested exactly (Moller's triangle-triangle test, in double precision)
+// for the pairs whose boxes meet in a uniform grid. Returns how many; `pairs`, when given, gets
+// the first `keep` of them (triangle indices).
+std::int64_t countSelfIntersections(const ExportMesh& mesh,
+                                    std::vector<std::array<std::uint32_t, 2>>* pairs = nullptr,
+                                    std::size_t keep = 16);
 
 } // namespace rmsc

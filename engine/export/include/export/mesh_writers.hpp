@@ -25,11 +25,14 @@ struct MeshFile {
     std::string name;                       // the glTF node's and mesh's name
 };
 
-// The glTF document: one node, one mesh with one primitive per material (sharing POSITION,
-// NORMAL and, where smooth operations blended the base colour, COLOR_0), one material per rmsc
-// material. COLOR_0 is the blended colour divided by the material's base colour, so the base
-// colour glTF computes (factor times COLOR_0) is the blended one; without COLOR_0 a viewer
-// shows each material's own colour.
+// The glTF document: one node, one mesh with one primitive per material, one material per rmsc
+// material. Each primitive has vertices of its own (POSITION, NORMAL), so a vertex where two
+// materials meet is in both. A primitive where smooth operations blended the base colour away
+// from its material's also has COLOR_0, the blended linear base colour itself, and its
+// material's baseColorFactor is white: glTF multiplies the two (glTF 2.0, "Meshes" and
+// "Metallic-Roughness Material"), so the base colour it shows is the blended one, whatever the
+// material's own colour (a channel that is 0 in the material's colour stays blendable). A
+// primitive without blending keeps the material's colour as its factor and has no COLOR_0.
 std::string gltfBytes(const MeshFile& file, bool binary);
 std::string objText(const MeshFile& file, const std::string& mtlFileName);
 std::string mtlText(const MeshFile& file);

@@ -22,13 +22,17 @@ namespace rmsc {
 
 // Cells along the longest side of the content's box when neither size is given.
 inline constexpr int kExportDefaultResolution = 128;
+// How far, in voxels, the adaptive octree may let the surface of a collapsed cluster move from
+// the SDF's (export/dual_contouring.hpp, DcOptions::tolerance); 0 keeps every cell's vertex.
+inline constexpr float kExportDefaultTolerance = 0.1f;
 
 struct ExportSettings {
     std::string node;              // JSON pointer of the node; "" or "/sdf": the whole tree
     std::optional<float> voxel;    // cell size in world units
     std::optional<int> resolution; // cells along the longest side (when voxel is not given)
     std::optional<Aabb> bounds;    // world box: clips the content (needed for unbounded content)
-    int threads = 0;               // 0: every core
+    float tolerance = kExportDefaultTolerance; // the adaptive octree's, in voxels (0: off)
+    int threads = 0;                           // 0: every core
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;
 };
@@ -44,7 +48,12 @@ struct SdfExport {
     std::int64_t evaluations = 0;
     std::uint64_t estimatedTriangles = 0; // what the up-front limit check estimated
     std::int64_t faceFlips = 0;           // checkerboard faces flipped to keep it manifold
-    bool cancelled = false; // stopped by settings.cancel: nothing else is set
+    std::uint64_t uniformTriangles = 0;   // before the adaptive octree collapsed clusters
+    std::int64_t collapsedClusters = 0;   // by the adaptive octree
+    std::int64_t fannedQuads = 0;         // made fans so they do not intersect others
+    std::int64_t verticesMovedIn = 0;     // of fans, moved towards their cells for the same
+    std::int64_t untangledLeft = 0;       // intersecting pairs the untangling left
+    bool cancelled = false;               // stopped by settings.cancel: nothing else is set
 };
 
 // nullopt with the problem in `diagnostics` (file: the scene file; location: the pointer of the
@@ -52,6 +61,12 @@ struct SdfExport {
 // bounds, over limits::kExportVoxels or limits::kExportTriangles, or has no surface.
 std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& settings,
                                    Diagnostics& diagnostics);
+
+// The node's content in the world as exportSdf bounds it: its box, or what makes it unbounded;
+// a shell "bound" on the node bounds it. nullopt, with the problem in `diagnostics`, when the
+// scene has no SDF tree or no node at the pointer.
+std::optional<SdfBounds> exportContentBounds(const Scene& scene, const std::string& node,
+                                             Diagnostics& diagnostics);
 
 // The distance and surface of the node as exportSdf samples them (compiled in its place,
 // clipped to `clip` when given), for measuring a mesh against the SDF. nullopt as above.
