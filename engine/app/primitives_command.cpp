@@ -40,9 +40,10 @@ void printParam(const SdfParamSpec& p) {
         if (count > 1) value = "[" + value + "]";
     }
     const std::string range = rangeText(p.range);
-    std::printf("    %-14s %-16s %s%s%s\n", std::string(p.key).c_str(), value.c_str(),
-                range.empty() ? "" : "range ", range.c_str(),
-                ("  " + std::string(p.description)).c_str());
+    const std::string_view unit = unitPhrase(p.range.unit);
+    std::printf("    %-14s %-16s %s%s%s%s%s\n", std::string(p.key).c_str(), value.c_str(),
+                range.empty() ? "" : "range ", range.c_str(), unit.empty() ? "" : ", ",
+                std::string(unit).c_str(), ("  " + std::string(p.description)).c_str());
 }
 
 } // namespace
@@ -74,8 +75,10 @@ int runPrimitives(const ParsedArgs& args) {
                 value += text;
             }
             if (p.components > 1) value = "[" + value + "]";
-            std::printf("    %-14s %-16s range [%g, %g]  %s\n", std::string(p.name).c_str(),
+            const std::string_view unit = unitPhrase(p.unit);
+            std::printf("    %-14s %-16s range [%g, %g]%s%s  %s\n", std::string(p.name).c_str(),
                         value.c_str(), double(p.minValue), double(p.maxValue),
+                        unit.empty() ? "" : ", ", std::string(unit).c_str(),
                         std::string(p.description).c_str());
         }
     }

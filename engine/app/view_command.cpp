@@ -1,6 +1,7 @@
 // rmsc view: the interactive viewer and scene editor (window, editor panels, live rendering).
 #include "commands.hpp"
 #include "core/limits.hpp"
+#include "editor/ui_scale.hpp"
 #include "viewer/viewer.hpp"
 
 #include <cstdio>
@@ -18,6 +19,9 @@ const OptionSpec kOptions[] = {
     {"--stats", nullptr, nullptr,
      "log, for each change, the UI frame times until the view is refined and the time from the "
      "last input to the refined image; and all frames' times at exit"},
+    {"--ui-scale", nullptr, "S",
+     "scale of the panels' text and sizes, 0.5 to 4 (default: the display's content scale, "
+     "2 on a display set to 200%)"},
     {"--embedded-shaders", nullptr, nullptr,
      "use the shaders built into the binary; do not watch the source shaders folder"},
     kSandboxOption,
@@ -29,13 +33,16 @@ const CommandSpec kViewSpec = {
     "view",
     "[SCENE]",
     "open the viewer and scene editor in a window",
-    "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--script FILE] [--stats] [--sandbox DIR]",
+    "rmsc view [SCENE] [--size WxH] [--target-ms MS] [--ui-scale S] [--script FILE] [--stats] "
+    "[--sandbox DIR]",
     "Opens SCENE (a .json scene, or a .gltf/.glb model; without SCENE, the built-in demo) in a\n"
     "window with an editor: fly with right mouse + W/A/S/D, Q/E roll, Space / Left Shift up and\n"
     "down, the wheel sets the speed, Shift is fast; Alt + drag orbits the selection, F frames it.\n"
     "Click to select, G moves (then X/Y/Z for an axis), Ctrl+Z / Ctrl+Shift+Z undo and redo,\n"
-    "Ctrl+S saves (atomically, keeping SCENE.bak), F12 writes a screenshot. The scene file and\n"
-    "the shaders are watched and reloaded when they change on disk.",
+    "Ctrl+S saves (atomically, keeping SCENE.bak), F12 writes a screenshot, Shift+A searches\n"
+    "everything that can be added, F1 lists every shortcut. Drop a .gltf/.glb on the window to\n"
+    "add it, a .json to open it. The scene file and the shaders are watched and reloaded when\n"
+    "they change on disk.",
     kOptions,
     1};
 
@@ -57,6 +64,19 @@ int runView(const ParsedArgs& args) {
             return kExitUsage;
         }
         options.targetMilliseconds = float(ms);
+    }
+    if (args.has("--ui-scale")) {
+        const std::string text = args.get("--ui-scale", "");
+        char* end = nullptr;
+        const double scale = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' ||
+            !(scale >= editor::kMinUiScale && scale <= editor::kMaxUiScale)) {
+            std::fprintf(stderr,
+                         "rmsc view: --ui-scale: expected a scale from %g to %g, got '%s'\n",
+                         double(editor::kMinUiScale), double(editor::kMaxUiScale), text.c_str());
+            return kExitUsage;
+        }
+        options.uiScale = float(scale);
     }
     options.script = args.get("--script", "");
     options.watchShaders = !args.has("--embedded-shaders");

@@ -30,7 +30,8 @@ std::vector<InputEvent> InputQueue::takeFrame() {
             if (std::find(seen.begin(), seen.end(), e.code) != seen.end()) break;
         }
         // Once an event that reads the modifiers is taken, the frame's modifiers are its.
-        if (e.kind != Kind::Marker && haveMods && e.mods != mods) break;
+        const bool modless = e.kind == Kind::Marker || e.kind == Kind::Drop;
+        if (!modless && haveMods && e.mods != mods) break;
         if (e.kind == Kind::Cursor && buttonMoved) break;
         if (e.kind == Kind::Char && (focusMoved || focusMovedLastFrame_)) break;
 
@@ -46,7 +47,7 @@ std::vector<InputEvent> InputQueue::takeFrame() {
             const bool types = events_.size() > 1 && events_[1].kind == Kind::Char;
             focusMoved = focusMoved || !types;
         }
-        lastMods_ = e.mods;
+        if (e.kind != Kind::Drop) lastMods_ = e.mods;
         if (readsModifiers(e)) {
             haveMods = true;
             mods = e.mods;

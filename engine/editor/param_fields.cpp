@@ -1,6 +1,7 @@
 // The inspector's field ranges from the catalogue rows (see param_fields.hpp).
 #include "editor/param_fields.hpp"
 
+#include "core/number_text.hpp"
 #include "sdf/operations.hpp"
 
 #include <algorithm>
@@ -57,6 +58,56 @@ FloatFieldRange primitiveFieldRange(const ParamSpec& param) {
 
 FloatFieldRange smoothnessFieldRange() {
     return floatFieldRange(smoothnessParam().range);
+}
+
+ParamRange primitiveParamRange(const ParamSpec& param) {
+    return closedRange(param.minValue, param.maxValue, param.unit);
+}
+
+namespace {
+
+std::string numberText(double value) {
+    const float asFloat = float(value);
+    return double(asFloat) == value ? shortestNumberText(asFloat) : shortestNumberText(value);
+}
+
+} // namespace
+
+std::string rangeText(const ParamRange& range) {
+    const bool low = std::isfinite(range.min), high = std::isfinite(range.max);
+    if (low && high)
+        return std::string(range.minExclusive ? "(" : "[") + numberText(range.min) + ", " +
+               numberText(range.max) + (range.maxExclusive ? ")" : "]");
+    if (low) return std::string(range.minExclusive ? "> " : ">= ") + numberText(range.min);
+    if (high) return std::string(range.maxExclusive ? "< " : "<= ") + numberText(range.max);
+    return "any";
+}
+
+std::string fieldHelp(std::string_view description, const ParamRange& range) {
+    std::string out(description);
+    if (!out.empty()) out += "\n";
+    if (range.unit != Unit::None) out += "Unit: " + std::string(unitName(range.unit)) + "\n";
+    return out + "Range: " + rangeText(range);
+}
+
+ClampedValue clampToField(float value, const FloatFieldRange& range) {
+    if (std::isnan(value)) return {range.min, true};
+    const float clamped = std::clamp(value, range.min, range.max);
+    return {clamped, clamped != value};
+}
+
+ClampedInt clampToField(int value, const IntFieldRange& range) {
+    const int clamped = std::clamp(value, range.min, range.max);
+    return {clamped, clamped != value};
+}
+
+std::string clampNotice(const ParamRange& range) {
+    const std::string_view symbol = unitSymbol(range.unit);
+    return "clamped to " + rangeText(range) + (symbol.empty() ? "" : " " + std::string(symbol));
+}
+
+bool clampNoticeShown(double clampedAt, double now) {
+    return clampedAt >= 0.0 && now >= clampedAt && now - clampedAt < kClampNoticeSeconds;
 }
 
 } // namespace rmsc::editor

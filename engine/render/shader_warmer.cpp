@@ -2,6 +2,7 @@
 // at a time.
 #include "render/shader_warmer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 
@@ -40,6 +41,9 @@ void ShaderWarmer::request(const PreparedScene& scene, const std::vector<std::st
             if (!warm_.contains(map) && !failed_.contains(map) && building_ != map)
                 wanted.push_back(map);
         if (pending_ && pending_->sdfMaps == wanted) return; // the scene too: same structure
+        // A new request: the map being built counts in, as it finishes first.
+        progressDone_ = 0;
+        progressTotal_ = int(wanted.size()) + (building_.empty() ? 0 : 1);
         if (wanted.empty())
             pending_.reset();
         else
@@ -71,6 +75,16 @@ std::string ShaderWarmer::takeError() {
 std::size_t ShaderWarmer::finishedCount() const {
     std::lock_guard lock(mutex_);
     return finished_;
+}
+
+ShaderWarmer::Progress ShaderWarmer::progress() const {
+    std::lock_guard lock(mutex_);
+    if (progressTotal_ <= 0 || (building_.empty() && !pending_)) return {};
+    const double seconds =
+        building_.empty()
+            ? 0.0
+            : std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart_).count();
+    return {std::min(progressDone_, progressTotal_), progressTotal_, seconds};
 }
 
 double ShaderWarmer::buildMs(const std::string& sdfMap) const {
@@ -112,6 +126,7 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
             scene = pending_->scene;
             if (pending_->sdfMaps.empty()) pending_.reset();
             building_ = sdfMap;
+            buildStart_ = std::chrono::steady_clock::now();
         }
         const auto start = std::chrono::steady_clock::now();
         std::string failure;
@@ -137,6 +152,8 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
                 error_ = "a background shader build failed: " + failure;
             }
             ++finished_;
+            ++progressDone_;
+            if (!pending_) progressDone_ = progressTotal_ = 0; // the request is done
             building_.clear();
         }
         changed_.notify_all();

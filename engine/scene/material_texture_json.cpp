@@ -1,6 +1,9 @@
 // Material texture fields of the scene format (see material_texture_json.hpp).
 #include "material_texture_json.hpp"
 
+#include "param_json.hpp"
+#include "scene/material_spec.hpp"
+
 namespace rmsc {
 namespace {
 
@@ -42,12 +45,12 @@ void readTexture(const JsonReader& reader, const Json& value, const std::string&
         if (!name) return;
         texture.file = *name;
         readNumberField(reader, value, pointer, "scale", &texture.scale,
-                        NumberRange::openClosed(0.0, 1e4));
+                        numberRange(kTextureScaleRange));
         readNumberField(reader, value, pointer, "sharpness", &texture.sharpness,
-                        NumberRange::closed(1.0, 64.0));
+                        numberRange(kTextureSharpnessRange));
         if (hasStrength)
             readNumberField(reader, value, pointer, "strength", &texture.strength,
-                            NumberRange::closed(0.0, 10.0));
+                            numberRange(kNormalStrengthRange));
     }
     const std::string filePointer = value.is_string() ? pointer : childPointer(pointer, "file");
     texture.pointer = filePointer;

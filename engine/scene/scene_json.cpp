@@ -10,6 +10,8 @@
 #include "material_texture_json.hpp"
 #include "param_json.hpp"
 #include "scene/camera_spec.hpp"
+#include "scene/material_spec.hpp"
+#include "scene/render_spec.hpp"
 #include "sdf_json.hpp"
 #include "transform_json.hpp"
 
@@ -133,15 +135,16 @@ void readRender(const SceneReader& r, const Json& object, RenderSettings& render
     renderKeys.insert(renderKeys.end(), kRenderLightingKeys.begin(), kRenderLightingKeys.end());
     warnUnknownKeys(r.json, object, pointer, renderKeys);
     readRenderLighting(r.json, object, render);
-    readIntegerField(r.json, object, pointer, "max_steps", &render.maxSteps, 1,
-                     limits::kMarchSteps);
+    readIntegerField(r.json, object, pointer, "max_steps", &render.maxSteps,
+                     int(kMaxStepsRange.min), int(kMaxStepsRange.max));
     readNumberField(r.json, object, pointer, "max_distance", &render.maxDistance,
-                    NumberRange::openClosed(0.0, 1e5));
+                    numberRange(kMaxDistanceRange));
     readNumberField(r.json, object, pointer, "surface_epsilon", &render.surfaceEpsilon,
-                    NumberRange::openClosed(0.0, 1.0));
+                    numberRange(kSurfaceEpsilonRange));
     readColorField(r.json, object, pointer, "background", &render.background);
     readColorField(r.json, object, pointer, "ambient", &render.ambient);
-    readNumberField(r.json, object, pointer, "exposure", &render.exposure, NumberRange::above(0.0));
+    readNumberField(r.json, object, pointer, "exposure", &render.exposure,
+                    numberRange(kExposureRange));
 }
 
 void readMaterials(SceneReader& r, const Json& object, std::vector<Material>& materials) {
@@ -168,9 +171,9 @@ void readMaterials(SceneReader& r, const Json& object, std::vector<Material>& ma
             readMaterialTextures(r.json, value, materialPointer, r.sceneFolder, material);
             readColorField(r.json, value, materialPointer, "base_color", &material.baseColor);
             readNumberField(r.json, value, materialPointer, "metallic", &material.metallic,
-                            NumberRange::closed(0.0, 1.0));
+                            numberRange(kMetallicRange));
             readNumberField(r.json, value, materialPointer, "roughness", &material.roughness,
-                            NumberRange::closed(0.0, 1.0));
+                            numberRange(kRoughnessRange));
             readColorField(r.json, value, materialPointer, "emissive", &material.emissive);
         }
         materials.push_back(std::move(material));

@@ -15,6 +15,8 @@
 #include "scene/camera_spec.hpp"
 #include "scene/environment_spec.hpp"
 #include "scene/light_spec.hpp"
+#include "scene/material_spec.hpp"
+#include "scene/render_spec.hpp"
 #include "scene/scene_json.hpp"
 #include "sdf/modifiers.hpp"
 #include "sdf/operations.hpp"
@@ -197,10 +199,10 @@ Json textureRef(const std::string& def) {
 std::vector<Key> textureKeys(bool normalMap) {
     std::vector<Key> keys = {
         {"file", path("an image file")},
-        {"scale", number(NumberRange::openClosed(0.0, 1e4))},
-        {"sharpness", number(NumberRange::closed(1.0, 64.0))},
+        {"scale", number(numberRange(kTextureScaleRange))},
+        {"sharpness", number(numberRange(kTextureSharpnessRange))},
     };
-    if (normalMap) keys.push_back({"strength", number(NumberRange::closed(0.0, 10.0))});
+    if (normalMap) keys.push_back({"strength", number(numberRange(kNormalStrengthRange))});
     return keys;
 }
 
@@ -267,12 +269,12 @@ std::vector<ObjectDef> objectDefs() {
          kScene,
          "/render",
          Json::object(),
-         {{"max_steps", integer(1, limits::kMarchSteps)},
-          {"max_distance", number(NumberRange::openClosed(0.0, 1e5))},
-          {"surface_epsilon", number(NumberRange::openClosed(0.0, 1.0))},
+         {{"max_steps", integer(int(kMaxStepsRange.min), int(kMaxStepsRange.max))},
+          {"max_distance", number(numberRange(kMaxDistanceRange))},
+          {"surface_epsilon", number(numberRange(kSurfaceEpsilonRange))},
           {"background", color()},
           {"ambient", color()},
-          {"exposure", number(NumberRange::above(0.0))},
+          {"exposure", number(numberRange(kExposureRange))},
           {"shadows", ref("shadows")},
           {"ao", ref("ao")},
           {"fxaa", boolean()}},
@@ -283,23 +285,23 @@ std::vector<ObjectDef> objectDefs() {
          "/render/shadows",
          Json::object(),
          {{"enabled", boolean()},
-          {"steps", integer(1, 256)},
-          {"softness", number(NumberRange::closed(0.001, 1.0))},
-          {"min_distance", number(NumberRange::openClosed(0.0, 10.0))},
-          {"max_distance", number(NumberRange::openClosed(0.0, 1e4))},
-          {"map_size", integer(256, 4096)},
-          {"pcf_radius", integer(0, 3)},
-          {"normal_offset", number(NumberRange::closed(0.0, 10.0))},
-          {"slope_bias", number(NumberRange::closed(0.0, 10.0))}},
+          {"steps", integer(int(kShadowStepsRange.min), int(kShadowStepsRange.max))},
+          {"softness", number(numberRange(kShadowSoftnessRange))},
+          {"min_distance", number(numberRange(kShadowMinDistanceRange))},
+          {"max_distance", number(numberRange(kShadowMaxDistanceRange))},
+          {"map_size", integer(int(kShadowMapSizeRange.min), int(kShadowMapSizeRange.max))},
+          {"pcf_radius", integer(int(kShadowPcfRadiusRange.min), int(kShadowPcfRadiusRange.max))},
+          {"normal_offset", number(numberRange(kShadowNormalOffsetRange))},
+          {"slope_bias", number(numberRange(kShadowSlopeBiasRange))}},
          {},
          "shadow settings"},
         {"ao",
          kScene,
          "/render/ao",
          Json::object(),
-         {{"samples", integer(0, 16)},
-          {"distance", number(NumberRange::openClosed(0.0, 10.0))},
-          {"strength", number(NumberRange::closed(0.0, 4.0))}},
+         {{"samples", integer(int(kAoSamplesRange.min), int(kAoSamplesRange.max))},
+          {"distance", number(numberRange(kAoDistanceRange))},
+          {"strength", number(numberRange(kAoStrengthRange))}},
          {},
          "ambient occlusion settings"},
         {"material",
@@ -307,8 +309,8 @@ std::vector<ObjectDef> objectDefs() {
          "/materials/m",
          Json::object(),
          {{"base_color", color()},
-          {"metallic", number(NumberRange::closed(0.0, 1.0))},
-          {"roughness", number(NumberRange::closed(0.0, 1.0))},
+          {"metallic", number(numberRange(kMetallicRange))},
+          {"roughness", number(numberRange(kRoughnessRange))},
           {"emissive", color()},
           {"base_color_texture", textureRef("texture")},
           {"normal_texture", textureRef("normal_texture")},

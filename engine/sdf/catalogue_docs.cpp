@@ -39,6 +39,7 @@ std::string paramText(const ParamSpec& param) {
     }
     out += ", range [" + number(param.minValue) + ", " + number(param.maxValue) + "]";
     if (param.components == 3) out += " per component";
+    if (param.unit != Unit::None) out += ", " + std::string(unitPhrase(param.unit));
     out += " — " + cell(param.description);
     return out;
 }
@@ -105,6 +106,7 @@ std::string paramText(const SdfParamSpec& spec) {
             out += " per component";
         if (spec.type == ParamType::Points) out += " per coordinate";
     }
+    if (spec.range.unit != Unit::None) out += ", " + std::string(unitPhrase(spec.range.unit));
     return out + " — " + cell(spec.description);
 }
 

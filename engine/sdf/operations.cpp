@@ -57,7 +57,7 @@ constexpr SdfParamSpec kSmoothness = {
     .required = true,
     // At least a millimetre: the seam's formulas divide by it, and a tiny float
     // (1e-38) overflows them on the GPU.
-    .range = closedRange(1e-3, std::numeric_limits<double>::infinity()),
+    .range = closedRange(1e-3, std::numeric_limits<double>::infinity(), Unit::Metres),
     .description = "the width of the seam, in world units: the smooth minimum's `k`, the "
                    "chamfer's size, the rounding radius"};
 

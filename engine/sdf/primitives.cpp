@@ -19,6 +19,9 @@ using glm::vec3;
 
 constexpr float kBig = 1.0e4f; // upper bound of lengths in the scene format
 
+// The rows' unit column: Metres, Degrees, Count or None.
+using enum Unit;
+
 vec3 v3(const float* p) {
     return vec3(p[0], p[1], p[2]);
 }
@@ -80,174 +83,217 @@ float sdEllipsoid(vec3 p, const float* a) {
     return k1 > 0.0f ? k0 * (k0 - 1.0f) / k1 : -std::min(r.x, std::min(r.y, r.z));
 }
 
-constexpr ParamSpec kSphere[] = {{"radius", 1, {0.5f}, 0.0f, kBig, "radius"}};
+constexpr ParamSpec kSphere[] = {{"radius", 1, {0.5f}, 0.0f, kBig, "radius", Metres}};
 constexpr ParamSpec kBox[] = {
-    {"half_extents", 3, {0.5f, 0.5f, 0.5f}, 0.0f, kBig, "half the size along x, y, z"}};
+    {"half_extents", 3, {0.5f, 0.5f, 0.5f}, 0.0f, kBig, "half the size along x, y, z", Metres}};
 constexpr ParamSpec kRoundBox[] = {
-    {"half_extents", 3, {0.5f, 0.5f, 0.5f}, 0.0f, kBig, "half the size along x, y, z"},
-    {"radius", 1, {0.1f}, 0.0f, kBig, "edge rounding, taken from inside the box"}};
+    {"half_extents", 3, {0.5f, 0.5f, 0.5f}, 0.0f, kBig, "half the size along x, y, z", Metres},
+    {"radius", 1, {0.1f}, 0.0f, kBig, "edge rounding, taken from inside the box", Metres}};
 constexpr ParamSpec kTorus[] = {
-    {"major_radius", 1, {0.5f}, 0.0f, kBig, "radius of the ring (in the xz plane)"},
-    {"minor_radius", 1, {0.15f}, 0.0f, kBig, "radius of the tube"}};
+    {"major_radius", 1, {0.5f}, 0.0f, kBig, "radius of the ring (in the xz plane)", Metres},
+    {"minor_radius", 1, {0.15f}, 0.0f, kBig, "radius of the tube", Metres}};
 constexpr ParamSpec kCappedCylinder[] = {
-    {"radius", 1, {0.5f}, 0.0f, kBig, "radius"},
-    {"half_height", 1, {0.5f}, 0.0f, kBig, "half the height along y"}};
+    {"radius", 1, {0.5f}, 0.0f, kBig, "radius", Metres},
+    {"half_height", 1, {0.5f}, 0.0f, kBig, "half the height along y", Metres}};
 constexpr ParamSpec kPlane[] = {
-    {"normal", 3, {0.0f, 1.0f, 0.0f}, -1.0f, 1.0f, "normal (normalized on use), solid below"},
-    {"offset", 1, {0.0f}, -kBig, kBig, "distance of the plane from the origin along the normal"}};
+    {"normal", 3, {0.0f, 1.0f, 0.0f}, -1.0f, 1.0f, "normal (normalized on use), solid below", None},
+    {"offset",
+     1,
+     {0.0f},
+     -kBig,
+     kBig,
+     "distance of the plane from the origin along the normal",
+     Metres}};
 constexpr ParamSpec kCapsule[] = {
-    {"half_height", 1, {0.5f}, 0.0f, kBig, "half the length of the axis segment along y"},
-    {"radius", 1, {0.25f}, 0.0f, kBig, "radius"}};
+    {"half_height", 1, {0.5f}, 0.0f, kBig, "half the length of the axis segment along y", Metres},
+    {"radius", 1, {0.25f}, 0.0f, kBig, "radius", Metres}};
 constexpr ParamSpec kEllipsoid[] = {
-    {"radii", 3, {0.6f, 0.4f, 0.3f}, 1e-4f, kBig, "semi-axes along x, y, z"}};
+    {"radii", 3, {0.6f, 0.4f, 0.3f}, 1e-4f, kBig, "semi-axes along x, y, z", Metres}};
 
 // Parameters of the rows whose formulas live in primitive_formulas.cpp / fractal_formulas.cpp.
 constexpr ParamSpec kBoxFrame[] = {
-    {"half_extents", 3, {0.5f, 0.5f, 0.5f}, 0.0f, kBig, "half the outer size along x, y, z"},
-    {"thickness", 1, {0.05f}, 0.0f, kBig, "half the thickness of the frame's bars"}};
+    {"half_extents",
+     3,
+     {0.5f, 0.5f, 0.5f},
+     0.0f,
+     kBig,
+     "half the outer size along x, y, z",
+     Metres},
+    {"thickness", 1, {0.05f}, 0.0f, kBig, "half the thickness of the frame's bars", Metres}};
 constexpr ParamSpec kCappedTorus[] = {
     {"angle",
      1,
      {130.0f},
      0.0f,
      180.0f,
-     "degrees: the arc spans this angle either side of +y (180 = a full ring)"},
-    {"major_radius", 1, {0.4f}, 0.0f, kBig, "radius of the ring (in the xy plane)"},
-    {"minor_radius", 1, {0.1f}, 0.0f, kBig, "radius of the tube"}};
+     "degrees: the arc spans this angle either side of +y (180 = a full ring)",
+     Degrees},
+    {"major_radius", 1, {0.4f}, 0.0f, kBig, "radius of the ring (in the xy plane)", Metres},
+    {"minor_radius", 1, {0.1f}, 0.0f, kBig, "radius of the tube", Metres}};
 constexpr ParamSpec kLink[] = {
-    {"half_length", 1, {0.25f}, 0.0f, kBig, "half the length of the straight sides (along y)"},
-    {"major_radius", 1, {0.3f}, 0.0f, kBig, "radius of the rounded ends (in the xy plane)"},
-    {"minor_radius", 1, {0.08f}, 0.0f, kBig, "radius of the tube"}};
-constexpr ParamSpec kInfiniteCylinder[] = {{"radius", 1, {0.5f}, 0.0f, kBig, "radius"}};
+    {"half_length",
+     1,
+     {0.25f},
+     0.0f,
+     kBig,
+     "half the length of the straight sides (along y)",
+     Metres},
+    {"major_radius", 1, {0.3f}, 0.0f, kBig, "radius of the rounded ends (in the xy plane)", Metres},
+    {"minor_radius", 1, {0.08f}, 0.0f, kBig, "radius of the tube", Metres}};
+constexpr ParamSpec kInfiniteCylinder[] = {{"radius", 1, {0.5f}, 0.0f, kBig, "radius", Metres}};
 constexpr ParamSpec kCone[] = {
-    {"angle", 1, {25.0f}, 0.01f, 89.0f, "degrees between the axis and the side"},
-    {"height", 1, {1.0f}, 1e-4f, kBig, "apex at y = height / 2, base at y = -height / 2"}};
+    {"angle", 1, {25.0f}, 0.01f, 89.0f, "degrees between the axis and the side", Degrees},
+    {"height", 1, {1.0f}, 1e-4f, kBig, "apex at y = height / 2, base at y = -height / 2", Metres}};
 constexpr ParamSpec kInfiniteCone[] = {
-    {"angle", 1, {25.0f}, 0.01f, 89.0f, "degrees between the axis and the side"}};
+    {"angle", 1, {25.0f}, 0.01f, 89.0f, "degrees between the axis and the side", Degrees}};
 constexpr ParamSpec kHexPrism[] = {
-    {"radius", 1, {0.4f}, 0.0f, kBig, "distance from the axis to each side of the hexagon"},
-    {"half_length", 1, {0.4f}, 0.0f, kBig, "half the length along z"}};
+    {"radius", 1, {0.4f}, 0.0f, kBig, "distance from the axis to each side of the hexagon", Metres},
+    {"half_length", 1, {0.4f}, 0.0f, kBig, "half the length along z", Metres}};
 constexpr ParamSpec kTriPrism[] = {
-    {"radius", 1, {0.3f}, 0.0f, kBig, "distance from the axis to each side of the triangle"},
-    {"half_length", 1, {0.4f}, 0.0f, kBig, "half the length along z"}};
+    {"radius",
+     1,
+     {0.3f},
+     0.0f,
+     kBig,
+     "distance from the axis to each side of the triangle",
+     Metres},
+    {"half_length", 1, {0.4f}, 0.0f, kBig, "half the length along z", Metres}};
 constexpr ParamSpec kCapsuleBetween[] = {
-    {"a", 3, {-0.3f, -0.3f, 0.0f}, -kBig, kBig, "one end of the axis segment"},
-    {"b", 3, {0.3f, 0.3f, 0.0f}, -kBig, kBig, "the other end"},
-    {"radius", 1, {0.2f}, 0.0f, kBig, "radius"}};
+    {"a", 3, {-0.3f, -0.3f, 0.0f}, -kBig, kBig, "one end of the axis segment", Metres},
+    {"b", 3, {0.3f, 0.3f, 0.0f}, -kBig, kBig, "the other end", Metres},
+    {"radius", 1, {0.2f}, 0.0f, kBig, "radius", Metres}};
 constexpr ParamSpec kCappedCylinderBetween[] = {
-    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "centre of one cap"},
-    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "centre of the other cap"},
-    {"radius", 1, {0.4f}, 0.0f, kBig, "radius"}};
+    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "centre of one cap", Metres},
+    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "centre of the other cap", Metres},
+    {"radius", 1, {0.4f}, 0.0f, kBig, "radius", Metres}};
 constexpr ParamSpec kRoundedCylinder[] = {
-    {"radius", 1, {0.4f}, 0.0f, kBig, "outer radius"},
+    {"radius", 1, {0.4f}, 0.0f, kBig, "outer radius", Metres},
     {"edge_radius",
      1,
      {0.1f},
      0.0f,
      kBig,
-     "rounding of the rims (at most the radius and the half height)"},
-    {"half_height", 1, {0.5f}, 0.0f, kBig, "half the outer height along y"}};
+     "rounding of the rims (at most the radius and the half height)",
+     Metres},
+    {"half_height", 1, {0.5f}, 0.0f, kBig, "half the outer height along y", Metres}};
 constexpr ParamSpec kCappedCone[] = {
-    {"half_height", 1, {0.5f}, 1e-4f, kBig, "half the height along y"},
-    {"radius_bottom", 1, {0.5f}, 0.0f, kBig, "radius of the cap at y = -half_height"},
-    {"radius_top", 1, {0.2f}, 0.0f, kBig, "radius of the cap at y = +half_height"}};
+    {"half_height", 1, {0.5f}, 1e-4f, kBig, "half the height along y", Metres},
+    {"radius_bottom", 1, {0.5f}, 0.0f, kBig, "radius of the cap at y = -half_height", Metres},
+    {"radius_top", 1, {0.2f}, 0.0f, kBig, "radius of the cap at y = +half_height", Metres}};
 constexpr ParamSpec kCappedConeBetween[] = {
-    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "centre of one cap"},
-    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "centre of the other cap"},
-    {"radius_a", 1, {0.5f}, 0.0f, kBig, "radius of the cap at a"},
-    {"radius_b", 1, {0.2f}, 0.0f, kBig, "radius of the cap at b"}};
+    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "centre of one cap", Metres},
+    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "centre of the other cap", Metres},
+    {"radius_a", 1, {0.5f}, 0.0f, kBig, "radius of the cap at a", Metres},
+    {"radius_b", 1, {0.2f}, 0.0f, kBig, "radius of the cap at b", Metres}};
 constexpr ParamSpec kSolidAngle[] = {
-    {"angle", 1, {40.0f}, 0.0f, 180.0f, "degrees between the axis (+y) and the side"},
-    {"radius", 1, {0.8f}, 0.0f, kBig, "radius of the sphere it is cut from (apex at the origin)"}};
+    {"angle", 1, {40.0f}, 0.0f, 180.0f, "degrees between the axis (+y) and the side", Degrees},
+    {"radius",
+     1,
+     {0.8f},
+     0.0f,
+     kBig,
+     "radius of the sphere it is cut from (apex at the origin)",
+     Metres}};
 constexpr ParamSpec kCutSphere[] = {
-    {"radius", 1, {0.5f}, 0.0f, kBig, "radius"},
+    {"radius", 1, {0.5f}, 0.0f, kBig, "radius", Metres},
     {"cut_height",
      1,
      {-0.2f},
      -kBig,
      kBig,
-     "the part above the plane y = cut_height is kept (clamped to [-radius, radius])"}};
+     "the part above the plane y = cut_height is kept (clamped to [-radius, radius])",
+     Metres}};
 constexpr ParamSpec kCutHollowSphere[] = {
-    {"radius", 1, {0.5f}, 0.0f, kBig, "radius of the shell's mid-surface"},
+    {"radius", 1, {0.5f}, 0.0f, kBig, "radius of the shell's mid-surface", Metres},
     {"cut_height",
      1,
      {0.2f},
      -kBig,
      kBig,
-     "the part below the plane y = cut_height is kept (clamped to [-radius, radius])"},
-    {"thickness", 1, {0.04f}, 0.0f, kBig, "half the thickness of the shell"}};
+     "the part below the plane y = cut_height is kept (clamped to [-radius, radius])",
+     Metres},
+    {"thickness", 1, {0.04f}, 0.0f, kBig, "half the thickness of the shell", Metres}};
 constexpr ParamSpec kDeathStar[] = {
-    {"radius", 1, {0.5f}, 0.0f, kBig, "radius of the sphere"},
-    {"cut_radius", 1, {0.35f}, 0.0f, kBig, "radius of the sphere carved out of it"},
+    {"radius", 1, {0.5f}, 0.0f, kBig, "radius of the sphere", Metres},
+    {"cut_radius", 1, {0.35f}, 0.0f, kBig, "radius of the sphere carved out of it", Metres},
     {"cut_distance",
      1,
      {0.5f},
      1e-3f,
      kBig,
-     "the carved sphere's centre lies at (cut_distance, 0, 0)"}};
+     "the carved sphere's centre lies at (cut_distance, 0, 0)",
+     Metres}};
 constexpr ParamSpec kRoundCone[] = {
-    {"radius_bottom", 1, {0.3f}, 0.0f, kBig, "radius of the sphere at y = -height / 2"},
-    {"radius_top", 1, {0.15f}, 0.0f, kBig, "radius of the sphere at y = +height / 2"},
+    {"radius_bottom", 1, {0.3f}, 0.0f, kBig, "radius of the sphere at y = -height / 2", Metres},
+    {"radius_top", 1, {0.15f}, 0.0f, kBig, "radius of the sphere at y = +height / 2", Metres},
     {"height",
      1,
      {0.6f},
      1e-4f,
      kBig,
-     "distance between the spheres' centres (at least the difference of the radii)"}};
+     "distance between the spheres' centres (at least the difference of the radii)",
+     Metres}};
 constexpr ParamSpec kRoundConeBetween[] = {
-    {"a", 3, {0.0f, -0.3f, 0.0f}, -kBig, kBig, "centre of one sphere"},
-    {"b", 3, {0.0f, 0.3f, 0.0f}, -kBig, kBig, "centre of the other sphere"},
-    {"radius_a", 1, {0.3f}, 0.0f, kBig, "radius of the sphere at a"},
-    {"radius_b", 1, {0.15f}, 0.0f, kBig, "radius of the sphere at b"}};
+    {"a", 3, {0.0f, -0.3f, 0.0f}, -kBig, kBig, "centre of one sphere", Metres},
+    {"b", 3, {0.0f, 0.3f, 0.0f}, -kBig, kBig, "centre of the other sphere", Metres},
+    {"radius_a", 1, {0.3f}, 0.0f, kBig, "radius of the sphere at a", Metres},
+    {"radius_b", 1, {0.15f}, 0.0f, kBig, "radius of the sphere at b", Metres}};
 constexpr ParamSpec kRevolvedVesica[] = {
-    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "one tip"},
-    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "the other tip"},
-    {"width", 1, {0.25f}, 1e-4f, kBig, "largest radius, at the middle (at most |b - a| / 2)"}};
+    {"a", 3, {0.0f, -0.5f, 0.0f}, -kBig, kBig, "one tip", Metres},
+    {"b", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "the other tip", Metres},
+    {"width",
+     1,
+     {0.25f},
+     1e-4f,
+     kBig,
+     "largest radius, at the middle (at most |b - a| / 2)",
+     Metres}};
 constexpr ParamSpec kRhombus[] = {
-    {"half_diagonal_x", 1, {0.5f}, 1e-4f, kBig, "half the diagonal along x"},
-    {"half_diagonal_z", 1, {0.3f}, 1e-4f, kBig, "half the diagonal along z"},
-    {"half_height", 1, {0.05f}, 0.0f, kBig, "half the thickness along y"},
-    {"radius", 1, {0.05f}, 0.0f, kBig, "rounding of the sides (added outside)"}};
+    {"half_diagonal_x", 1, {0.5f}, 1e-4f, kBig, "half the diagonal along x", Metres},
+    {"half_diagonal_z", 1, {0.3f}, 1e-4f, kBig, "half the diagonal along z", Metres},
+    {"half_height", 1, {0.05f}, 0.0f, kBig, "half the thickness along y", Metres},
+    {"radius", 1, {0.05f}, 0.0f, kBig, "rounding of the sides (added outside)", Metres}};
 constexpr ParamSpec kOctahedron[] = {
-    {"radius", 1, {0.6f}, 0.0f, kBig, "distance from the centre to each vertex"}};
+    {"radius", 1, {0.6f}, 0.0f, kBig, "distance from the centre to each vertex", Metres}};
 constexpr ParamSpec kPyramid[] = {
-    {"base", 1, {1.0f}, 1e-4f, kBig, "side of the square base"},
-    {"height", 1, {1.0f}, 0.0f, kBig, "base at y = -height / 2, apex at y = +height / 2"}};
+    {"base", 1, {1.0f}, 1e-4f, kBig, "side of the square base", Metres},
+    {"height", 1, {1.0f}, 0.0f, kBig, "base at y = -height / 2, apex at y = +height / 2", Metres}};
 constexpr ParamSpec kTriangle[] = {
-    {"a", 3, {-0.5f, -0.4f, 0.0f}, -kBig, kBig, "first corner"},
-    {"b", 3, {0.5f, -0.4f, 0.0f}, -kBig, kBig, "second corner"},
-    {"c", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "third corner"},
-    {"thickness", 1, {0.02f}, 0.0f, kBig, "half the thickness (0 = a sheet)"}};
+    {"a", 3, {-0.5f, -0.4f, 0.0f}, -kBig, kBig, "first corner", Metres},
+    {"b", 3, {0.5f, -0.4f, 0.0f}, -kBig, kBig, "second corner", Metres},
+    {"c", 3, {0.0f, 0.5f, 0.0f}, -kBig, kBig, "third corner", Metres},
+    {"thickness", 1, {0.02f}, 0.0f, kBig, "half the thickness (0 = a sheet)", Metres}};
 constexpr ParamSpec kQuad[] = {
-    {"a", 3, {-0.5f, -0.5f, 0.0f}, -kBig, kBig, "first corner"},
-    {"b", 3, {0.5f, -0.5f, 0.0f}, -kBig, kBig, "second corner"},
-    {"c", 3, {0.5f, 0.5f, 0.0f}, -kBig, kBig, "third corner"},
-    {"d", 3, {-0.5f, 0.5f, 0.0f}, -kBig, kBig, "fourth corner (the four in one plane)"}};
+    {"a", 3, {-0.5f, -0.5f, 0.0f}, -kBig, kBig, "first corner", Metres},
+    {"b", 3, {0.5f, -0.5f, 0.0f}, -kBig, kBig, "second corner", Metres},
+    {"c", 3, {0.5f, 0.5f, 0.0f}, -kBig, kBig, "third corner", Metres},
+    {"d", 3, {-0.5f, 0.5f, 0.0f}, -kBig, kBig, "fourth corner (the four in one plane)", Metres}};
 constexpr ParamSpec kMandelbulb[] = {
-    {"power", 1, {8.0f}, 2.0f, 16.0f, "exponent n of z -> z^n + c"},
-    {"iterations", 1, {8.0f}, 1.0f, 16.0f, "iterations (floored)"},
-    {"bailout", 1, {2.0f}, 1.5f, 16.0f, "escape radius"}};
+    {"power", 1, {8.0f}, 2.0f, 16.0f, "exponent n of z -> z^n + c", None},
+    {"iterations", 1, {8.0f}, 1.0f, 16.0f, "iterations (floored)", Count},
+    {"bailout", 1, {2.0f}, 1.5f, 16.0f, "escape radius", None}};
 constexpr ParamSpec kMengerSponge[] = {
-    {"iterations", 1, {4.0f}, 0.0f, 8.0f, "levels of holes (floored)"},
-    {"half_size", 1, {0.5f}, 1e-4f, kBig, "half the edge of the cube"}};
+    {"iterations", 1, {4.0f}, 0.0f, 8.0f, "levels of holes (floored)", Count},
+    {"half_size", 1, {0.5f}, 1e-4f, kBig, "half the edge of the cube", Metres}};
 constexpr ParamSpec kSierpinskiTetrahedron[] = {
-    {"iterations", 1, {6.0f}, 0.0f, 16.0f, "levels of subdivision (floored)"},
-    {"size", 1, {0.5f}, 1e-4f, kBig, "the corners lie at (+-size, +-size, +-size)"}};
+    {"iterations", 1, {6.0f}, 0.0f, 16.0f, "levels of subdivision (floored)", Count},
+    {"size", 1, {0.5f}, 1e-4f, kBig, "the corners lie at (+-size, +-size, +-size)", Metres}};
 constexpr ParamSpec kQuaternionJulia[] = {
-    {"c_r", 1, {-0.45f}, -2.0f, 2.0f, "real part of the constant c"},
-    {"c_i", 1, {-0.45f}, -2.0f, 2.0f, "i part of c"},
-    {"c_j", 1, {0.18f}, -2.0f, 2.0f, "j part of c"},
-    {"c_k", 1, {0.31f}, -2.0f, 2.0f, "k part of c"},
-    {"iterations", 1, {10.0f}, 1.0f, 32.0f, "iterations (floored)"}};
+    {"c_r", 1, {-0.45f}, -2.0f, 2.0f, "real part of the constant c", None},
+    {"c_i", 1, {-0.45f}, -2.0f, 2.0f, "i part of c", None},
+    {"c_j", 1, {0.18f}, -2.0f, 2.0f, "j part of c", None},
+    {"c_k", 1, {0.31f}, -2.0f, 2.0f, "k part of c", None},
+    {"iterations", 1, {10.0f}, 1.0f, 32.0f, "iterations (floored)", Count}};
 
 constexpr ParamSpec kGyroid[] = {
-    {"period", 1, {1.0f}, 1e-3f, kBig, "length of one cell of the lattice along each axis"},
+    {"period", 1, {1.0f}, 1e-3f, kBig, "length of one cell of the lattice along each axis", Metres},
     {"thickness",
      1,
      {0.05f},
      0.0f,
      kBig,
-     "half the sheet's thickness where the surface is steepest; more elsewhere (0 = a sheet)"}};
+     "half the sheet's thickness where the surface is steepest; more elsewhere (0 = a sheet)",
+     Metres}};
 
 constexpr const char* kIq = "Quilez, Distance functions";
 constexpr const char* kIqMandelbulb =

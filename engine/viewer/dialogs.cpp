@@ -2,6 +2,7 @@
 #include "dialogs.hpp"
 
 #include "editor/camera_edits.hpp"
+#include "editor/file_browser.hpp"
 #include "editor/recovery.hpp"
 #include "editor/scene_edits.hpp"
 
@@ -60,13 +61,20 @@ void drawRecoverDialog(Dialogs& dialogs, editor::Document& document, Messages& m
     ImGui::EndPopup();
 }
 
-// After the changes were saved or discarded: quit, or the new scene the user asked for.
+// After the changes were saved or discarded: quit, the new scene or the file the user asked for.
 void goOnAfterDiscard(Dialogs& dialogs, EditorSession& session, SceneFiles& files,
                       Messages& messages) {
-    if (dialogs.afterDiscard == AfterDiscard::Quit)
+    switch (dialogs.afterDiscard) {
+    case AfterDiscard::Quit:
         dialogs.quitNow = true;
-    else
+        break;
+    case AfterDiscard::New:
         newScene(session, files, messages);
+        break;
+    case AfterDiscard::Open:
+        openSceneFile(dialogs.openAfterDiscard, session, files, messages);
+        break;
+    }
 }
 
 void drawUnsavedChangesDialog(Dialogs& dialogs, EditorSession& session, SceneFiles& files,
@@ -89,11 +97,18 @@ void drawUnsavedChangesDialog(Dialogs& dialogs, EditorSession& session, SceneFil
     ImGui::EndPopup();
 }
 
-// What the path dialog's OK does with the path.
-void usePath(const std::filesystem::path& path, PathPurpose purpose, EditorSession& session,
+// What the file browser's choice is used for.
+void usePath(const std::filesystem::path& path, Dialogs& dialogs, EditorSession& session,
              SceneFiles& files, Messages& messages) {
+    const PathPurpose purpose = dialogs.pathPurpose;
     if (purpose == PathPurpose::Open) {
-        openSceneFile(path, session, files, messages);
+        requestOpen(dialogs, path, session, files, messages);
+    } else if (purpose == PathPurpose::Field) {
+        if (dialogs.browseField) {
+            dialogs.browseField->text =
+                editor::fileFieldText(path, session.document.file().parent_path());
+            dialogs.browseField->applyNow = true;
+        }
     } else if (purpose == PathPurpose::SaveAs) {
         saveSceneAs(path, session.document, files, messages);
     } else {
@@ -111,23 +126,8 @@ void usePath(const std::filesystem::path& path, PathPurpose purpose, EditorSessi
 
 void drawPathDialog(Dialogs& dialogs, EditorSession& session, SceneFiles& files,
                     Messages& messages) {
-    if (!beginModal("File", dialogs.askPath)) return;
-    const char* what = dialogs.pathPurpose == PathPurpose::Open ? "Open scene file (.json):"
-                       : dialogs.pathPurpose == PathPurpose::SaveAs
-                           ? "Save scene as (.json):"
-                           : "Add a glTF mesh (.gltf / .glb):";
-    ImGui::TextUnformatted(what);
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    ImGui::SetNextItemWidth(420);
-    const bool entered =
-        ImGui::InputText("##path", &dialogs.pathBuffer, ImGuiInputTextFlags_EnterReturnsTrue);
-    if ((ImGui::Button("OK") || entered) && !dialogs.pathBuffer.empty()) {
-        usePath(dialogs.pathBuffer, dialogs.pathPurpose, session, files, messages);
-        ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (cancelled("Cancel")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
+    if (const std::optional<std::filesystem::path> chosen = drawFileBrowser(dialogs.browser))
+        usePath(*chosen, dialogs, session, files, messages);
 }
 
 void drawChangedOnDiskDialog(Dialogs& dialogs, editor::Document& document, Messages& messages) {
@@ -152,8 +152,8 @@ void goOnSaving(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Mes
                 bool saveAs) {
     if (saveAs)
         dialogs.askForPath(PathPurpose::SaveAs, session.document.file().empty()
-                                                    ? "scene.json"
-                                                    : session.document.file().string());
+                                                    ? std::filesystem::current_path() / "scene.json"
+                                                    : session.document.file());
     else
         saveScene(session, files, messages, dialogs);
 }
@@ -195,10 +195,48 @@ void requestSave(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Me
     goOnSaving(dialogs, session, files, messages, saveAs);
 }
 
-void Dialogs::askForPath(PathPurpose purpose, std::string initial) {
-    askPath = true;
+void Dialogs::askForPath(PathPurpose purpose, const std::filesystem::path& start) {
     pathPurpose = purpose;
-    pathBuffer = std::move(initial);
+    browseField = nullptr;
+    switch (purpose) {
+    case PathPurpose::Open:
+        browser.open("Open scene", editor::FileKind::Scene, false, start);
+        break;
+    case PathPurpose::SaveAs:
+        browser.open("Save scene as", editor::FileKind::Scene, true, start);
+        break;
+    case PathPurpose::AddMesh:
+    case PathPurpose::Field:
+        browser.open("Add a glTF mesh", editor::FileKind::Mesh, false, start);
+        break;
+    }
+}
+
+void Dialogs::askForFieldFile(FileField& field, const std::filesystem::path& sceneFolder) {
+    pathPurpose = PathPurpose::Field;
+    browseField = &field;
+    const char* title = field.kind == editor::FileKind::Mesh    ? "Choose a glTF file"
+                        : field.kind == editor::FileKind::Sky   ? "Choose a sky image"
+                        : field.kind == editor::FileKind::Scene ? "Choose a scene file"
+                                                                : "Choose a texture";
+    // Start where the field's file is, else in the scene's folder.
+    std::filesystem::path start = sceneFolder;
+    if (!field.text.empty()) {
+        const std::filesystem::path typed(field.text);
+        start = typed.is_absolute() ? typed : sceneFolder / typed;
+    }
+    browser.open(title, field.kind, false, start);
+}
+
+void requestOpen(Dialogs& dialogs, const std::filesystem::path& path, EditorSession& session,
+                 SceneFiles& files, Messages& messages) {
+    if (session.document.dirty()) {
+        dialogs.askClose = true;
+        dialogs.afterDiscard = AfterDiscard::Open;
+        dialogs.openAfterDiscard = path;
+    } else {
+        openSceneFile(path, session, files, messages);
+    }
 }
 
 void requestClose(Dialogs& dialogs, const editor::Document& document) {
@@ -210,7 +248,7 @@ void requestClose(Dialogs& dialogs, const editor::Document& document) {
 
 void saveScene(EditorSession& session, SceneFiles& files, Messages& messages, Dialogs& dialogs) {
     if (session.document.file().empty())
-        dialogs.askForPath(PathPurpose::SaveAs, "scene.json");
+        dialogs.askForPath(PathPurpose::SaveAs, std::filesystem::current_path() / "scene.json");
     else
         saveSceneAs(session.document.file(), session.document, files, messages);
 }

@@ -1,11 +1,14 @@
-// The modal dialogs: recover the edits a recovery file holds, unsaved changes (before closing or
-// New), a file path (open, save as, add a mesh), the scene file changed on disk while there
-// are unsaved edits, and, before a save, whether the scene camera should take the view when
-// they differ. A dialog opens on the frame after it was asked for (the ask* flags) and,
-// when answered, acts on the session, its files and the messages.
+// The modal dialogs: recover the edits a recovery file holds, unsaved changes (before closing,
+// New or opening another scene), the file browser (open, save as, add a mesh, a file field's
+// file), the scene file changed on disk while there are unsaved edits, and, before a save,
+// whether the scene camera should take the view when they differ. A dialog opens on the frame
+// after it was asked for (the ask* flags) and, when answered, acts on the session, its files and
+// the messages.
 #pragma once
 
 #include "editor_session.hpp"
+#include "file_browser_dialog.hpp"
+#include "file_field.hpp"
 #include "messages.hpp"
 #include "scene_files.hpp"
 
@@ -15,28 +18,37 @@
 
 namespace rmsc::app {
 
-enum class PathPurpose { Open, SaveAs, AddMesh };
-enum class AfterDiscard { Quit, New }; // what the unsaved-changes dialog goes on with
+// What the file browser's choice is for; Field: the file of `Dialogs::browseField`.
+enum class PathPurpose { Open, SaveAs, AddMesh, Field };
+// What the unsaved-changes dialog goes on with: quit, a new scene, or open `openAfterDiscard`.
+enum class AfterDiscard { Quit, New, Open };
 
 struct Dialogs {
     bool askRecover = false; // the recovery file found at start (offeredRecovery)
     bool askClose = false;   // unsaved changes; then afterDiscard
-    bool askPath = false;    // a file for pathPurpose, starting from pathBuffer
     bool askReload = false;  // the scene file changed on disk, with unsaved edits
     bool askCamera = false;  // save (or save as, cameraThenSaveAs): the view differs from the
                              // scene camera; update it, keep it, or cancel
     bool cameraThenSaveAs = false;
     AfterDiscard afterDiscard = AfterDiscard::Quit;
+    std::filesystem::path openAfterDiscard;
+    FileBrowser browser;
     PathPurpose pathPurpose = PathPurpose::Open;
-    std::string pathBuffer;
+    FileField* browseField = nullptr; // PathPurpose::Field: gets the chosen file, applied
     std::optional<std::filesystem::path> offeredRecovery;
     bool quitNow = false; // closing is decided: the frame loop ends
 
-    void askForPath(PathPurpose purpose, std::string initial);
+    // Opens the file browser for `purpose` at `start` (a file or a folder).
+    void askForPath(PathPurpose purpose, const std::filesystem::path& start);
+    // Opens it for a file field (its kind's filter), starting in `sceneFolder`.
+    void askForFieldFile(FileField& field, const std::filesystem::path& sceneFolder);
 };
 
 // Closes now, or asks first when there are unsaved changes.
 void requestClose(Dialogs& dialogs, const editor::Document& document);
+// Opens the scene file `path` now, or asks first when there are unsaved changes.
+void requestOpen(Dialogs& dialogs, const std::filesystem::path& path, EditorSession& session,
+                 SceneFiles& files, Messages& messages);
 // Saves to the scene's file, or asks for one when it has none yet.
 void saveScene(EditorSession& session, SceneFiles& files, Messages& messages, Dialogs& dialogs);
 // Save (Ctrl+S) or Save As (Ctrl+Shift+S) as the user asked for it: first, when the view shows

@@ -2,7 +2,9 @@
 #include "frame_loop.hpp"
 
 #include "core/exit_code.hpp"
+#include "editor/dropped_files.hpp"
 #include "editor/multi_selection.hpp"
+#include "editor/recent_files.hpp"
 #include "editor/recovery.hpp"
 #include "editor/scene_edits.hpp"
 #include "hierarchy_panel.hpp"
@@ -11,6 +13,7 @@
 #include "overlay.hpp"
 #include "render/shader_library.hpp"
 #include "screenshots.hpp"
+#include "shortcut_sheet.hpp"
 #include "shortcuts.hpp"
 #include "view_shortcuts.hpp"
 #include "viewport_pick.hpp"
@@ -28,6 +31,8 @@ Viewer::Viewer(const ViewerOptions& options, std::unique_ptr<Window> window,
     : options_(options), window_(std::move(window)), script_(std::move(script)),
       start_(std::chrono::steady_clock::now()) {
     view_.adaptive.targetMilliseconds = options_.targetMilliseconds;
+    files_.recentFile = editor::recentFilesPath();
+    loadRecentFiles(files_, messages_);
     openStartScene(options_.scene, session_, files_, messages_);
     dialogs_.offeredRecovery = editor::findRecovery(session_.document.file());
 }
@@ -43,7 +48,8 @@ int Viewer::run() {
         std::fprintf(stderr, "rmsc view: %s\n", messages_.shaderError.c_str());
         return kExitSystem;
     }
-    if (!script_) attachGlfwInput(window_->handle(), &queue_);
+    // A replayed run still takes files dropped on its window (a test can drop them for real).
+    attachGlfwInput(window_->handle(), &queue_, script_.has_value());
     // Scripted runs (tests) never see a recovery prompt, so they replay the same everywhere.
     dialogs_.askRecover = dialogs_.offeredRecovery.has_value() && !script_;
     int failures = 0;
@@ -63,7 +69,8 @@ int Viewer::run() {
         feedImGui(input_, ww, wh, fw, fh, seconds);
         ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();
-        layout_ = layoutPanels(ww, wh, ImGui::GetFrameHeight());
+        // The panels follow the font's size: 13 pixels at a UI scale of 1.
+        layout_ = layoutPanels(ww, wh, ImGui::GetFrameHeight(), ImGui::GetFontSize() / 13.0f);
 
         handleInput(seconds);
         drawUi();
@@ -151,7 +158,9 @@ ScriptActions Viewer::readInput() {
 
 void Viewer::handleInput(float seconds) {
     ViewerCommands commands;
-    handleShortcuts(input_, gesture_, commands);
+    handleShortcuts(input_, gesture_, gizmo_.dragging(), commands);
+    for (const std::string& path : input_.drops)
+        commands.push_back({ViewerCommand::DropFile, path});
     carryOut(commands);
     // Before the camera, so the S of "scale" does not also fly back.
     if (!gizmo_.dragging())
@@ -162,7 +171,9 @@ void Viewer::handleInput(float seconds) {
                 inspector_.worldCoordinates, gesture_.active);
     const bool busy = gesture_.active || gizmo_.dragging();
     handleViewShortcuts(input_, busy, session_, messages_);
-    handleCamera(input_, layout_.viewport, busy, cameraDrags_, session_, seconds);
+    // The add menu takes the keys from the frame Shift+A opens it in: its A does not fly.
+    handleCamera(input_, layout_.viewport, busy || addSearch_.open || addSearch_.askOpen,
+                 cameraDrags_, session_, seconds);
     handleViewportClick(input_, layout_.viewport, busy, gpu_.newestScene(), session_);
     updateGesture(gesture_, input_, session_.document, layout_.viewport);
 }
@@ -171,7 +182,8 @@ void Viewer::drawUi() {
     ViewerCommands commands;
     const NewShapePlace place = newShapePlace();
     if (ImGui::BeginMainMenuBar()) {
-        drawMenus(session_, view_, place, export_.job.running(), messages_, commands);
+        drawMenus(session_, view_, place, export_.job.running(), files_.recent, messages_,
+                  commands);
         carryOut(commands); // before the title, which shows whether the scene is saved
         drawMenuBarTitle(session_.document);
         ImGui::EndMainMenuBar();
@@ -180,6 +192,11 @@ void Viewer::drawUi() {
     carryOut(commands);
     drawInspectorPanel(session_, inspector_, view_, layout_, commands);
     carryOut(commands);
+    if (FileField* field = takeBrowseRequest(inspector_))
+        dialogs_.askForFieldFile(*field, session_.document.file().parent_path());
+    drawAddSearchMenu(addSearch_, session_.document, place, commands);
+    carryOut(commands);
+    drawShortcutSheet(shortcutSheet_, layout_.viewport);
     drawStatusOverlay(layout_.viewport, gpu_.status(), frameMilliseconds_, view_,
                       session_.camera.speed, gesture_.active ? &gesture_.math : nullptr, messages_);
     drawGizmo(gizmo_, session_.document, session_.viewCamera(), layout_.viewport,
@@ -247,6 +264,9 @@ int Viewer::writeScriptShots(const ScriptActions& actions) {
         if (!writeWindowShot(*window_, path, error)) {
             std::fprintf(stderr, "rmsc view: window-shot %s: %s\n", path.c_str(), error.c_str());
             ++failures;
+        } else {
+            std::fprintf(stderr, "rmsc view: frame %d: window shot %s\n", frameNumber_,
+                         path.c_str());
         }
     }
     return failures;
@@ -300,6 +320,36 @@ ViewInput Viewer::viewInput() const {
     shown.showLights = view_.showLights;
     shown.mode = view_.mode;
     return shown;
+}
+
+glm::vec3 Viewer::viewFocus() const {
+    const editor::FlyCamera& camera = session_.camera;
+    return camera.position + camera.forward() * camera.focusDistance;
+}
+
+void Viewer::dropFile(const std::filesystem::path& path) {
+    switch (editor::droppedFileKind(path)) {
+    case editor::DroppedKind::Scene:
+        requestOpen(dialogs_, path, session_, files_, messages_);
+        break;
+    case editor::DroppedKind::Mesh: {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec)) {
+            messages_.fileError = path.string() + ": no such file";
+            break;
+        }
+        // Where a new shape goes: on the surface under the view's centre, else at its focus.
+        const glm::vec3 where = newShapePoint(newShapePlace());
+        session_.document.apply("Add mesh", [&](Scene& scene, editor::Selection& selection) {
+            editor::addMeshAt(scene, selection, path, where);
+        });
+        messages_.notice("added " + path.filename().string() + " where a new shape goes");
+        break;
+    }
+    case editor::DroppedKind::Unsupported:
+        messages_.fileError = editor::droppedFileRefusal(path);
+        break;
+    }
 }
 
 void Viewer::screenshotToDefaultFile() {

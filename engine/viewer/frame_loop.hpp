@@ -1,12 +1,13 @@
 // The viewer (`rmsc view`, started by runViewer in viewer/viewer.hpp): owns the window and the
 // parts, and runs the frame loop. A frame takes its events from the input queue (real or
-// replayed input, editor/input_queue.hpp), runs the shortcuts, gestures, the gizmo and the
-// camera, draws the menus, panels, overlay, gizmo, toolbar and dialogs (carrying out the
-// commands each queues right after it), commits finished edits, looks at the files, hands the
-// scene to the GPU side and draws the view; then writes the screenshots a replay script asks
-// for.
+// replayed input, editor/input_queue.hpp), runs the shortcuts and the files dropped on the
+// window, the gestures, the gizmo and the camera, draws the menus, panels, overlay, the add
+// menu, the shortcut sheet, the gizmo, its toolbar and the dialogs (carrying out the commands
+// each queues right after it), commits finished edits, looks at the files, hands the scene to
+// the GPU side and draws the view; then writes the screenshots a replay script asks for.
 #pragma once
 
+#include "add_search_menu.hpp"
 #include "camera_controls.hpp"
 #include "dialogs.hpp"
 #include "document_edits.hpp"
@@ -61,7 +62,9 @@ class Viewer {
     ViewInput viewInput() const;         // what the view shows this frame
     NewShapePlace newShapePlace() const; // where a shape added this frame goes
     void screenshotToDefaultFile();
-    double now() const; // seconds since the start
+    void dropFile(const std::filesystem::path& path); // a file dropped on the window
+    glm::vec3 viewFocus() const; // where the view looks: its focus point straight ahead
+    double now() const;          // seconds since the start
 
     const ViewerOptions options_;
     std::unique_ptr<Window> window_;
@@ -91,6 +94,8 @@ class Viewer {
     ViewSettings view_;
     ViewportGesture gesture_;
     ViewportGizmo gizmo_;
+    AddSearchMenu addSearch_;
+    bool shortcutSheet_ = false; // the sheet of every shortcut is shown
     CameraDrags cameraDrags_;
     ViewRenderer gpu_; // after window_: goes first, while its context exists
 };

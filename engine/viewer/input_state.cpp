@@ -8,6 +8,7 @@ namespace rmsc::app {
 void InputState::beginFrame() {
     wheel = 0.0f;
     characters.clear();
+    drops.clear();
     pressedKeys.clear();
     clicked = {};
     released = {};
@@ -54,6 +55,9 @@ void InputState::apply(const editor::InputEvent& e) {
     case Kind::Cursor:
         moveMouse(e.value);
         break;
+    case Kind::Drop:
+        drops.push_back(e.path);
+        return; // no modifiers of its own
     case Kind::Marker:
         return;
     }
@@ -81,6 +85,13 @@ int modifierBit(int key) {
     default:
         return 0;
     }
+}
+
+editor::InputEvent dropEvent(std::string path) {
+    editor::InputEvent e;
+    e.kind = editor::InputEvent::Kind::Drop;
+    e.path = std::move(path);
+    return e;
 }
 
 int modsAfterKey(int mods, int key, bool down) {
@@ -116,11 +127,16 @@ void enqueue(GLFWwindow* window, editor::InputEvent e) {
 
 } // namespace
 
-void attachGlfwInput(GLFWwindow* window, editor::InputQueue* queue) {
+void attachGlfwInput(GLFWwindow* window, editor::InputQueue* queue, bool dropsOnly) {
     using Kind = editor::InputEvent::Kind;
     static GlfwFeed feed; // one window takes real input
     feed = {queue, 0};
     glfwSetWindowUserPointer(window, &feed);
+    glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
+        for (int i = 0; i < count; ++i)
+            enqueue(w, dropEvent(paths[i]));
+    });
+    if (dropsOnly) return;
     glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int glfwMods) {
         if (action == GLFW_REPEAT || key < 0 || key > GLFW_KEY_LAST) return;
         const bool down = action == GLFW_PRESS;

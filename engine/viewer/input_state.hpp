@@ -13,6 +13,7 @@
 #include "editor/input_queue.hpp"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace rmsc::app {
@@ -25,6 +26,7 @@ struct InputState {
     // Per frame (cleared by beginFrame):
     float wheel = 0.0f;
     std::vector<unsigned> characters;
+    std::vector<std::string> drops; // files dropped on the window this frame
     std::vector<int> pressedKeys;   // keys that went down this frame
     std::array<bool, 3> clicked{};  // buttons that went down this frame
     std::array<bool, 3> released{}; // buttons that went up this frame
@@ -53,9 +55,14 @@ struct InputState {
 int modifierBit(int key);
 // `mods` after a key event: a modifier key's own bit set while it is down.
 int modsAfterKey(int mods, int key, bool down);
+// The event of a file dropped on the window (GLFW's drop callback and a script's `drop PATH`).
+editor::InputEvent dropEvent(std::string path);
 
-// Queues a window's GLFW input callbacks into `queue` (real input), stamped with glfwGetTime.
-// Call once; the queue must outlive the window's callbacks.
-void attachGlfwInput(GLFWwindow* window, editor::InputQueue* queue);
+// Queues a window's GLFW input callbacks into `queue` (real input), stamped with glfwGetTime:
+// keys, characters, buttons, the cursor, the wheel and files dropped on the window (one Drop
+// event per file; replay scripts' `drop PATH` queues the same). Call once; the queue must
+// outlive the window's callbacks. With `dropsOnly` (a replay script plays the rest), only the
+// files dropped on the window are queued.
+void attachGlfwInput(GLFWwindow* window, editor::InputQueue* queue, bool dropsOnly = false);
 
 } // namespace rmsc::app

@@ -19,15 +19,10 @@
 
 namespace rmsc::app {
 
-// The file field of one texture slot of the selected material (editor/material_texture_edits.hpp);
-// the slot's file changes only when "apply" loads what was typed.
-struct TextureFileField {
-    int material = -1;     // the material the text belongs to
-    std::string shownFile; // the slot's file when the text was last filled from it
-    std::string text;      // the file name being typed
-    std::string error;     // why the last apply failed ("" = it did not)
-};
-using TextureFileFields = std::array<TextureFileField, 3>; // one per slot
+// The file fields of the texture slots of the selected material
+// (editor/material_texture_edits.hpp), one per slot, owned by the material's index; a slot's file
+// changes only when "apply" loads what was typed.
+using TextureFileFields = std::array<FileField, 3>;
 
 // The environment's fields that outlive a frame: the sky image's file being typed, and why the
 // last sky type was refused (an image sky chosen before its file, which then shows).
@@ -50,6 +45,8 @@ struct InspectorState {
 
 void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSettings& view,
                         const PanelLayout& layout, ViewerCommands& commands);
+// The file field whose "..." was pressed this frame (its request cleared), or nullptr.
+FileField* takeBrowseRequest(InspectorState& state);
 
 // The Object tab, by the kind of the selection.
 void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& path,

@@ -38,7 +38,8 @@ void drawSkyImage(editor::Document& document, EnvironmentFields& fields) {
     if (drawFileField("file", fields.skyFile, 0, shown.imageFile,
                       "An equirectangular image (Radiance .hdr; PNG and JPEG are read as sRGB), "
                       "relative to the scene file's folder. Enter or apply loads it; a file that "
-                      "does not load changes nothing.")) {
+                      "does not load changes nothing.",
+                      editor::FileKind::Sky)) {
         Scene candidate = document.scene();
         std::string error;
         if (editor::setSkyImageFile(candidate, fields.skyFile.text, diskFileSource(), error)) {
@@ -83,14 +84,13 @@ void drawEnvironmentInspector(editor::Document& document, EnvironmentFields& fie
     }
     if (env.sky == SkyType::Image || fields.choosingImage) drawSkyImage(document, fields);
     if (env.sky == SkyType::Image) {
-        changed |=
-            dragFloatInRange("rotation", env.rotationDegrees, 0.5f, kSkyRotationRange, "%.1f°");
-        helpTooltip("Turns the image about +Y, degrees.");
+        changed |= numberField("rotation", &env.rotationDegrees, 1, 0.5f, kSkyRotationRange,
+                               "Turns the image about +Y.", {.format = "%.1f°"});
     }
     if (env.sky != SkyType::None) {
         changed |=
-            dragFloatInRange("intensity", env.intensity, 0.01f, kEnvironmentIntensityRange, "%.2f");
-        helpTooltip("Multiplies the sky, as background and as light.");
+            numberField("intensity", &env.intensity, 1, 0.01f, kEnvironmentIntensityRange,
+                        "Multiplies the sky, as background and as light.", {.format = "%.2f"});
     }
     bool fog = env.fogDensity > 0.0f;
     if (ImGui::Checkbox("fog", &fog)) {
@@ -100,7 +100,10 @@ void drawEnvironmentInspector(editor::Document& document, EnvironmentFields& fie
     helpTooltip("Exponential fog: a surface d metres away keeps exp(-density d) of its colour, "
                 "the rest is the fog colour. The sky is not fogged.");
     if (fog) {
-        changed |= dragFloatInRange("density", env.fogDensity, 0.001f, kFogDensityRange, "%.3f");
+        changed |= numberField("density", &env.fogDensity, 1, 0.001f, kFogDensityRange,
+                               "How thick the fog is: a surface d metres away keeps "
+                               "exp(-density d) of its colour.",
+                               {.format = "%.3f"});
         changed |= editColor("fog colour", env.fogColor);
     }
     ImGui::PopID();

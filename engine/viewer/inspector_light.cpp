@@ -20,23 +20,6 @@
 namespace rmsc::app {
 namespace {
 
-// The bounds a drag keeps a number within so the reader accepts it: an exclusive end moves to
-// the next float inside, an unbounded end to the largest float.
-struct DragBounds {
-    float min = -FLT_MAX, max = FLT_MAX;
-};
-
-DragBounds dragBounds(const ParamRange& range) {
-    const editor::FloatFieldRange r = editor::floatFieldRange(range);
-    return {r.min, r.max};
-}
-
-bool dragNumber(const char* label, float& value, float step, DragBounds bounds,
-                const char* format) {
-    return ImGui::DragFloat(label, &value, step, bounds.min, bounds.max, format,
-                            ImGuiSliderFlags_AlwaysClamp);
-}
-
 void drawTypeCombo(Light& light, editor::Document& document) {
     const std::string current(lightTypeName(light.type));
     if (!ImGui::BeginCombo("type", current.c_str())) return;
@@ -54,10 +37,13 @@ void drawDirection(Light& light, editor::Document& document) {
     const glm::vec3 d = glm::normalize(light.direction);
     float azimuth = glm::degrees(std::atan2(d.x, d.z));
     float elevation = glm::degrees(std::asin(std::clamp(-d.y, -1.0f, 1.0f)));
-    bool changed = ImGui::DragFloat("azimuth", &azimuth, 0.5f, -180.0f, 180.0f, "%.1f°");
-    changed |= ImGui::DragFloat("elevation", &elevation, 0.5f, -90.0f, 90.0f, "%.1f°",
-                                ImGuiSliderFlags_AlwaysClamp);
-    helpTooltip("Height of the light above the horizon; 90 shines straight down.");
+    bool changed = numberField("azimuth", &azimuth, 1, 0.5f, closedRange(-180, 180, Unit::Degrees),
+                               "The compass direction the light comes from, about +Y (0: from "
+                               "+Z).",
+                               {.format = "%.1f°"});
+    changed |= numberField("elevation", &elevation, 1, 0.5f, closedRange(-90, 90, Unit::Degrees),
+                           "Height of the light above the horizon; 90 shines straight down.",
+                           {.format = "%.1f°"});
     if (changed) {
         const float a = glm::radians(azimuth), e = glm::radians(elevation);
         light.direction =
@@ -74,23 +60,30 @@ void drawRange(Light& light, editor::Document& document) {
         document.markChanged("Light range");
     }
     helpTooltip("Off: the light reaches everywhere, falling off with the square of the distance.");
-    if (limited && dragNumber("range", light.range, stepFor(light.range),
-                              dragBounds(kLightRangeRange), "%.3f"))
+    if (limited && numberField("range", &light.range, 1, stepFor(light.range), kLightRangeRange,
+                               "The light reaches no farther than this."))
         document.markChanged("Light range");
 }
 
 // Inner below outer, both within the reader's ranges.
 void drawCone(Light& light, editor::Document& document) {
-    DragBounds inner = dragBounds(kSpotInnerAngleRange);
-    inner.max = std::min(inner.max, std::nextafter(light.outerAngleDegrees, -FLT_MAX));
-    if (dragNumber("inner angle", light.innerAngleDegrees, 0.25f, inner, "%.2f°"))
+    ParamRange inner = kSpotInnerAngleRange;
+    if (double(light.outerAngleDegrees) <= inner.max) {
+        inner.max = light.outerAngleDegrees;
+        inner.maxExclusive = true;
+    }
+    if (numberField("inner angle", &light.innerAngleDegrees, 1, 0.25f, inner,
+                    "Full intensity inside this angle from the axis (below the outer angle).",
+                    {.format = "%.2f°"}))
         document.markChanged("Spot inner angle");
-    helpTooltip("Full intensity inside this angle from the axis.");
-    DragBounds outer = dragBounds(kSpotOuterAngleRange);
-    outer.min = std::max(outer.min, std::nextafter(light.innerAngleDegrees, FLT_MAX));
-    if (dragNumber("outer angle", light.outerAngleDegrees, 0.25f, outer, "%.2f°"))
+    ParamRange outer = kSpotOuterAngleRange;
+    if (double(light.innerAngleDegrees) >= outer.min) {
+        outer.min = light.innerAngleDegrees;
+        outer.minExclusive = true;
+    }
+    if (numberField("outer angle", &light.outerAngleDegrees, 1, 0.25f, outer,
+                    "No light outside this angle from the axis.", {.format = "%.2f°"}))
         document.markChanged("Spot outer angle");
-    helpTooltip("No light outside this angle from the axis.");
 }
 
 // Shadows on or off; the softness is the scene's (render.shadows.softness) unless set here.
@@ -102,8 +95,9 @@ void drawShadows(Light& light, editor::Document& document) {
         document.markChanged("Shadow softness");
     }
     helpTooltip("Off: the scene's shadow softness (Render tab).");
-    if (own && dragNumber("shadow softness", light.shadowSoftness, 0.001f,
-                          dragBounds(kLightShadowSoftnessRange), "%.3f"))
+    if (own &&
+        numberField("shadow softness", &light.shadowSoftness, 1, 0.001f, kLightShadowSoftnessRange,
+                    "This light's SDF penumbra width factor (Quilez's k = 1 / w)."))
         document.markChanged("Shadow softness");
 }
 
@@ -113,16 +107,20 @@ void drawLightInspector(editor::Document& document, int index, ViewerCommands& c
     Light& light = document.editScene().lights[std::size_t(index)];
     if (ImGui::InputText("name", &light.name)) document.markChanged("Rename");
     drawTypeCombo(light, document);
-    if (hasPosition(light.type) &&
-        ImGui::DragFloat3("position", &light.position.x,
-                          stepFor(std::max(1.0f, glm::length(light.position)))))
+    if (hasPosition(light.type) && numberField("position", &light.position.x, 3,
+                                               stepFor(std::max(1.0f, glm::length(light.position))),
+                                               unboundedRange(Unit::Metres), "Where the light is."))
         document.markChanged("Light position");
     if (hasDirection(light.type)) drawDirection(light, document);
     if (editColor("colour", light.color)) document.markChanged("Light colour");
-    if (dragNumber("intensity", light.intensity, 0.02f, dragBounds(kLightIntensityRange), "%.2f"))
+    ParamRange intensity = kLightIntensityRange;
+    intensity.unit = lightIntensityUnit(light.type);
+    if (numberField("intensity", &light.intensity, 1, 0.02f, intensity,
+                    light.type == LightType::Directional
+                        ? "Illuminance, as glTF's KHR_lights_punctual gives it."
+                        : "Luminous intensity, as glTF's KHR_lights_punctual gives it.",
+                    {.format = "%.2f"}))
         document.markChanged("Light intensity");
-    helpTooltip(light.type == LightType::Directional ? "Illuminance (lux-like)."
-                                                     : "Luminous intensity (candela-like).");
     if (hasRange(light.type)) drawRange(light, document);
     if (hasCone(light.type)) drawCone(light, document);
     drawShadows(light, document);

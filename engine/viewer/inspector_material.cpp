@@ -2,6 +2,7 @@
 #include "inspector.hpp"
 
 #include "panel_widgets.hpp"
+#include "scene/material_spec.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -14,8 +15,11 @@ namespace {
 bool editMaterial(Material& m) {
     bool changed = false;
     changed |= editColor("base colour", m.baseColor);
-    changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f);
-    changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f);
+    changed |= numberField("metallic", &m.metallic, 1, 0.01f, kMetallicRange,
+                           "0 = dielectric, 1 = metal.", {.format = "%.2f", .slider = true});
+    changed |=
+        numberField("roughness", &m.roughness, 1, 0.01f, kRoughnessRange,
+                    "0 = mirror-smooth, 1 = fully rough.", {.format = "%.2f", .slider = true});
     changed |=
         editColor("emissive", m.emissive, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     return changed;

@@ -20,7 +20,8 @@ void drawMeshInspector(editor::Document& document, int index, InspectorState& st
     FileField& field = state.meshFile;
     if (drawFileField("file", field, index, document.scene().meshes[std::size_t(index)].file,
                       "A .gltf or .glb file, relative to the scene file's folder. Enter or apply "
-                      "loads it; a file that does not load changes nothing.")) {
+                      "loads it; a file that does not load changes nothing.",
+                      editor::FileKind::Mesh)) {
         Scene candidate = document.scene();
         std::string error;
         if (editor::setMeshFile(candidate, index, field.text, diskFileSource(), error)) {
@@ -52,11 +53,12 @@ void drawMeshInspector(editor::Document& document, int index, InspectorState& st
     if (ImGui::InputText("animation", &mesh.animation)) document.markChanged("Animation");
     helpTooltip("The glTF animation shown, by name or index (\"0\"); empty for the rest pose.");
     float time = float(mesh.time);
-    if (ImGui::DragFloat("time", &time, 0.01f, 0.0f, 1.0e6f, "%.2f s")) {
-        mesh.time = std::max(0.0f, time);
+    // The reader takes any time >= 0.
+    if (numberField("time", &time, 1, 0.01f, {0.0, ParamRange{}.max, false, false, Unit::Seconds},
+                    "Seconds into the animation; drag to scrub.", {.format = "%.2f s"})) {
+        mesh.time = time;
         document.markChanged("Animation time");
     }
-    helpTooltip("Seconds into the animation; drag to scrub.");
     drawDuplicateDeleteButtons(commands);
 }
 

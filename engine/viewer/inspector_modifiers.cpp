@@ -20,8 +20,6 @@
 namespace rmsc::app {
 namespace {
 
-constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
-
 // "half_extents" -> "half extents".
 std::string labelOf(std::string_view key) {
     std::string label(key);
@@ -62,30 +60,32 @@ bool editParam(const ModifierParam& param, SdfModifier& m, float size) {
             auto& value = m.*member;
             using T = std::decay_t<decltype(value)>;
             if constexpr (std::is_same_v<T, float>) {
-                const editor::FloatFieldRange r = editor::floatFieldRange(spec.range);
-                return ImGui::DragFloat(label.c_str(), &value, dragStep(&value, 1, size), r.min,
-                                        r.max, "%.4f", kClamp);
+                return numberField(label.c_str(), &value, 1, dragStep(&value, 1, size), spec.range,
+                                   spec.description, {.format = "%.4f"});
             } else if constexpr (std::is_same_v<T, glm::vec3>) {
-                const editor::FloatFieldRange r = editor::floatFieldRange(spec.range);
-                return ImGui::DragFloat3(label.c_str(), &value.x, dragStep(&value.x, 3, size),
-                                         r.min, r.max, "%.4f", kClamp);
+                return numberField(label.c_str(), &value.x, 3, dragStep(&value.x, 3, size),
+                                   spec.range, spec.description, {.format = "%.4f"});
             } else if constexpr (std::is_same_v<T, int>) {
-                if (spec.type == ParamType::Axis)
-                    return ImGui::Combo(label.c_str(), &value, "x\0y\0z\0");
-                const editor::IntFieldRange r = editor::intFieldRange(spec.range);
-                return ImGui::DragInt(label.c_str(), &value, 0.1f, r.min, r.max, "%d", kClamp);
+                if (spec.type == ParamType::Axis) {
+                    const bool picked = ImGui::Combo(label.c_str(), &value, "x\0y\0z\0");
+                    helpTooltip(spec.description);
+                    return picked;
+                }
+                return numberField(label.c_str(), &value, 1, 0.1f, spec.range, spec.description);
             } else if constexpr (std::is_same_v<T, glm::ivec3>) {
-                const editor::IntFieldRange r = editor::intFieldRange(spec.range);
-                return ImGui::DragInt3(label.c_str(), &value.x, 0.1f, r.min, r.max, "%d", kClamp);
+                return numberField(label.c_str(), &value.x, 3, 0.1f, spec.range, spec.description);
             } else if constexpr (std::is_same_v<T, bool>) {
-                return ImGui::Checkbox(label.c_str(), &value);
+                const bool toggled = ImGui::Checkbox(label.c_str(), &value);
+                helpTooltip(spec.description);
+                return toggled;
             } else {
                 static_assert(std::is_same_v<T, glm::bvec3>);
-                return editAxes(value);
+                const bool picked = editAxes(value);
+                helpTooltip(spec.description);
+                return picked;
             }
         },
         param.field);
-    helpTooltip(spec.description);
     return changed;
 }
 

@@ -4,6 +4,9 @@
 
 #include <imgui.h>
 
+#include <utility>
+#include <vector>
+
 namespace rmsc::app {
 namespace {
 
@@ -38,6 +41,15 @@ void drawRenderTab(EditorSession& session, InspectorState& state, ViewSettings& 
 
 } // namespace
 
+FileField* takeBrowseRequest(InspectorState& state) {
+    std::vector<FileField*> fields = {&state.meshFile, &state.environment.skyFile};
+    for (FileField& field : state.textureFiles)
+        fields.push_back(&field);
+    for (FileField* field : fields)
+        if (std::exchange(field->browse, false)) return field;
+    return nullptr;
+}
+
 void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSettings& view,
                         const PanelLayout& layout, ViewerCommands& commands) {
     const ImGuiIO& io = ImGui::GetIO();
@@ -46,7 +58,7 @@ void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSetti
     ImGui::SetNextWindowSize(ImVec2(layout.rightPanelWidth, io.DisplaySize.y - top));
     ImGui::Begin("Inspector", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::PushItemWidth(-90);
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * (90.0f / 13.0f)); // labels: 90 px at scale 1
     if (ImGui::BeginTabBar("inspector tabs")) {
         if (ImGui::BeginTabItem("Object")) {
             drawObjectTab(session, state, commands);

@@ -22,26 +22,16 @@
 namespace rmsc::app {
 namespace {
 
-// A range's ends as drag bounds (editor/param_fields.hpp: what the reader accepts).
-void dragBounds(const ParamRange& range, float& lo, float& hi) {
-    const editor::FloatFieldRange r = editor::floatFieldRange(range);
-    lo = r.min;
-    hi = r.max;
-}
-
 // The polygon's corners, one row each, with buttons to add a corner after one and remove one
 // (within kMinPolygonPoints and kMaxPolygonPoints).
 bool editPoints(std::vector<glm::vec2>& points, const SdfParamSpec& spec, float step) {
-    float lo, hi;
-    dragBounds(spec.range, lo, hi);
     bool changed = false;
     ImGui::TextDisabled("%s", std::string(spec.key).c_str());
     helpTooltip(spec.description);
     for (std::size_t i = 0; i < points.size(); ++i) {
         ImGui::PushID(int(i));
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-        changed |= ImGui::DragFloat2("##point", &points[i].x, step, lo, hi, "%.3f",
-                                     ImGuiSliderFlags_AlwaysClamp);
+        changed |= numberField("##point", &points[i].x, 2, step, spec.range, spec.description);
         ImGui::SameLine();
         if (int(points.size()) < kMaxPolygonPoints && ImGui::SmallButton("+")) {
             // A new corner halfway to the next one.
@@ -67,9 +57,11 @@ bool editPoints(std::vector<glm::vec2>& points, const SdfParamSpec& spec, float 
 // rounded rectangle's corner radius stays within its half size).
 bool editParam(SdfProfile& profile, const ProfileParam& param, float step, float cap = FLT_MAX) {
     const SdfParamSpec& spec = param.spec;
-    float lo, hi;
-    dragBounds(spec.range, lo, hi);
-    hi = std::min(hi, cap);
+    ParamRange range = spec.range;
+    if (double(cap) < range.max) {
+        range.max = cap;
+        range.maxExclusive = false;
+    }
     const std::string key(spec.key);
     bool changed = false;
     std::visit(
@@ -77,16 +69,13 @@ bool editParam(SdfProfile& profile, const ProfileParam& param, float step, float
             auto& value = profile.*member;
             using Value = std::remove_reference_t<decltype(value)>;
             if constexpr (std::is_same_v<Value, float>)
-                changed = ImGui::DragFloat(key.c_str(), &value, step, lo, hi, "%.3f",
-                                           ImGuiSliderFlags_AlwaysClamp);
+                changed = numberField(key.c_str(), &value, 1, step, range, spec.description);
             else if constexpr (std::is_same_v<Value, glm::vec2>)
-                changed = ImGui::DragFloat2(key.c_str(), &value.x, step, lo, hi, "%.3f",
-                                            ImGuiSliderFlags_AlwaysClamp);
+                changed = numberField(key.c_str(), &value.x, 2, step, range, spec.description);
             else
                 changed = editPoints(value, spec, step);
         },
         param.field);
-    if (spec.type != ParamType::Points) helpTooltip(spec.description);
     return changed;
 }
 

@@ -1,6 +1,6 @@
 // The inspector's render settings (Render tab): march steps and distance, surface epsilon, the
 // environment (background, ambient), exposure, shadows, ambient occlusion and FXAA (see
-// inspector.hpp). The shadow and AO fields take the reader's ranges (scene/render_spec.hpp).
+// inspector.hpp). Every number field takes the reader's range and unit (scene/render_spec.hpp).
 #include "inspector.hpp"
 
 #include "editor/param_fields.hpp"
@@ -12,36 +12,44 @@
 namespace rmsc::app {
 namespace {
 
-bool dragInt(const char* label, int& value, const ParamRange& range) {
-    const editor::IntFieldRange r = editor::intFieldRange(range);
-    return ImGui::DragInt(label, &value, 1.0f, r.min, r.max, "%d", ImGuiSliderFlags_AlwaysClamp);
-}
-
 bool drawShadows(ShadowSettings& s) {
     bool changed = ImGui::Checkbox("shadows", &s.enabled);
     if (!s.enabled) return changed;
-    changed |= dragInt("shadow steps", s.steps, kShadowStepsRange);
+    changed |= numberField("shadow steps", &s.steps, 1, 1.0f, kShadowStepsRange,
+                           "SDF shadow-march steps per light and pixel.");
+    changed |= numberField("shadow softness", &s.softness, 1, 0.001f, kShadowSoftnessRange,
+                           "Penumbra width factor w of the SDF shadows (Quilez's k = 1 / w); a "
+                           "light's own softness overrides it.");
     changed |=
-        dragFloatInRange("shadow softness", s.softness, 0.001f, kShadowSoftnessRange, "%.3f");
-    changed |= dragFloatInRange("shadow min distance", s.minDistance, 0.001f,
-                                kShadowMinDistanceRange, "%.4f");
-    changed |= dragFloatInRange("shadow max distance", s.maxDistance, 0.5f, kShadowMaxDistanceRange,
-                                "%.1f");
+        numberField("shadow min distance", &s.minDistance, 1, 0.001f, kShadowMinDistanceRange,
+                    "The shadow march starts this far from the surface.", {.format = "%.4f"});
+    changed |= numberField("shadow max distance", &s.maxDistance, 1, 0.5f, kShadowMaxDistanceRange,
+                           "The shadow march gives up after this distance.", {.format = "%.1f"});
     if (!(s.maxDistance > s.minDistance)) s.maxDistance = s.minDistance * 2.0f; // reader's rule
-    changed |= dragInt("shadow map size", s.mapSize, kShadowMapSizeRange);
-    changed |= dragInt("shadow PCF radius", s.pcfRadius, kShadowPcfRadiusRange);
-    changed |= dragFloatInRange("shadow normal offset", s.normalOffset, 0.01f,
-                                kShadowNormalOffsetRange, "%.2f");
+    changed |= numberField("shadow map size", &s.mapSize, 1, 1.0f, kShadowMapSizeRange,
+                           "Shadow-map texels a side (meshes' shadows).");
+    changed |= numberField("shadow PCF radius", &s.pcfRadius, 1, 1.0f, kShadowPcfRadiusRange,
+                           "PCF kernel radius in shadow-map texels.");
     changed |=
-        dragFloatInRange("shadow slope bias", s.slopeBias, 0.01f, kShadowSlopeBiasRange, "%.2f");
+        numberField("shadow normal offset", &s.normalOffset, 1, 0.01f, kShadowNormalOffsetRange,
+                    "Shadow-map lookups move this many texels along the normal (against "
+                    "acne).",
+                    {.format = "%.2f"});
+    changed |= numberField("shadow slope bias", &s.slopeBias, 1, 0.01f, kShadowSlopeBiasRange,
+                           "Slope-scaled depth bias of the shadow-map pass (polygon offset "
+                           "factor).",
+                           {.format = "%.2f"});
     return changed;
 }
 
 bool drawAo(AoSettings& ao) {
-    bool changed = dragInt("AO samples", ao.samples, kAoSamplesRange);
+    bool changed = numberField("AO samples", &ao.samples, 1, 1.0f, kAoSamplesRange,
+                               "Ambient occlusion samples along the normal; 0 turns AO off.");
     if (ao.samples == 0) return changed;
-    changed |= dragFloatInRange("AO distance", ao.distance, 0.005f, kAoDistanceRange, "%.3f");
-    changed |= dragFloatInRange("AO strength", ao.strength, 0.01f, kAoStrengthRange, "%.2f");
+    changed |= numberField("AO distance", &ao.distance, 1, 0.005f, kAoDistanceRange,
+                           "Height of the farthest sample.");
+    changed |= numberField("AO strength", &ao.strength, 1, 0.01f, kAoStrengthRange,
+                           "0 = no darkening.", {.format = "%.2f"});
     return changed;
 }
 
@@ -50,17 +58,22 @@ bool drawAo(AoSettings& ao) {
 void drawRenderSettingsInspector(editor::Document& document) {
     RenderSettings& r = document.editScene().render;
     bool changed = false;
-    changed |=
-        ImGui::DragInt("max steps", &r.maxSteps, 1.0f, 1, 4096, "%d", ImGuiSliderFlags_AlwaysClamp);
-    changed |= ImGui::DragFloat("max distance", &r.maxDistance, 0.5f, 0.1f, 10000.0f, "%.1f",
-                                ImGuiSliderFlags_AlwaysClamp);
-    changed |=
-        ImGui::DragFloat("surface epsilon", &r.surfaceEpsilon, 0.00005f, 0.000001f, 0.1f, "%.6f",
-                         ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+    changed |= numberField("max steps", &r.maxSteps, 1, 1.0f, kMaxStepsRange,
+                           "Each ray stops after this many sphere-tracing steps.");
+    changed |= numberField("max distance", &r.maxDistance, 1, 0.5f, kMaxDistanceRange,
+                           "Rays stop after this distance.",
+                           {.format = "%.1f", .drag = editor::FloatFieldRange{0.1f, 1e4f}});
+    changed |= numberField("surface epsilon", &r.surfaceEpsilon, 1, 0.00005f, kSurfaceEpsilonRange,
+                           "A ray hits a surface when the distance falls below this times the "
+                           "distance travelled.",
+                           {.format = "%.6f",
+                            .flags = ImGuiSliderFlags_Logarithmic,
+                            .drag = editor::FloatFieldRange{0.000001f, 0.1f}});
     changed |= editColor("background", r.background);
     changed |= editColor("ambient", r.ambient);
-    changed |= ImGui::DragFloat("exposure", &r.exposure, 0.01f, 0.0f, 100.0f, "%.2f",
-                                ImGuiSliderFlags_AlwaysClamp);
+    changed |= numberField("exposure", &r.exposure, 1, 0.01f, kExposureRange,
+                           "Multiplies the HDR colour before tone mapping.",
+                           {.format = "%.2f", .drag = editor::FloatFieldRange{0.001f, 100.0f}});
     changed |= drawShadows(r.shadows);
     changed |= drawAo(r.ao);
     changed |= ImGui::Checkbox("FXAA", &r.fxaa);

@@ -37,12 +37,10 @@ void drawGroupFields(SdfNode& node, float size, editor::Document& document) {
         }
         ImGui::EndCombo();
     }
-    const editor::FloatFieldRange range = editor::smoothnessFieldRange();
     if (takesSmoothness(node.op) &&
-        ImGui::DragFloat("smoothness", &node.smoothness, stepFor(size) * 0.5f, range.min, range.max,
-                         "%.4f", ImGuiSliderFlags_AlwaysClamp))
+        numberField("smoothness", &node.smoothness, 1, stepFor(size) * 0.5f,
+                    smoothnessParam().range, smoothnessParam().description, {.format = "%.4f"}))
         document.markChanged("Smoothness");
-    helpTooltip(smoothnessParam().description);
     if (!takesBlend(node.op)) return;
     const std::span<const BlendSpec> blends = blendCatalogue();
     const auto current = std::find_if(blends.begin(), blends.end(),
@@ -139,14 +137,9 @@ void drawShapeFields(SdfNode& node, editor::Document& document, float size) {
         for (int c = 0; c < p.components; ++c)
             magnitude = std::max(magnitude, std::abs(value[c]));
         const float step = stepFor(std::max(magnitude, 0.1f));
-        const editor::FloatFieldRange range = editor::primitiveFieldRange(p);
-        const bool edited = p.components == 3
-                                ? ImGui::DragFloat3(name.c_str(), value, step, range.min, range.max,
-                                                    "%.3f", ImGuiSliderFlags_AlwaysClamp)
-                                : ImGui::DragFloat(name.c_str(), value, step, range.min, range.max,
-                                                   "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        if (edited) document.markChanged("Edit " + name);
-        helpTooltip(p.description);
+        if (numberField(name.c_str(), value, p.components, step, editor::primitiveParamRange(p),
+                        p.description))
+            document.markChanged("Edit " + name);
     }
 }
 

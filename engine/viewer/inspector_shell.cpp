@@ -44,9 +44,13 @@ bool editShell(SdfNode& node, const std::filesystem::path& sceneFolder) {
     }
     helpTooltip("Half extents of a box in the node's frame; needed for content that reaches "
                 "infinity (planes, unlimited repetition).");
+    // The reader's range of "bound": lengths in (0, 10000].
     if (shell.bound)
-        changed |= ImGui::DragFloat3("bound", &shell.bound->x, 0.01f, 1e-3f, 1e4f, "%.3f",
-                                     ImGuiSliderFlags_AlwaysClamp);
+        changed |=
+            numberField("bound", &shell.bound->x, 3, 0.01f, openClosedRange(0.0, 1e4, Unit::Metres),
+                        "Half extents of the box the content is clipped to, in the node's "
+                        "frame.",
+                        {.drag = editor::FloatFieldRange{1e-3f, 1e4f}});
     if (shell.proxy == ShellProxy::Mesh &&
         ImGui::InputText("mesh file", &shell.meshFile, ImGuiInputTextFlags_EnterReturnsTrue)) {
         shell.meshPath = (sceneFolder / shell.meshFile).lexically_normal();

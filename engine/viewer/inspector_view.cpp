@@ -21,12 +21,17 @@ namespace {
 bool editCameraFrame(Camera& camera, std::string& refusal) {
     Camera wanted = camera;
     ImGui::PushID("camera"); // the View section has a "target" of its own
-    bool edited = ImGui::DragFloat3("position", &wanted.position.x, 0.01f, 0.0f, 0.0f, "%.2f");
-    edited |= ImGui::DragFloat3("target", &wanted.target.x, 0.01f, 0.0f, 0.0f, "%.2f");
-    edited |= ImGui::DragFloat3("up", &wanted.up.x, 0.01f, 0.0f, 0.0f, "%.2f");
+    const NumberFieldStyle style{.format = "%.2f"};
+    bool edited =
+        numberField("position", &wanted.position.x, 3, 0.01f, unboundedRange(Unit::Metres),
+                    "Where the scene's camera is. \"Save camera to scene\" sets "
+                    "position, target and up from the view.",
+                    style);
+    edited |= numberField("target", &wanted.target.x, 3, 0.01f, unboundedRange(Unit::Metres),
+                          "The point the scene's camera looks at (not its position).", style);
+    edited |= numberField("up", &wanted.up.x, 3, 0.01f, unboundedRange(Unit::None),
+                          "The direction shown upwards (not along the view).", style);
     ImGui::PopID();
-    helpTooltip("The scene's camera looks from its position at its target; up is the "
-                "direction shown upwards. \"Save camera to scene\" sets all three from the view.");
     if (!edited) return false;
     std::string error;
     if (!editor::setCameraFrame(camera, wanted, error)) {
@@ -46,17 +51,21 @@ void drawCameraInspector(EditorSession& session, std::string& refusal) {
     drawRefusal(refusal);
     // The lens within the reader's ranges, narrowed to usable values: fov 1 to 170 degrees, near
     // from 0.0001, far up to 1e5 and kept at least twice near (the reader wants far > near).
-    const editor::FloatFieldRange fov = editor::floatFieldRange(kCameraFovRange);
+    // (Typed values are clamped to the reader's ranges, with far kept above near.)
     bool cameraChanged =
-        ImGui::DragFloat("fov", &c.fovYDegrees, 0.2f, std::max(fov.min, 1.0f),
-                         std::min(fov.max, 170.0f), "%.1f°", ImGuiSliderFlags_AlwaysClamp);
-    const editor::FloatFieldRange near = editor::floatFieldRange(kCameraNearRange);
-    const editor::FloatFieldRange far = editor::floatFieldRange(kCameraFarRange);
-    cameraChanged |= ImGui::DragFloat("near", &c.nearPlane, 0.001f, std::max(near.min, 0.0001f),
-                                      c.farPlane * 0.5f, "%.4f", ImGuiSliderFlags_AlwaysClamp);
-    cameraChanged |=
-        ImGui::DragFloat("far", &c.farPlane, 0.5f, c.nearPlane * 2.0f, std::min(far.max, 1e5f),
-                         "%.1f", ImGuiSliderFlags_AlwaysClamp);
+        numberField("fov", &c.fovYDegrees, 1, 0.2f, kCameraFovRange, "The vertical field of view.",
+                    {.format = "%.1f°", .drag = editor::FloatFieldRange{1, 170}});
+    ParamRange nearRange = kCameraNearRange;
+    nearRange.max = c.farPlane;
+    nearRange.maxExclusive = true;
+    cameraChanged |= numberField(
+        "near", &c.nearPlane, 1, 0.001f, nearRange, "Nothing nearer than this is drawn.",
+        {.format = "%.4f", .drag = editor::FloatFieldRange{0.0001f, c.farPlane * 0.5f}});
+    ParamRange farRange = kCameraFarRange;
+    farRange.min = c.nearPlane;
+    cameraChanged |= numberField(
+        "far", &c.farPlane, 1, 0.5f, farRange, "Nothing farther than this is drawn (beyond near).",
+        {.format = "%.1f", .drag = editor::FloatFieldRange{c.nearPlane * 2.0f, 1e5f}});
     if (cameraChanged) {
         session.sceneCamera.fovYDegrees = c.fovYDegrees;
         session.sceneCamera.nearPlane = c.nearPlane;
@@ -75,16 +84,18 @@ void drawCameraInspector(EditorSession& session, std::string& refusal) {
                 "rays; sizes do not shrink with distance). The view's own projection is numpad "
                 "5 or View > Orthographic.");
     if (c.projection == CameraProjection::Orthographic) {
-        const editor::FloatFieldRange height = editor::floatFieldRange(kCameraOrthoHeightRange);
-        if (ImGui::DragFloat("ortho height", &c.orthoHeight, 0.02f, std::max(height.min, 1e-4f),
-                             std::min(height.max, 1e5f), "%.3f m", ImGuiSliderFlags_AlwaysClamp))
+        if (numberField("ortho height", &c.orthoHeight, 1, 0.02f, kCameraOrthoHeightRange,
+                        "The height of the orthographic view.",
+                        {.format = "%.3f m", .drag = editor::FloatFieldRange{1e-4f, 1e5f}}))
             session.document.markChanged("Camera ortho height");
-        helpTooltip("The height of the orthographic view, world units (> 0)");
     }
     if (ImGui::Button("Save camera to scene")) session.saveCameraToScene();
     ImGui::SameLine();
     if (ImGui::Button("Reset to scene camera")) session.resetCamera();
-    ImGui::DragFloat("fly speed", &session.camera.speed, 0.05f, 0.01f, 1000.0f, "%.2f m/s");
+    numberField("fly speed", &session.camera.speed, 1, 0.05f,
+                closedRange(0.01, 1000.0, Unit::MetresPerSecond),
+                "How fast W / A / S / D fly (the wheel over the view sets it too).",
+                {.format = "%.2f m/s"});
 }
 
 void drawViewInspector(ViewSettings& view) {
@@ -93,8 +104,10 @@ void drawViewInspector(ViewSettings& view) {
     int mode = int(view.mode);
     if (ImGui::Combo("show", &mode, names, 5)) view.mode = ViewMode(mode);
     ImGui::Checkbox("adaptive resolution", &view.adaptive.enabled);
-    ImGui::DragFloat("target", &view.adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f,
-                     "%.0f ms/frame");
+    numberField("target", &view.adaptive.targetMilliseconds, 1, 0.5f,
+                closedRange(5.0, 500.0, Unit::Milliseconds),
+                "The frame time the adaptive resolution holds while the view changes.",
+                {.format = "%.0f ms/frame"});
 }
 
 } // namespace rmsc::app

@@ -9,6 +9,7 @@
 #include "scene/light_spec.hpp"
 #include "sdf/operations.hpp"
 #include "sdf/profiles.hpp"
+#include "shortcuts.hpp"
 #include "view_shortcuts.hpp"
 
 #include <imgui.h>
@@ -18,12 +19,40 @@
 namespace rmsc::app {
 namespace {
 
-void drawFileMenu(const editor::Document& document, bool exporting, ViewerCommands& commands) {
+using editor::ShortcutAction;
+
+// File > Open Recent: the newest first; a file that no longer exists is greyed.
+void drawRecentMenu(const std::vector<std::filesystem::path>& recent, ViewerCommands& commands) {
+    if (!ImGui::BeginMenu("Open Recent", !recent.empty())) return;
+    bool missing = false;
+    for (std::size_t i = 0; i < recent.size(); ++i) {
+        std::error_code ec;
+        const bool exists = std::filesystem::exists(recent[i], ec);
+        missing = missing || !exists;
+        const std::string label = recent[i].filename().string() + (exists ? "" : " (missing)") +
+                                  "##recent" + std::to_string(i);
+        if (ImGui::MenuItem(label.c_str(), nullptr, false, exists))
+            commands.push_back({ViewerCommand::OpenFile, recent[i]});
+        helpTooltip(recent[i].string());
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Remove missing files", nullptr, false, missing))
+        commands.push_back(ViewerCommand::ForgetMissingRecent);
+    if (ImGui::MenuItem("Clear the list")) commands.push_back(ViewerCommand::ClearRecent);
+    ImGui::EndMenu();
+}
+
+void drawFileMenu(const editor::Document& document, bool exporting,
+                  const std::vector<std::filesystem::path>& recent, ViewerCommands& commands) {
     if (!ImGui::BeginMenu("File")) return;
     if (ImGui::MenuItem("New")) commands.push_back(ViewerCommand::NewScene);
-    if (ImGui::MenuItem("Open...", "Ctrl+O")) commands.push_back(ViewerCommand::Open);
-    if (ImGui::MenuItem("Save", "Ctrl+S")) commands.push_back(ViewerCommand::Save);
-    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) commands.push_back(ViewerCommand::SaveAs);
+    if (ImGui::MenuItem("Open...", menuShortcut(ShortcutAction::Open)))
+        commands.push_back(ViewerCommand::Open);
+    drawRecentMenu(recent, commands);
+    if (ImGui::MenuItem("Save", menuShortcut(ShortcutAction::Save)))
+        commands.push_back(ViewerCommand::Save);
+    if (ImGui::MenuItem("Save As...", menuShortcut(ShortcutAction::SaveAs)))
+        commands.push_back(ViewerCommand::SaveAs);
     ImGui::Separator();
     // One export at a time: the items wait while one runs.
     if (ImGui::MenuItem("Export scene...", nullptr, false, !exporting && document.scene().sdf))
@@ -32,7 +61,8 @@ void drawFileMenu(const editor::Document& document, bool exporting, ViewerComman
                         !exporting && canExportSelection(document)))
         commands.push_back(ViewerCommand::ExportSelection);
     ImGui::Separator();
-    if (ImGui::MenuItem("Screenshot", "F12")) commands.push_back(ViewerCommand::Screenshot);
+    if (ImGui::MenuItem("Screenshot", menuShortcut(ShortcutAction::Screenshot)))
+        commands.push_back(ViewerCommand::Screenshot);
     ImGui::Separator();
     if (ImGui::MenuItem("Quit")) commands.push_back(ViewerCommand::Quit);
     ImGui::EndMenu();
@@ -42,17 +72,21 @@ void drawEditMenu(editor::Document& document, ViewerCommands& commands) {
     if (!ImGui::BeginMenu("Edit")) return;
     const std::string undo = "Undo " + document.undoLabel();
     const std::string redo = "Redo " + document.redoLabel();
-    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, document.canUndo()))
+    if (ImGui::MenuItem(undo.c_str(), menuShortcut(ShortcutAction::Undo), false,
+                        document.canUndo()))
         commands.push_back(ViewerCommand::Undo);
-    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, document.canRedo()))
+    if (ImGui::MenuItem(redo.c_str(), menuShortcut(ShortcutAction::Redo), false,
+                        document.canRedo()))
         commands.push_back(ViewerCommand::Redo);
     ImGui::Separator();
     const bool selected = !document.selection.empty();
-    if (ImGui::MenuItem("Copy", "Ctrl+C", false, selected)) commands.push_back(ViewerCommand::Copy);
-    if (ImGui::MenuItem("Paste", "Ctrl+V")) commands.push_back(ViewerCommand::Paste);
-    if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, selected))
+    if (ImGui::MenuItem("Copy", menuShortcut(ShortcutAction::Copy), false, selected))
+        commands.push_back(ViewerCommand::Copy);
+    if (ImGui::MenuItem("Paste", menuShortcut(ShortcutAction::Paste)))
+        commands.push_back(ViewerCommand::Paste);
+    if (ImGui::MenuItem("Duplicate", menuShortcut(ShortcutAction::Duplicate), false, selected))
         commands.push_back(ViewerCommand::Duplicate);
-    if (ImGui::MenuItem("Delete", "Del", false, selected))
+    if (ImGui::MenuItem("Delete", menuShortcut(ShortcutAction::Delete), false, selected))
         commands.push_back(ViewerCommand::Delete);
     // The selected SDF nodes into a new group of the chosen operation (Ctrl+G: union).
     const bool groupable =
@@ -60,7 +94,8 @@ void drawEditMenu(editor::Document& document, ViewerCommands& commands) {
     if (ImGui::BeginMenu("Group selection", groupable)) {
         for (const OperationSpec& op : operationCatalogue()) {
             if (ImGui::MenuItem(operationLabel(op.op).c_str(),
-                                op.op == SdfOp::Union ? "Ctrl+G" : nullptr))
+                                op.op == SdfOp::Union ? menuShortcut(ShortcutAction::GroupUnion)
+                                                      : nullptr))
                 groupSelection(document, op.op);
             helpTooltip(op.description);
         }
@@ -102,6 +137,12 @@ void drawAddMenu(editor::Document& document, const NewShapePlace& place, ViewerC
         ImGui::EndMenu();
     }
     if (ImGui::MenuItem("glTF mesh from a file...")) commands.push_back(ViewerCommand::AddMesh);
+    ImGui::Separator();
+    // At the mouse, which is over this menu now: Shift+A over the view puts it there. (The keys
+    // in the label, not as a shortcut column, which would widen the menu.)
+    const std::string search =
+        "Search... (" + std::string(editor::shortcutKeys(ShortcutAction::AddSearch)) + ")";
+    if (ImGui::MenuItem(search.c_str())) commands.push_back(ViewerCommand::AddSearch);
     ImGui::EndMenu();
 }
 
@@ -140,14 +181,18 @@ void drawViewMenu(EditorSession& session, ViewSettings& view, Messages& messages
     ImGui::MenuItem("Overlay", nullptr, &view.showOverlay);
     ImGui::MenuItem("Light markers", nullptr, &view.showLights);
     ImGui::MenuItem("Adaptive resolution", nullptr, &view.adaptive.enabled);
-    ImGui::SetNextItemWidth(120);
-    ImGui::DragFloat("target ms", &view.adaptive.targetMilliseconds, 0.5f, 5.0f, 500.0f, "%.0f ms");
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * (120.0f / 13.0f));
+    numberField("target ms", &view.adaptive.targetMilliseconds, 1, 0.5f,
+                closedRange(5.0, 500.0, Unit::Milliseconds),
+                "The frame time the adaptive resolution holds while the view changes.",
+                {.format = "%.0f ms"});
     ImGui::EndMenu();
 }
 
 void drawCameraMenu(EditorSession& session, Messages& messages, ViewerCommands& commands) {
     if (!ImGui::BeginMenu("Camera")) return;
-    if (ImGui::MenuItem("Frame selection", "F")) commands.push_back(ViewerCommand::FrameSelection);
+    if (ImGui::MenuItem("Frame selection", menuShortcut(ShortcutAction::FrameSelection)))
+        commands.push_back(ViewerCommand::FrameSelection);
     if (ImGui::MenuItem("Save camera to scene")) commands.push_back(ViewerCommand::SaveCamera);
     if (ImGui::MenuItem("Reset to scene camera")) commands.push_back(ViewerCommand::ResetCamera);
     ImGui::Separator();
@@ -174,16 +219,26 @@ void drawCameraMenu(EditorSession& session, Messages& messages, ViewerCommands& 
     ImGui::EndMenu();
 }
 
+void drawHelpMenu(ViewerCommands& commands) {
+    if (!ImGui::BeginMenu("Help")) return;
+    if (ImGui::MenuItem("Keyboard shortcuts", menuShortcut(ShortcutAction::ShortcutSheet)))
+        commands.push_back(ViewerCommand::ShortcutSheet);
+    ImGui::MenuItem("Hover a field for its unit and range", nullptr, false, false);
+    ImGui::EndMenu();
+}
+
 } // namespace
 
 void drawMenus(EditorSession& session, ViewSettings& view, const NewShapePlace& place,
-               bool exporting, Messages& messages, ViewerCommands& commands) {
+               bool exporting, const std::vector<std::filesystem::path>& recent, Messages& messages,
+               ViewerCommands& commands) {
     editor::Document& document = session.document;
-    drawFileMenu(document, exporting, commands);
+    drawFileMenu(document, exporting, recent, commands);
     drawEditMenu(document, commands);
     drawAddMenu(document, place, commands);
     drawViewMenu(session, view, messages);
     drawCameraMenu(session, messages, commands);
+    drawHelpMenu(commands);
 }
 
 void drawMenuBarTitle(const editor::Document& document) {

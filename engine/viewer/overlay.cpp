@@ -34,12 +34,34 @@ void drawGestureHint(const editor::TransformGesture& g) {
                        axis.c_str());
 }
 
+// The background shader build as a progress bar: "building shaders 2 of 3 (better maps), 4.1 s"
+// (editor/build_progress.hpp); nothing while nothing builds.
+void drawBuildProgress(const ViewStatus& status) {
+    if (status.build.total <= 0) return;
+    const std::string text = editor::buildProgressText(status.build);
+    ImGui::ProgressBar(
+        editor::buildProgressFraction(status.build),
+        ImVec2(ImGui::CalcTextSize(text.c_str()).x + ImGui::GetStyle().FramePadding.x * 4.0f, 0.0f),
+        text.c_str());
+    if (status.newestScenePending)
+        ImGui::TextColored(ImVec4(1, 0.7f, 0.2f, 1), "the newest scene shows once they are built");
+}
+
 } // namespace
 
 void drawStatusOverlay(const Rect& viewport, const ViewStatus& status, float frameMilliseconds,
                        const ViewSettings& view, float flySpeed,
                        const editor::TransformGesture* gesture, const Messages& messages) {
-    if (!view.showOverlay) return;
+    if (!view.showOverlay) {
+        // The build's progress shows even without the overlay.
+        if (status.build.total <= 0) return;
+        ImGui::SetNextWindowPos(ImVec2(viewport.x + 8, viewport.y + 8));
+        ImGui::SetNextWindowBgAlpha(0.55f);
+        ImGui::Begin("overlay", nullptr, kFixed | ImGuiWindowFlags_NoInputs);
+        drawBuildProgress(status);
+        ImGui::End();
+        return;
+    }
     ImGui::SetNextWindowPos(ImVec2(viewport.x + 8, viewport.y + 8));
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("overlay", nullptr, kFixed | ImGuiWindowFlags_NoInputs);
@@ -51,13 +73,11 @@ void drawStatusOverlay(const Rect& viewport, const ViewStatus& status, float fra
         ImGui::Text("render scale %.0f%% (%dx%d), refining: %d rows", status.renderScale * 100.0f,
                     status.width, status.height, status.refinedRows);
     const std::string_view map = editor::editingMapName(status.map);
-    ImGui::Text("SDF map: %.*s%s%s", int(map.size()), map.data(),
+    ImGui::Text("SDF map: %.*s%s", int(map.size()), map.data(),
                 status.map == editor::EditingMapKind::Baked && status.selectionLive
                     ? ", selection live"
-                    : "",
-                status.newestScenePending ? " (the newest scene shows once its shaders are built)"
-                : status.buildingMaps     ? " (building better ones)"
-                                          : "");
+                    : "");
+    drawBuildProgress(status);
     const char* names[] = {"colour", "normals", "depth", "object id", "march steps"};
     ImGui::Text("view: %s   speed %.2f m/s", names[int(view.mode)], flySpeed);
     if (gesture) drawGestureHint(*gesture);

@@ -1,5 +1,7 @@
 // What is drawn over the view: the status overlay (frame and render times, render scale, the SDF
-// map drawn, view mode and fly speed, the gesture running, recent notices) and the problems box
+// map drawn with a progress bar while shaders build in the background, view mode and fly speed,
+// the gesture running, recent notices; the progress bar alone when the overlay is hidden) and
+// the problems box
 // (open, scene, shader and file errors, with a button that dismisses the open and file ones).
 #pragma once
 

@@ -5,10 +5,11 @@
 
 namespace rmsc::app {
 
-PanelLayout layoutPanels(int windowWidth, int windowHeight, float menuHeight) {
+PanelLayout layoutPanels(int windowWidth, int windowHeight, float menuHeight, float uiScale) {
     PanelLayout layout;
-    layout.leftPanelWidth = std::clamp(float(windowWidth) * 0.24f, 150.0f, 270.0f);
-    layout.rightPanelWidth = std::clamp(float(windowWidth) * 0.28f, 200.0f, 340.0f);
+    const float w = float(windowWidth);
+    layout.leftPanelWidth = std::min(std::clamp(w * 0.24f, 150.0f, 270.0f * uiScale), w * 0.35f);
+    layout.rightPanelWidth = std::min(std::clamp(w * 0.28f, 200.0f, 340.0f * uiScale), w * 0.4f);
     layout.viewport = {
         layout.leftPanelWidth, menuHeight,
         std::max(1.0f, float(windowWidth) - layout.leftPanelWidth - layout.rightPanelWidth),

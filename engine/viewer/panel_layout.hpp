@@ -21,8 +21,9 @@ struct PanelLayout {
 };
 
 // The layout of a window of `windowWidth` x `windowHeight` pixels under a menu bar `menuHeight`
-// high: panels take at most about half of a small window.
-PanelLayout layoutPanels(int windowWidth, int windowHeight, float menuHeight);
+// high, with the panels' sizes scaled by `uiScale` (--ui-scale): panels take at most about half
+// of a small window.
+PanelLayout layoutPanels(int windowWidth, int windowHeight, float menuHeight, float uiScale = 1.0f);
 
 // The view's rectangle in framebuffer pixels (y from the bottom, as GL counts), with the size
 // of the whole framebuffer.

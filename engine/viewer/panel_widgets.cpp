@@ -17,11 +17,77 @@ void helpTooltip(std::string_view text) {
         ImGui::SetTooltip("%.*s", int(text.size()), text.data());
 }
 
-bool dragFloatInRange(const char* label, float& value, float step, const ParamRange& range,
-                      const char* format) {
-    const editor::FloatFieldRange r = editor::floatFieldRange(range);
-    return ImGui::DragFloat(label, &value, step, r.min, r.max, format,
-                            ImGuiSliderFlags_AlwaysClamp);
+namespace {
+
+// Where a field keeps when it last clamped a value: the window's state storage, under a key of
+// its own beside the widget's id (ImGui keeps a tree node's state the same way).
+ImGuiID clampKey(const char* label) {
+    ImGui::PushID(label);
+    const ImGuiID key = ImGui::GetID("clamped at");
+    ImGui::PopID();
+    return key;
+}
+
+// After the widget: the tooltip, the clamp's time kept, and the notice while it shows.
+void finishNumberField(const char* label, bool changed, bool clamped, const ParamRange& range,
+                       std::string_view help) {
+    if (ImGui::IsItemHovered()) {
+        const std::string text = editor::fieldHelp(help, range);
+        ImGui::SetTooltip("%s", text.c_str());
+    }
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID key = clampKey(label);
+    if (clamped)
+        storage->SetFloat(key, float(ImGui::GetTime()));
+    else if (changed)
+        storage->SetFloat(key, -1.0f); // a value within the range: the notice goes
+    if (editor::clampNoticeShown(double(storage->GetFloat(key, -1.0f)), ImGui::GetTime())) {
+        const std::string notice = editor::clampNotice(range);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.72f, 0.25f, 1.0f));
+        ImGui::TextUnformatted(notice.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+} // namespace
+
+bool numberField(const char* label, float* values, int components, float step,
+                 const ParamRange& range, std::string_view help, const NumberFieldStyle& style) {
+    const editor::FloatFieldRange valid = editor::floatFieldRange(range);
+    const editor::FloatFieldRange drag = style.drag.value_or(valid);
+    const int flags = style.flags & ~ImGuiSliderFlags_AlwaysClamp;
+    const bool changed =
+        style.slider && components == 1
+            ? ImGui::SliderFloat(label, values, drag.min, drag.max, style.format, flags)
+            : ImGui::DragScalarN(label, ImGuiDataType_Float, values, components, step, &drag.min,
+                                 &drag.max, style.format, flags);
+    bool clamped = false;
+    if (changed) {
+        for (int c = 0; c < components; ++c) {
+            const editor::ClampedValue v = editor::clampToField(values[c], valid);
+            values[c] = v.value;
+            clamped |= v.clamped;
+        }
+    }
+    finishNumberField(label, changed, clamped, range, help);
+    return changed;
+}
+
+bool numberField(const char* label, int* values, int components, float step,
+                 const ParamRange& range, std::string_view help) {
+    const editor::IntFieldRange valid = editor::intFieldRange(range);
+    const bool changed = ImGui::DragScalarN(label, ImGuiDataType_S32, values, components, step,
+                                            &valid.min, &valid.max, "%d");
+    bool clamped = false;
+    if (changed) {
+        for (int c = 0; c < components; ++c) {
+            const editor::ClampedInt v = editor::clampToField(values[c], valid);
+            values[c] = v.value;
+            clamped |= v.clamped;
+        }
+    }
+    finishNumberField(label, changed, clamped, range, help);
+    return changed;
 }
 
 float stepFor(float size) {
@@ -31,18 +97,23 @@ float stepFor(float size) {
 bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float size) {
     bool changed = false;
     glm::vec3 position = world ? glm::vec3(parentWorld * glm::vec4(t.position, 1.0f)) : t.position;
-    if (ImGui::DragFloat3("position", &position.x, stepFor(size))) {
+    if (numberField("position", &position.x, 3, stepFor(size), unboundedRange(Unit::Metres),
+                    world ? "Where the object's origin is, in world coordinates."
+                          : "Where the object's origin is, in its parent's frame.")) {
         t.position =
             world ? glm::vec3(glm::inverse(parentWorld) * glm::vec4(position, 1.0f)) : position;
         changed = true;
     }
     glm::vec3 euler = glm::degrees(glm::eulerAngles(t.rotation));
-    if (ImGui::DragFloat3("rotation", &euler.x, 0.5f, -360.0f, 360.0f, "%.1f°")) {
+    if (numberField("rotation", &euler.x, 3, 0.5f, closedRange(-360.0, 360.0, Unit::Degrees),
+                    "Turns about x, then y, then z (Euler angles; the file keeps a quaternion).",
+                    {.format = "%.1f°"})) {
         t.rotation = glm::quat(glm::radians(euler));
         changed = true;
     }
-    if (ImGui::DragFloat3("scale", &t.scale.x, 0.005f, 0.001f, 1000.0f, "%.3f",
-                          ImGuiSliderFlags_AlwaysClamp))
+    // The reader takes any scale > 0; the inspector keeps to three orders of magnitude each way.
+    if (numberField("scale", &t.scale.x, 3, 0.005f, closedRange(0.001, 1000.0, Unit::Ratio),
+                    "Scale along the object's own x, y, z (1 = unchanged)."))
         changed = true;
     return changed;
 }

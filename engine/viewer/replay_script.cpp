@@ -1,6 +1,8 @@
 // Replay scripts (see replay_script.hpp).
 #include "replay_script.hpp"
 
+#include "key_names.hpp"
+
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -10,36 +12,7 @@ namespace rmsc::app {
 namespace {
 
 int keyCode(const std::string& name) {
-    static const std::map<std::string, int> named = {
-        {"space", GLFW_KEY_SPACE},
-        {"escape", GLFW_KEY_ESCAPE},
-        {"enter", GLFW_KEY_ENTER},
-        {"tab", GLFW_KEY_TAB},
-        {"backspace", GLFW_KEY_BACKSPACE},
-        {"delete", GLFW_KEY_DELETE},
-        {"left", GLFW_KEY_LEFT},
-        {"right", GLFW_KEY_RIGHT},
-        {"up", GLFW_KEY_UP},
-        {"down", GLFW_KEY_DOWN},
-        {"ctrl", GLFW_KEY_LEFT_CONTROL},
-        {"left_ctrl", GLFW_KEY_LEFT_CONTROL},
-        {"shift", GLFW_KEY_LEFT_SHIFT},
-        {"left_shift", GLFW_KEY_LEFT_SHIFT},
-        {"right_shift", GLFW_KEY_RIGHT_SHIFT},
-        {"alt", GLFW_KEY_LEFT_ALT},
-        {"f12", GLFW_KEY_F12},
-        {"f1", GLFW_KEY_F1},
-    };
-    if (auto it = named.find(name); it != named.end()) return it->second;
-    // The numpad's digits: kp_0 .. kp_9.
-    if (name.size() == 4 && name.compare(0, 3, "kp_") == 0 && name[3] >= '0' && name[3] <= '9')
-        return GLFW_KEY_KP_0 + (name[3] - '0');
-    if (name.size() == 1) {
-        const char c = name[0];
-        if (c >= 'a' && c <= 'z') return GLFW_KEY_A + (c - 'a');
-        if (c >= '0' && c <= '9') return GLFW_KEY_0 + (c - '0');
-    }
-    return -1;
+    return glfwKeyNamed(name);
 }
 
 int buttonCode(const std::string& name) {
@@ -117,13 +90,15 @@ std::optional<Script> parseScript(const std::string& text, const std::string& fi
             float dy = 0;
             if (!(in >> dy)) return fail("expected: wheel DY");
             script.events.push_back({frame, K::Wheel, 0, {0.0f, dy}, {}, lineNumber});
-        } else if (verb == "text" || verb == "screenshot" || verb == "window-shot") {
+        } else if (verb == "text" || verb == "drop" || verb == "screenshot" ||
+                   verb == "window-shot") {
             std::string rest;
             std::getline(in >> std::ws, rest);
             while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\r'))
                 rest.pop_back();
             if (rest.empty()) return fail("expected text or a path after '" + verb + "'");
             const K kind = verb == "text"         ? K::Text
+                           : verb == "drop"       ? K::Drop
                            : verb == "screenshot" ? K::Screenshot
                                                   : K::WindowShot;
             script.events.push_back({frame, kind, 0, {}, rest, lineNumber});
@@ -185,6 +160,11 @@ void playScriptFrame(const Script& script, int frame, double time, editor::Input
             event.kind = E::Scroll;
             event.value = e.value;
             break;
+        case K::Drop:
+            event = dropEvent(e.text);
+            event.time = time;
+            queue.push(event);
+            continue;
         case K::Text:
             event.kind = E::Char;
             event.mods = mods;

@@ -2,7 +2,8 @@
 // tests (and bug reports) can drive the real viewer. One event per line, '#' starts a comment:
 //
 //   FRAME key KEYS            press at FRAME, release at FRAME+1; KEYS like w, ctrl+z,
-//                             ctrl+shift+z, f12, escape, enter, space, delete, left_shift
+//                             ctrl+shift+z, f12, escape, enter, space, delete, left_shift,
+//                             kp_7 (the numpad's digits; viewer/key_names.hpp)
 //   FRAME hold KEY N          hold KEY down for N frames
 //   FRAME move X Y            mouse to window pixel (X, Y), top-left origin
 //   FRAME down BUTTON         BUTTON: left | right | middle
@@ -10,6 +11,8 @@
 //   FRAME click X Y           move there, press left at FRAME, release at FRAME+1
 //   FRAME wheel DY
 //   FRAME text STRING         typed characters (the rest of the line)
+//   FRAME drop PATH           the file PATH dropped on the window (the event GLFW's drop
+//                             callback queues)
 //   FRAME screenshot PATH     the rendered view at full resolution, as PNG
 //   FRAME window-shot PATH    the whole window with the editor panels, as PNG
 //   FRAME wait-shaders        wait until the shaders being built in the background are built
@@ -44,6 +47,7 @@ struct ScriptEvent {
         ButtonUp,
         Wheel,
         Text,
+        Drop,
         Screenshot,
         WindowShot,
         WaitShaders,

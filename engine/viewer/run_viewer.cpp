@@ -5,10 +5,15 @@
 #include "viewer/viewer.hpp"
 
 #include "core/exit_code.hpp"
+#include "editor/ui_scale.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace rmsc::app {
@@ -34,6 +39,15 @@ int runViewer(const ViewerOptions& options) {
     io.IniFilename = nullptr; // no imgui.ini next to the user's files
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0.0f;
+    // The panels' scale: --ui-scale, or the display's content scale (200% on a dense display).
+    float contentX = 1.0f, contentY = 1.0f;
+    glfwGetWindowContentScale(window->handle(), &contentX, &contentY);
+    const float scale = editor::uiScale(options.uiScale, contentX, contentY);
+    ImFontConfig font;
+    font.SizePixels = std::round(13.0f * scale); // the default font's size at scale 1
+    io.Fonts->AddFontDefault(&font);
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    if (scale != 1.0f) std::fprintf(stderr, "rmsc view: panels at %.2fx\n", double(scale));
     setupImGuiInput();
     ImGui_ImplOpenGL3_Init("#version 450 core");
     int code = kExitOk;

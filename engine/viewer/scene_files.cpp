@@ -1,6 +1,7 @@
 // Opening, saving, recovering and reloading the scene file (see scene_files.hpp).
 #include "scene_files.hpp"
 
+#include "editor/recent_files.hpp"
 #include "editor/recovery.hpp"
 #include "prepare/prepared_scene.hpp"
 #include "scene/scene_json.hpp"
@@ -29,7 +30,10 @@ void openStartScene(const std::filesystem::path& path, EditorSession& session, S
         }
     } else {
         std::optional<Scene> scene = editor::loadSceneForEditing(path, diagnostics);
-        if (scene) document.reset(*scene, path);
+        if (scene) {
+            document.reset(*scene, path);
+            rememberFile(files, path, messages);
+        }
         files.watcher = editor::FileWatcher(path); // a broken file that gets fixed loads then
     }
     if (diagnostics.hasErrors()) {
@@ -52,6 +56,7 @@ void openSceneFile(const std::filesystem::path& path, EditorSession& session, Sc
     session.document.reset(*scene, path);
     files.watcher = editor::FileWatcher(path);
     session.resetCamera();
+    rememberFile(files, path, messages);
     messages.fileError.clear();
     messages.sceneError.clear();
     messages.notice("opened " + path.string());
@@ -77,6 +82,7 @@ void saveSceneAs(const std::filesystem::path& path, editor::Document& document, 
     editor::removeRecovery(path);
     messages.fileError.clear();
     files.watcher = editor::FileWatcher(path); // our own write is not an external change
+    rememberFile(files, path, messages);
     messages.notice("saved " + path.string());
 }
 
@@ -118,6 +124,36 @@ bool reloadChangedSceneFile(EditorSession& session, SceneFiles& files, Messages&
         messages.notice("reloaded " + path.string() + " (changed on disk)");
     }
     return false;
+}
+
+namespace {
+
+void writeRecent(const SceneFiles& files, Messages& messages) {
+    if (files.recentFile.empty()) return;
+    std::string error;
+    if (!editor::saveRecentFiles(files.recentFile, files.recent, error))
+        messages.notice("cannot keep the recent files: " + error);
+}
+
+} // namespace
+
+void loadRecentFiles(SceneFiles& files, Messages& messages) {
+    std::string error;
+    files.recent = editor::loadRecentFiles(files.recentFile, error);
+    if (!error.empty()) messages.notice("the recent files start anew: " + error);
+}
+
+void rememberFile(SceneFiles& files, const std::filesystem::path& path, Messages& messages) {
+    editor::addRecentFile(files.recent, path);
+    writeRecent(files, messages);
+}
+
+void forgetRecentFiles(SceneFiles& files, bool onlyMissing, Messages& messages) {
+    if (onlyMissing)
+        editor::removeMissingFiles(files.recent);
+    else
+        files.recent.clear();
+    writeRecent(files, messages);
 }
 
 } // namespace rmsc::app

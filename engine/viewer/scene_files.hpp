@@ -1,6 +1,7 @@
 // The edited scene's file: the scene named on the command line, Open, New, Save As (atomic,
 // editor/document.hpp), the recovery file written while there are unsaved edits
-// (editor/recovery.hpp), and reloading when the file changes on disk.
+// (editor/recovery.hpp), reloading when the file changes on disk, and the recent files (every
+// scene file opened or saved goes first in the list, editor/recent_files.hpp).
 #pragma once
 
 #include "editor/file_watcher.hpp"
@@ -9,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace rmsc::app {
 
@@ -16,7 +18,17 @@ struct SceneFiles {
     editor::FileWatcher watcher;        // the scene file; none for a scene never saved
     std::uint64_t recoveryRevision = 0; // document revision last written to the recovery file
     double lastRecoveryWrite = -1e9;    // seconds, on the clock `now` is given in
+    std::filesystem::path recentFile;   // where the recent files are kept ("" = nowhere)
+    std::vector<std::filesystem::path> recent; // newest first
 };
+
+// Reads the recent files from `recentFile` (editor/recent_files.hpp); a file that is not a list
+// is said in `messages` and starts an empty one.
+void loadRecentFiles(SceneFiles& files, Messages& messages);
+// `path` first in the recent files, written at once; a write that fails is said in `messages`.
+void rememberFile(SceneFiles& files, const std::filesystem::path& path, Messages& messages);
+// The recent files without `path`s that no longer exist (forgetMissing) or none, written.
+void forgetRecentFiles(SceneFiles& files, bool onlyMissing, Messages& messages);
 
 // The scene `rmsc view` was started with: a scene file, a glTF model (as the one mesh of a new
 // scene) or, for "", the built-in demo. One that does not open leaves an empty scene and says

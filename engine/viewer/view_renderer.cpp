@@ -220,6 +220,11 @@ ViewStatus ViewRenderer::status() const {
     status.selectionLive = choiceLive_.first <= choiceLive_.last;
     status.newestScenePending = sceneChanged_;
     status.buildingMaps = warmer_ && !warmer_->idle();
+    if (warmer_) {
+        const ShaderWarmer::Progress p = warmer_->progress();
+        status.build = {p.done, p.total, p.seconds,
+                        sceneChanged_ ? "for the newest scene" : "better maps"};
+    }
     return status;
 }
 

@@ -9,6 +9,7 @@
 #include "core/image_io.hpp"
 #include "display_pass.hpp"
 #include "editor/adaptive_scale.hpp"
+#include "editor/build_progress.hpp"
 #include "editor/cell_pruning_job.hpp"
 #include "editor/editing_map.hpp"
 #include "editor/refinement.hpp"
@@ -53,6 +54,7 @@ struct ViewStatus {
     bool selectionLive = false;      // the map was chosen with a live range for the selection
     bool newestScenePending = false; // the newest scene shows once its shaders are built
     bool buildingMaps = false;       // better maps are being built in the background
+    editor::BuildProgress build;     // of the background build, for the progress bar
 };
 
 class ViewRenderer {

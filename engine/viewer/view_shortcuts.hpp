@@ -1,15 +1,17 @@
-// The view's camera keys, in one table (viewShortcuts) that the handler, the View and Camera
-// menus' labels and docs/viewer.md follow: numpad 1 / 3 / 7 look from the front, the right and
-// the top (with Ctrl from the opposite side), numpad 5 switches between a perspective and an
-// orthographic view, Ctrl+1..9 keep the view as bookmark 1..9 and 1..9 go back to it. What each
-// does to the view is applyViewRequest; the menus call it too.
+// The view's camera keys, rows of the one shortcut table (editor/shortcut_table.hpp, section
+// Views) that the handler, the View and Camera menus' labels, the F1 sheet and docs/viewer.md
+// follow: numpad 1 / 3 / 7 look from the front, the right and the top (with Ctrl from the
+// opposite side), numpad 5 switches between a perspective and an orthographic view, Ctrl+1..9
+// keep the view as bookmark 1..9 and 1..9 go back to it. What each does to the view is
+// applyViewRequest; the menus call it too.
 #pragma once
 
+#include "editor/shortcut_table.hpp"
 #include "editor_session.hpp"
 #include "input_state.hpp"
 #include "messages.hpp"
 
-#include <span>
+#include <optional>
 
 namespace rmsc::app {
 
@@ -31,16 +33,8 @@ struct ViewRequest {
     int slot = 0; // the bookmark's
 };
 
-struct ViewShortcut {
-    int key;                 // GLFW key
-    bool ctrl;               // with Ctrl held
-    const char* keys;        // as menus and docs show it: "Numpad 1", "Ctrl+Numpad 1"
-    const char* description; // what it does
-    ViewRequest request;
-};
-
-// Every view key; bookmarks take one row per slot.
-std::span<const ViewShortcut> viewShortcuts();
+// The request a view row of the shortcut table stands for (nullopt for any other row).
+std::optional<ViewRequest> viewRequestOf(const editor::Shortcut& row);
 // The keys of a request's shortcut, for a menu item ("Numpad 5"), or nullptr when it has none.
 const char* viewShortcutKeys(const ViewRequest& request);
 

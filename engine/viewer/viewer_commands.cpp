@@ -23,7 +23,8 @@ ViewerCommand addLightCommand(LightType type) {
 
 void Viewer::carryOut(ViewerCommands& commands) {
     editor::Document& document = session_.document;
-    for (const ViewerCommand command : commands) {
+    for (const QueuedCommand& queued : commands) {
+        const ViewerCommand command = queued.command;
         switch (command) {
         case ViewerCommand::Undo:
             gizmo_.drag.reset(); // a drag running is committed, then undone
@@ -69,7 +70,19 @@ void Viewer::carryOut(ViewerCommands& commands) {
             }
             break;
         case ViewerCommand::Open:
-            dialogs_.askForPath(PathPurpose::Open, document.file().string());
+            dialogs_.askForPath(PathPurpose::Open, document.file().empty()
+                                                       ? std::filesystem::current_path()
+                                                       : document.file());
+            break;
+        case ViewerCommand::OpenFile:
+            requestOpen(dialogs_, queued.path, session_, files_, messages_);
+            break;
+        case ViewerCommand::DropFile:
+            dropFile(queued.path);
+            break;
+        case ViewerCommand::ForgetMissingRecent:
+        case ViewerCommand::ClearRecent:
+            forgetRecentFiles(files_, command == ViewerCommand::ForgetMissingRecent, messages_);
             break;
         case ViewerCommand::Save:
             requestSave(dialogs_, session_, files_, messages_, false);
@@ -78,7 +91,9 @@ void Viewer::carryOut(ViewerCommands& commands) {
             requestSave(dialogs_, session_, files_, messages_, true);
             break;
         case ViewerCommand::AddMesh:
-            dialogs_.askForPath(PathPurpose::AddMesh, "");
+            dialogs_.askForPath(PathPurpose::AddMesh, document.file().empty()
+                                                          ? std::filesystem::current_path()
+                                                          : document.file().parent_path());
             break;
         case ViewerCommand::ExportScene:
         case ViewerCommand::ExportSelection: {
@@ -94,9 +109,7 @@ void Viewer::carryOut(ViewerCommands& commands) {
                                    : command == ViewerCommand::AddSpotLight
                                        ? LightType::Spot
                                        : LightType::Directional;
-            // Where the view looks: its focus point straight ahead.
-            const editor::FlyCamera& camera = session_.camera;
-            addLight(document, type, camera.position + camera.forward() * camera.focusDistance);
+            addLight(document, type, viewFocus());
             break;
         }
         case ViewerCommand::Screenshot:
@@ -108,6 +121,12 @@ void Viewer::carryOut(ViewerCommands& commands) {
             break;
         case ViewerCommand::FrameSelection:
             frameSelection(session_);
+            break;
+        case ViewerCommand::AddSearch:
+            addSearch_.openAt(input_.mouse);
+            break;
+        case ViewerCommand::ShortcutSheet:
+            shortcutSheet_ = !shortcutSheet_;
             break;
         case ViewerCommand::SaveCamera:
             session_.saveCameraToScene();

@@ -453,6 +453,11 @@ with tempfile.TemporaryDirectory() as tmp:
                                        os.path.join(tmp, "x.png")], 2, stderr_has=["--sandbox", "nobox"])
     for command in ["render", "validate", "bench", "view"]:
         expect(f"{command} --help lists --sandbox", [command, "--help"], 0, stdout_has=["--sandbox DIR"])
+    # The viewer's panel scale: refused outside 0.5..4 before any window opens.
+    expect("view --help lists --ui-scale", ["view", "--help"], 0, stdout_has=["--ui-scale S"])
+    for scale in ["9", "0.1", "big", ""]:
+        expect(f"view --ui-scale {scale!r}", ["view", "--ui-scale", scale], 2,
+               stderr_has=["rmsc view: --ui-scale: expected a scale from 0.5 to 4", f"'{scale}'"])
 
     # An output that is a symbolic link: the image goes to the file it points to, and the link
     # stays a link (it was replaced by a regular file, and the target kept the old image).

@@ -26,10 +26,17 @@ a move step typed into the view's toolbar), undoes and redoes the drag, looks fr
 back to it, adds a box (put on the ball under the view's centre), and saves, telling the save's
 question to update the scene camera; the test checks the saved scene, the orthographic view's
 sizes against the analytic ones and the bookmark's view against the first.
-A seventh run selects the ball, exports it with File > Export selection (its dialog, a
+A seventh run opens the shortcut sheet (F1), adds two shapes with the searchable add menu
+(Shift+A, typing, arrows, Enter), shoots the progress bar of the shader build, types an
+out-of-range radius (clamped, and the field says so), opens the file browser, drops a glTF model
+and then a scene on the window (a replay script's `drop`, the event GLFW's drop callback queues),
+saves when asked and checks the saved scene and the recent files; then a model is dropped for
+real (tests/e2e/xdnd_drop.py speaks XDND to the window, as a file manager does).
+An eighth run selects the ball, exports it with File > Export selection (its dialog, a
 resolution typed in, Export), and checks the .glb it writes (the ball's box, its material, the
 notice's triangle count, no temporary file left) and, from window shots, the dialog and the
-progress bar shown while the export runs on its thread.
+progress bar shown while the export runs on its thread. A last run checks that `--ui-scale 2`
+doubles the panels' sizes.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
 import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
@@ -105,11 +112,14 @@ def marker_pixels(shot, centre, radius=14):
 def run_viewer(xvfb_run, rmsc, scene, script, size="640x360", tail=2000, extra=(),
                screen="800x600"):
     """Runs `rmsc view SCENE --script SCRIPT` under Xvfb and prints the end of its log (SCENE
-    None: the built-in demo)."""
+    None: the built-in demo). Its configuration folder (the recent files) is `config` beside the
+    script, never the user's."""
     command = [xvfb_run, "-a", "-s", f"-screen 0 {screen}x24", rmsc, "view"] + \
         ([scene] if scene else []) + ["--script", script, "--size", size, "--embedded-shaders"] + \
         list(extra)
-    run = subprocess.run(command, capture_output=True, text=True, timeout=540)
+    env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(os.path.dirname(os.path.abspath(script)),
+                                                        "config"))
+    run = subprocess.run(command, capture_output=True, text=True, timeout=540, env=env)
     print(run.stderr[-tail:])
     return run
 
@@ -515,6 +525,160 @@ def gizmo_run(rmsc, source, tmp, xvfb_run, check):
           all(abs(a - b) < 1e-3 for a, b in zip(camera.get("up", []), [0, 0, -1])), camera)
 
 
+def colour_pixels(shot, box, colour, tolerance=12):
+    """Pixels of `colour` (r, g, b), each channel within `tolerance`, in the window-shot rectangle
+    box (x0, y0, x1, y1)."""
+    width, height, channels, rows = shot
+    return sum(1 for y in range(box[1], min(box[3], height)) for x in range(box[0], min(box[2], width))
+               if all(abs(rows[y][x * channels + c] - colour[c]) <= tolerance for c in range(3)))
+
+
+# Colours of Dear ImGui's dark style and the viewer's own, as window shots show them: the shortcut
+# sheet's section titles, a clamped field's notice, a progress bar's fill, the menu bar.
+SECTION_TITLE = (255, 191, 89)
+CLAMP_NOTICE = (255, 184, 64)
+PROGRESS_FILL = (230, 179, 0)
+MENU_BAR = (36, 36, 36)
+
+
+def aids_run(rmsc, source, tmp, xvfb_run, check):
+    """The seventh run (tests/e2e/viewer_aids_script.txt): the shortcut sheet, the searchable add
+    menu, the shader build's progress bar, a typed value clamped, the file browser, a glTF model
+    and a scene dropped on the window, the recent files."""
+    folder = os.path.join(tmp, "aids")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "first.json")
+    second = os.path.join(folder, "second.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_second_scene.json"), second)
+    shutil.copy(os.path.join(source, "samples/assets/cube.glb"), os.path.join(folder, "cube.glb"))
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_aids_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    run = run_viewer(xvfb_run, rmsc, scene, script)
+    check("seventh run: viewer exits 0", run.returncode == 0, run.returncode)
+    keep = os.environ.get("RMSC_E2E_KEEP")
+    if keep:
+        shutil.copytree(folder, keep, dirs_exist_ok=True)
+
+    saved = json.load(open(scene))
+    children = saved["sdf"]["children"]
+    names = [c.get("name") for c in children]
+    check("Shift+A, 'cone', Down, Down, Enter added the third match, a capped cone; "
+          "'torus', Enter a torus", names == ["ball", "base", "capped_cone", "torus"] and
+          children[2].get("shape") == "capped_cone" and children[3].get("shape") == "torus", names)
+    check("the radius typed as -2 was clamped to 0", children[0].get("radius") == 0, children[0])
+    meshes = saved.get("meshes", [])
+    check("the dropped cube.glb is a mesh of the saved scene", len(meshes) == 1 and
+          meshes[0].get("file", "").endswith("cube.glb"), meshes)
+    torus = next((c for c in children if c.get("shape") == "torus"), None)
+    if len(meshes) == 1 and torus:
+        # Where a new shape goes: the view looked from (0, 0.3, 4) at the origin, then flew right
+        # (D held for 3 frames) before the drop, so its centre ray runs at y = 0.3 z / 4 right of
+        # the origin; the ball is clamped to radius 0 by then, and the ray meets the torus added
+        # in front of it (measured: (0.2, 0.109, 1.455), on the torus's surface).
+        position = meshes[0].get("position", [0, 0, 0])
+        centre = torus.get("position", [0, 0, 0])
+        rel = [a - b for a, b in zip(position, centre)]
+        ring = math.hypot(rel[0], rel[2]) - torus.get("major_radius", 0)
+        surface = math.hypot(ring, rel[1]) - torus.get("minor_radius", 0)
+        check("placed where a new shape goes: on the view's centre ray, right of the origin",
+              0.05 < position[0] < 1.0 and abs(position[1] - 0.3 * position[2] / 4) < 1e-3,
+              position)
+        check("on the surface the ray meets (the torus), not at the view's focus",
+              abs(surface) < 0.01, (position, surface))
+    check("the dropped scene was opened after the first was saved",
+          re.search(r"rmsc view: saved .*first\.json", run.stderr) is not None and
+          re.search(r"rmsc view: opened .*second\.json", run.stderr) is not None,
+          run.stderr[-1500:])
+    recent_file = os.path.join(folder, "config", "rmsc", "recent.json")
+    recent = json.load(open(recent_file)).get("files") if os.path.exists(recent_file) else None
+    check("the recent files list the second scene, then the first",
+          recent == [os.path.realpath(second), os.path.realpath(scene)] or
+          recent == [second, scene], recent)
+
+    shots = {}
+    for name in ("sheet", "add-menu", "building", "clamped", "browser", "dropped", "ask", "second"):
+        path = os.path.join(folder, name + ".png")
+        check(f"seventh run: window shot {name} written", os.path.exists(path))
+        if os.path.exists(path):
+            shots[name] = read_png(path)
+    if "sheet" in shots:
+        titles = colour_pixels(shots["sheet"], (0, 0, 640, 360), SECTION_TITLE)
+        check("F1 shows the shortcut sheet (its section titles)", titles > 100, titles)
+    if "clamped" in shots:
+        notice = colour_pixels(shots["clamped"], (440, 285, 640, 315), CLAMP_NOTICE)
+        check("the radius field says it clamped the value", notice > 40, notice)
+    if "building" in shots:
+        # The bar shows while the new shape's shaders build; a machine that built them before
+        # the shot (the log's first switch after the add) has nothing to show.
+        frames = [int(f) for f in re.findall(r"frame (\d+): window shot .*building\.png", run.stderr)]
+        switches = [int(f) for f in re.findall(r"frame (\d+): drawing with the", run.stderr)]
+        after = [f for f in switches if f >= 25]
+        fill = colour_pixels(shots["building"], (153, 19, 440, 120), PROGRESS_FILL)
+        if frames and (not after or frames[0] < after[0]):
+            check("a progress bar shows while the shaders build", fill > 50, fill)
+        else:
+            print("note: the shaders were built before the shot; the progress bar is not checked")
+
+
+def real_drop_run(rmsc, source, tmp, xvfb_run, check):
+    """A real drop: while a replay script idles, tests/e2e/xdnd_drop.py drops a glTF model on the
+    viewer's window by the XDND protocol, as a file manager does; GLFW's drop callback queues it
+    and the model is added (the scene saved at the end holds it)."""
+    folder = os.path.join(tmp, "real-drop")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    model = os.path.join(folder, "cube.glb")
+    shutil.copy(os.path.join(source, "samples/assets/cube.glb"), model)
+    script = os.path.join(folder, "script.txt")
+    # Idle frames while the drop comes (it takes well under a second once the window is open).
+    open(script, "w").write("0 move 297 190\n600 key ctrl+s\n603 quit\n")
+    both = ('"$0" view "$1" --script "$2" --size 640x360 --embedded-shaders & viewer=$!; '
+            '"$3" "$4" rmsc "$5"; drop=$?; wait $viewer; echo "exits: drop $drop viewer $?"')
+    command = [xvfb_run, "-a", "-s", "-screen 0 800x600x24", "sh", "-c", both, rmsc, scene,
+               script, sys.executable, os.path.join(source, "tests/e2e/xdnd_drop.py"), model]
+    env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(folder, "config"))
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300, env=env)
+    print(run.stdout[-500:] + run.stderr[-1000:])
+    if "exits: drop 77" in run.stdout:
+        print("note: libX11 cannot be loaded from Python; the real drop is not tried")
+        return
+    check("real drop: the target finished the XDND drop and the viewer exits 0",
+          "exits: drop 0 viewer 0" in run.stdout, run.stdout[-300:])
+    meshes = json.load(open(scene)).get("meshes", [])
+    check("real drop: the dropped model is a mesh of the saved scene",
+          len(meshes) == 1 and meshes[0].get("file", "").endswith("cube.glb"), meshes)
+
+
+def scale_run(rmsc, source, tmp, xvfb_run, check):
+    """`rmsc view --ui-scale 2` (tests/e2e/viewer_scale_script.txt): the menu bar twice as high."""
+    folder = os.path.join(tmp, "scale")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_scale_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    run = run_viewer(xvfb_run, rmsc, scene, script, "1280x720", extra=["--ui-scale", "2"],
+                     screen="1400x900")
+    check("scaled run: viewer exits 0", run.returncode == 0, run.returncode)
+    path = os.path.join(folder, "scaled.png")
+    check("scaled run: window shot written", os.path.exists(path))
+    if os.path.exists(path):
+        width, height, channels, rows = read_png(path)
+        # The menu bar's background at x = 4, in its padding left of "File" (the scene's path
+        # at the right may be long), from the row under the window's top border: 17 rows at
+        # scale 1 (measured), 36 at scale 2.
+        bar = 1
+        while bar < height and all(abs(rows[bar][4 * channels + c] - MENU_BAR[c]) <= 6
+                                   for c in range(3)):
+            bar += 1
+        check("at --ui-scale 2 the menu bar is twice as high (36 rows, 17 at scale 1)",
+              34 <= bar - 1 <= 38, bar - 1)
+
+
 def glb_summary(path):
     """The JSON of a .glb and the box of its positions (the accessors' min and max)."""
     data = open(path, "rb").read()
@@ -533,7 +697,7 @@ def glb_summary(path):
     return doc, lo, hi, triangles
 
 
-# Window-shot rectangles of the seventh run: the export dialog's title bar, and the progress bar of
+# Window-shot rectangles of the eighth run: the export dialog's title bar, and the progress bar of
 # the export's window at the bottom right of the view.
 DIALOG_TITLE_BOX = (80, 58, 560, 72)
 PROGRESS_BAR_BOX = (180, 300, 430, 322)
@@ -562,7 +726,7 @@ def progress_pixels(shot):
 
 
 def export_run(rmsc, source, tmp, xvfb_run, check):
-    """The seventh run (tests/e2e/viewer_export_script.txt): File > Export selection of the ball,
+    """The eighth run (tests/e2e/viewer_export_script.txt): File > Export selection of the ball,
     its dialog, its progress window and the file it writes."""
     folder = os.path.join(tmp, "export")
     os.makedirs(folder)
@@ -573,7 +737,7 @@ def export_run(rmsc, source, tmp, xvfb_run, check):
     text = open(os.path.join(source, "tests/e2e/viewer_export_script.txt")).read()
     open(script, "w").write(text.replace("OUT/", folder + "/"))
     run = run_viewer(xvfb_run, rmsc, scene, script)
-    check("seventh run: viewer exits 0", run.returncode == 0, run.returncode)
+    check("eighth run: viewer exits 0", run.returncode == 0, run.returncode)
     keep = os.environ.get("RMSC_E2E_KEEP")
     if keep:
         shutil.copytree(folder, keep, dirs_exist_ok=True)
@@ -598,7 +762,7 @@ def export_run(rmsc, source, tmp, xvfb_run, check):
     shots = {}
     for name in ("dialog", "progress", "done"):
         path = os.path.join(folder, name + ".png")
-        check(f"seventh run: window shot {name} written", os.path.exists(path))
+        check(f"eighth run: window shot {name} written", os.path.exists(path))
         if os.path.exists(path):
             shots[name] = read_png(path)
     if "dialog" in shots and "progress" in shots:
@@ -709,7 +873,10 @@ def main():
         large_scene_run(rmsc, source, tmp, xvfb_run, check)
         select_run(rmsc, source, tmp, xvfb_run, check)
         gizmo_run(rmsc, source, tmp, xvfb_run, check)
+        aids_run(rmsc, source, tmp, xvfb_run, check)
+        real_drop_run(rmsc, source, tmp, xvfb_run, check)
         export_run(rmsc, source, tmp, xvfb_run, check)
+        scale_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

@@ -8,8 +8,10 @@
 #include "render/shader_library.hpp"
 #include "render/shader_warmer.hpp"
 
+#include <chrono>
 #include <cstdlib>
 #include <memory>
+#include <thread>
 
 using namespace rmsc;
 using namespace rmsc::test;
@@ -121,6 +123,43 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     warmer.waitUntilIdle();
     EXPECT_TRUE(warmer.isWarm(a));
     expectNoGlErrors();
+}
+
+TEST(ShaderWarmer, ReportsTheProgressOfTheCurrentRequest) {
+    sharedRenderer(); // the tests' context first: the warmer's is the second
+    const PreparedScene prepared = openRepositoryScene("samples/bench/grid_10.json");
+    auto mapFor = [&](std::uint32_t id) {
+        return generateSdfMap(prepared.sdf, SdfStrategy::Baked, {}, SdfLiveRange{id, id});
+    };
+    ShaderWarmer warmer(secondaryContext(), embeddedShaderFiles());
+    warmer.waitUntilIdle(); // started
+    EXPECT_EQ(warmer.progress().total, 0) << "nothing asked for";
+    warmer.request(prepared, {mapFor(kSdfIdBase + 6), mapFor(kSdfIdBase + 7)});
+    // Right after the request neither map can be built: each takes milliseconds at least.
+    ShaderWarmer::Progress p = warmer.progress();
+    EXPECT_EQ(p.total, 2);
+    EXPECT_EQ(p.done, 0);
+    // While it builds, two maps in all and fewer than two done; the seconds of one map grow.
+    int lastDone = 0;
+    double lastSeconds = 0.0;
+    while (!warmer.idle()) {
+        p = warmer.progress();
+        if (p.total == 0) break; // finished between the two calls
+        EXPECT_EQ(p.total, 2);
+        EXPECT_GE(p.done, lastDone);
+        EXPECT_LT(p.done, 2);
+        if (p.done == lastDone) {
+            EXPECT_GE(p.seconds, lastSeconds);
+        }
+        lastDone = p.done;
+        lastSeconds = p.seconds;
+        std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
+    warmer.waitUntilIdle();
+    p = warmer.progress();
+    EXPECT_EQ(p.total, 0) << "the request is done";
+    EXPECT_EQ(p.done, 0);
+    EXPECT_EQ(warmer.takeError(), "");
 }
 
 TEST(ShaderWarmer, WithoutAContextItSaysSoAndIgnoresRequests) {

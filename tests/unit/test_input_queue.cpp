@@ -164,6 +164,28 @@ TEST(InputQueue, AMarkerEndsItsFrame) {
     EXPECT_EQ(frames[0].back().code, 7);
 }
 
+TEST(InputQueue, DroppedFilesComeInOrderWithoutTouchingTheModifiers) {
+    // Two files dropped (GLFW's drop callback queues them with no modifiers) between a Ctrl+Z
+    // and its release: the drops ride along in the Ctrl+Z's frame, in order, and do not split it.
+    InputQueue queue;
+    InputEvent first;
+    first.kind = Kind::Drop;
+    first.path = "/a/model.glb";
+    InputEvent second = first;
+    second.path = "/a/scene.json";
+    queue.push(key(kCtrl, true, kModCtrl));
+    queue.push(key(kZ, true, kModCtrl));
+    queue.push(first);
+    queue.push(second);
+    queue.push(key(kZ, false, kModCtrl));
+    const auto frames = allFrames(queue);
+    ASSERT_EQ(frames.size(), 2u) << "Z's release waits for the next frame, the drops do not";
+    ASSERT_EQ(frames[0].size(), 4u);
+    EXPECT_EQ(frames[0][2].path, "/a/model.glb");
+    EXPECT_EQ(frames[0][3].path, "/a/scene.json");
+    EXPECT_EQ(pressFrames(frames, kZ, kModCtrl), std::vector<int>{0}) << "still a Ctrl+Z";
+}
+
 TEST(InputQueue, RandomBurstsComeOutWholeInOrderOneTransitionPerKeyAFrame) {
     std::mt19937 random(21);
     for (int round = 0; round < 200; ++round) {

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <string>
 #include <vector>
 
 namespace rmsc::editor {
@@ -25,13 +26,15 @@ struct InputEvent {
         Button, // mouse button `code` went down or up
         Scroll, // `value` is the wheel's offset
         Cursor, // the mouse moved to `value` (window pixels)
+        Drop,   // a file was dropped on the window: `path`
         Marker  // a point in the stream (a replay script's screenshot, say): `code` is the caller's
     } kind = Kind::Marker;
     int code = 0;
     bool down = false;
     int mods = 0; // InputModifier bits held at this event (a modifier key's own included once down)
     glm::vec2 value{0.0f};
-    double time = 0.0; // when it arrived, in the caller's seconds
+    double time = 0.0;     // when it arrived, in the caller's seconds
+    std::string path = {}; // Drop: the file
 };
 
 class InputQueue {
@@ -48,7 +51,8 @@ class InputQueue {
     //  - is a character, in a frame that took, or right after a frame that took, a button
     //    press or a press of a key that typed nothing and is no modifier (Tab, Enter, a
     //    click: the focus may move).
-    // A marker ends the frame that takes it (what follows it happens in a later frame).
+    // A marker ends the frame that takes it (what follows it happens in a later frame). A drop
+    // neither reads nor changes the modifiers.
     // Everything after the stop waits, in order, for the next frame.
     std::vector<InputEvent> takeFrame();
 

@@ -16,6 +16,7 @@
 #include "prepare/prepared_scene.hpp"
 #include "render/renderer.hpp"
 
+#include <chrono>
 #include <condition_variable>
 #include <deque>
 #include <functional>
@@ -59,6 +60,16 @@ class ShaderWarmer {
     // Milliseconds a warm map took to build (0 when it is not warm).
     double buildMs(const std::string& sdfMap) const;
 
+    // How far the current request has come: the maps of it built (or failed) and how many it
+    // has (the one being built when it was made counts in), and the seconds the map being built
+    // has taken so far (0 before the thread takes it up). All 0 when nothing waits or builds.
+    struct Progress {
+        int done = 0;
+        int total = 0;
+        double seconds = 0.0;
+    };
+    Progress progress() const;
+
   private:
     struct Request {
         std::shared_ptr<const PreparedScene> scene; // one copy for all its maps
@@ -74,6 +85,8 @@ class ShaderWarmer {
     std::set<std::string> failed_;
     std::string error_;
     std::size_t finished_ = 0;
+    int progressDone_ = 0, progressTotal_ = 0;         // of the current request (see progress())
+    std::chrono::steady_clock::time_point buildStart_; // of the map being built
     bool starting_ = true; // the thread is making its context current and its renderer
     bool stopping_ = false;
     std::thread thread_; // last: starts once the rest is initialised

@@ -12,11 +12,13 @@
 
 namespace rmsc {
 
-inline constexpr ParamRange kCameraFovRange = {0.0, 180.0, true, true}; // degrees, vertical
-inline constexpr ParamRange kCameraNearRange = {0.0, ParamRange{}.max, true, false}; // > 0
-inline constexpr ParamRange kCameraFarRange = {0.0, ParamRange{}.max, true, false};  // > near
-// The height an orthographic camera shows, world units (> 0).
-inline constexpr ParamRange kCameraOrthoHeightRange = {0.0, ParamRange{}.max, true, false};
+// The vertical field of view; near > 0 and far > near.
+inline constexpr ParamRange kCameraFovRange = {0.0, 180.0, true, true, Unit::Degrees};
+inline constexpr ParamRange kCameraNearRange = {0.0, ParamRange{}.max, true, false, Unit::Metres};
+inline constexpr ParamRange kCameraFarRange = {0.0, ParamRange{}.max, true, false, Unit::Metres};
+// The height an orthographic camera shows (> 0).
+inline constexpr ParamRange kCameraOrthoHeightRange = {0.0, ParamRange{}.max, true, false,
+                                                       Unit::Metres};
 
 // The names of the projections in scene files ("projection"): "perspective", "orthographic".
 std::string_view cameraProjectionName(CameraProjection projection);

@@ -19,8 +19,9 @@ struct SkyTypeName {
 inline constexpr std::array<SkyTypeName, 3> kSkyTypeNames = {
     {{SkyType::Constant, "constant"}, {SkyType::Gradient, "gradient"}, {SkyType::Image, "image"}}};
 
-inline constexpr ParamRange kEnvironmentIntensityRange = {0.0};             // >= 0
-inline constexpr ParamRange kSkyRotationRange = closedRange(-360.0, 360.0); // degrees
-inline constexpr ParamRange kFogDensityRange = closedRange(0.0, 10.0);      // per metre
+inline constexpr ParamRange kEnvironmentIntensityRange = {0.0, ParamRange{}.max, false, false,
+                                                          Unit::Ratio}; // >= 0
+inline constexpr ParamRange kSkyRotationRange = closedRange(-360.0, 360.0, Unit::Degrees);
+inline constexpr ParamRange kFogDensityRange = closedRange(0.0, 10.0, Unit::PerMetre);
 
 } // namespace rmsc

@@ -38,11 +38,20 @@ constexpr bool hasCone(LightType type) {
 // inner below outer.
 inline constexpr double kMaxSpotAngleDegrees = 90.0;
 
-inline constexpr ParamRange kLightIntensityRange = {0.0};                            // >= 0
-inline constexpr ParamRange kLightRangeRange = {0.0, ParamRange{}.max, true, false}; // > 0
-inline constexpr ParamRange kLightShadowSoftnessRange = closedRange(0.001, 1.0);
-inline constexpr ParamRange kSpotInnerAngleRange = closedRange(0.0, kMaxSpotAngleDegrees);
-inline constexpr ParamRange kSpotOuterAngleRange = openClosedRange(0.0, kMaxSpotAngleDegrees);
+// >= 0; in lux for a directional light, candela for the others (lightIntensityUnit).
+inline constexpr ParamRange kLightIntensityRange = {0.0};
+inline constexpr ParamRange kLightRangeRange = {0.0, ParamRange{}.max, true, false, Unit::Metres};
+inline constexpr ParamRange kLightShadowSoftnessRange = closedRange(0.001, 1.0, Unit::Ratio);
+inline constexpr ParamRange kSpotInnerAngleRange =
+    closedRange(0.0, kMaxSpotAngleDegrees, Unit::Degrees);
+inline constexpr ParamRange kSpotOuterAngleRange =
+    openClosedRange(0.0, kMaxSpotAngleDegrees, Unit::Degrees);
+
+// The unit of "intensity" for a light of `type`, as glTF's KHR_lights_punctual: lux for a
+// directional light, candela for point and spot lights.
+constexpr Unit lightIntensityUnit(LightType type) {
+    return type == LightType::Directional ? Unit::Lux : Unit::Candela;
+}
 // Besides the ranges: "outer_angle" > "inner_angle", and "direction" is not [0, 0, 0].
 
 } // namespace rmsc

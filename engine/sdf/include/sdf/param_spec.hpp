@@ -5,6 +5,8 @@
 // sdf/profiles.hpp), so they cannot disagree.
 #pragma once
 
+#include "core/units.hpp"
+
 #include <array>
 #include <limits>
 #include <string>
@@ -24,21 +26,26 @@ enum class ParamType {
     Points,  // an array of [x, y] points (a polygon's corners)
 };
 
-// The valid values of each number of a parameter (each component, element or coordinate); each
-// end is inclusive unless marked exclusive.
+// The valid values of each number of a parameter (each component, element or coordinate), and
+// their unit; each end is inclusive unless marked exclusive.
 struct ParamRange {
     double min = -std::numeric_limits<double>::infinity();
     double max = std::numeric_limits<double>::infinity();
     bool minExclusive = false;
     bool maxExclusive = false;
+    Unit unit = Unit::None; // what the docs and the inspector write after the numbers
 };
 
-constexpr ParamRange closedRange(double lo, double hi) {
-    return {lo, hi, false, false};
+constexpr ParamRange closedRange(double lo, double hi, Unit unit = Unit::None) {
+    return {lo, hi, false, false, unit};
 }
 // (lo, hi]: lengths that must not be 0.
-constexpr ParamRange openClosedRange(double lo, double hi) {
-    return {lo, hi, true, false};
+constexpr ParamRange openClosedRange(double lo, double hi, Unit unit = Unit::None) {
+    return {lo, hi, true, false, unit};
+}
+// Any number, in `unit`.
+constexpr ParamRange unboundedRange(Unit unit) {
+    return {.unit = unit};
 }
 
 struct SdfParamSpec {

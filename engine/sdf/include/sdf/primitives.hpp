@@ -3,6 +3,8 @@
 // `rmsc primitives` and the shader dispatch are all generated from this one table.
 #pragma once
 
+#include "core/units.hpp"
+
 #include <glm/glm.hpp>
 
 #include <array>
@@ -67,6 +69,7 @@ struct ParamSpec {
     float minValue;               // inclusive; applies to every component
     float maxValue;               // inclusive
     std::string_view description; // one line for docs and --help
+    Unit unit;                    // of each component: metres for lengths, degrees for angles
 };
 
 struct PrimitiveSpec {

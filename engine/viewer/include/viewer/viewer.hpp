@@ -13,6 +13,7 @@ struct ViewerOptions {
     float targetMilliseconds = 33.0f;
     bool watchShaders = true; // read shaders from the source tree and reload them on change
     bool stats = false;       // log the UI frame times after each change and at exit
+    float uiScale = 0.0f;     // the panels' scale (fonts, sizes); 0: the window's content scale
 };
 
 // Opens the window and runs the viewer until it closes; returns the process exit code.
