@@ -641,6 +641,11 @@ struct DirectChain {
 
 // Operands whose whole subtree is at most this many nodes make a chain direct.
 constexpr std::size_t kDirectOperandNodes = 64;
+// Operands without a floor are evaluated in every cell of a direct chain: a chain with more of
+// them is pruned from each cell's parent instead (1,000 mixed shapes in 250 groups, none with a
+// floor: every one of 1.27 million cells evaluated all 250 groups, 128 s, where pruning from
+// the parents takes 1.4 s).
+constexpr std::size_t kDirectMostUnbounded = 8;
 
 // The node's box and drop from its children or operands (children first: call in reverse).
 void fitNode(DirectChain& d, const std::vector<NodeFloor>& floors, DirectChain::Node& node) {
@@ -708,6 +713,7 @@ std::optional<DirectChain> directChain(const ProgramTree& tree,
     for (int pos = 0; pos < int(d.operands.size()); ++pos)
         (floors[std::size_t(d.operands[std::size_t(pos)])].valid ? bounded : d.unbounded)
             .push_back(pos);
+    if (d.unbounded.size() > kDirectMostUnbounded) return std::nullopt;
     d.order = bounded;
     if (bounded.empty()) return d;
     // Median splits along the longest axis of the boxes' centres, four operands a leaf.

@@ -329,6 +329,40 @@ TEST(CellPruning, MovingOneShapePrunesFewCellsAgain) {
     EXPECT_FALSE(repruneSdfCells(*state, more->program, grid));
 }
 
+// The same for a union of groups that have no floor (a twisted capsule in each): an edit must
+// not prune every cell again because the groups are evaluated everywhere.
+TEST(CellPruning, MovingOneShapeAmongGroupsWithoutFloorsPrunesFewCellsAgain) {
+    const auto groupsText = [](float moved) {
+        std::ostringstream s;
+        s << R"({"children": [)";
+        for (int i = 0; i < 100; ++i)
+            s << (i ? ", " : "") << R"({"position": [)" << (i % 10) * 2 - 10 << ", 0, "
+              << (i / 10) * 2 - 10 << R"(], "children": [{"shape": "sphere", "radius": 0.3, )"
+              << R"("position": [)" << (i == 45 ? moved : 0.0f) << R"(, 0, 0]}, )"
+              << R"({"shape": "capsule", "half_height": 0.3, "radius": 0.15, )"
+              << R"("position": [0.7, 0, 0], )"
+              << R"("modifiers": [{"type": "twist", "amount": 60, "radius": 0.15}]}]})";
+        s << "]}";
+        return s.str();
+    };
+    const std::optional<Compiled> c = compileText(groupsText(0.0f), false);
+    const std::optional<Compiled> moved = compileText(groupsText(0.4f), false);
+    ASSERT_TRUE(c && moved);
+    const Aabb box = sdfContentBox(*c->scene.sdf);
+    SdfCellStatePtr state;
+    SdfCellGrid grid = buildSdfCells(c->program, box, {}, &state);
+    ASSERT_TRUE(state);
+    const std::size_t fullCells = grid.stats.prunedCells;
+    ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
+    EXPECT_GT(grid.stats.prunedCells, 0u);
+    // 19% of the cells here (the coarse cells hold every group); every cell, evaluating all
+    // the groups everywhere.
+    EXPECT_LT(grid.stats.prunedCells * 4, fullCells);
+    std::mt19937 rng(11);
+    expectSameLists(grid, buildSdfCells(moved->program, box), rng, "moved group");
+    EXPECT_EQ(expectCellsAgree(*moved, grid, rng, 2000, "moved group"), 2000);
+}
+
 // Cells pruned from the tree without its bounding hierarchy, the hierarchy's program run outside
 // the grid: outside, the list is that program (its box tests), giving the whole distance and
 // surface; inside, the cells agree with the whole program; an edit keeps both.
