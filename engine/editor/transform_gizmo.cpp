@@ -78,8 +78,8 @@ float handlePixels(const GizmoFrame& frame, const GestureView& view, GizmoHandle
         return inside ? 0.0f : inf;
     }
     case GizmoPart::Ring: {
-        const float d = rayCircleDistance(ray, frame.centre, axis, kGizmoRingRadius * frame.size,
-                                          &nearest);
+        const float d =
+            rayCircleDistance(ray, frame.centre, axis, kGizmoRingRadius * frame.size, &nearest);
         return d / pixelAt(view, nearest);
     }
     case GizmoPart::None:
@@ -95,8 +95,7 @@ float alongAxis(const GizmoDrag& drag, const ViewRay& ray) {
     const glm::vec3 axis = drag.frame.axes[drag.handle.axis];
     const glm::vec3 facing = drag.frame.toViewer - axis * glm::dot(drag.frame.toViewer, axis);
     if (glm::length(facing) > 1e-6f)
-        if (const std::optional<float> t =
-                rayPlane(ray, drag.frame.centre, glm::normalize(facing)))
+        if (const std::optional<float> t = rayPlane(ray, drag.frame.centre, glm::normalize(facing)))
             return glm::dot(rayPoint(ray, *t) - drag.frame.centre, axis);
     return nearestRayLine(ray, drag.frame.centre, axis).lineS;
 }

@@ -29,5 +29,6 @@ TEST(MarchSteps, ASceneWithoutSdfMarchesNothing) {
     PreparedScene prepared = openRepositoryScene("samples/scenes/gltf_instances.json");
     prepared.sdf = SdfProgram{}; // the meshes only
     const FrameTargets targets = renderPrepared(prepared, 64, 36);
-    for (float n : readMarchSteps(targets).data) ASSERT_EQ(n, 0.0f);
+    for (float n : readMarchSteps(targets).data)
+        ASSERT_EQ(n, 0.0f);
 }

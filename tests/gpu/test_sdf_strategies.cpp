@@ -144,4 +144,3 @@ TEST(SdfStrategies, BoundsDoNotChangeTheImage) {
         EXPECT_LE(differing, int(idsA.data.size() / 200));
     }
 }
-

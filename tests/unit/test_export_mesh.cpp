@@ -1,7 +1,8 @@
 // rmsc export's mesh (export/sdf_export.hpp): closed, consistently oriented 2-manifolds without
 // self-intersections, every vertex within 0.1 voxel of the SDF surface, for every bounded
-// primitive, every operation and the modifiers (export_checks.hpp); sharp box corners and subtraction rims; the cell components of manifold
-// dual contouring; materials and colours; and the refusals.
+// primitive, every operation and the modifiers (export_checks.hpp); sharp box corners and
+// subtraction rims; the cell components of manifold dual contouring; materials and colours; and the
+// refusals.
 #include "export/dual_contouring.hpp"
 #include "export/mesh_writers.hpp"
 #include "export/sdf_export.hpp"
