@@ -2,6 +2,7 @@
 #include "dialogs.hpp"
 
 #include "editor/camera_edits.hpp"
+#include "editor/dropped_files.hpp"
 #include "editor/file_browser.hpp"
 #include "editor/recovery.hpp"
 #include "editor/scene_edits.hpp"
@@ -117,8 +118,7 @@ void usePath(const std::filesystem::path& path, Dialogs& dialogs, EditorSession&
             messages.fileError = path.string() + ": no such file";
         } else {
             session.document.apply("Add mesh", [&](Scene& scene, editor::Selection& selection) {
-                const int index = editor::addMesh(scene, std::filesystem::absolute(path));
-                selection = editor::Selection::mesh(index);
+                editor::addMeshAt(scene, selection, path, dialogs.newMeshAt);
             });
         }
     }

@@ -12,6 +12,8 @@
 #include "messages.hpp"
 #include "scene_files.hpp"
 
+#include <glm/vec3.hpp>
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -35,6 +37,8 @@ struct Dialogs {
     FileBrowser browser;
     PathPurpose pathPurpose = PathPurpose::Open;
     FileField* browseField = nullptr; // PathPurpose::Field: gets the chosen file, applied
+    glm::vec3 newMeshAt{0.0f};        // PathPurpose::AddMesh: where the mesh goes (where a new
+                                      // shape would, when the browser was opened)
     std::optional<std::filesystem::path> offeredRecovery;
     bool quitNow = false; // closing is decided: the frame loop ends
 
