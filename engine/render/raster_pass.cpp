@@ -2,6 +2,8 @@
 // flipped normals for double-sided ones; MASK cut out in the shader; BLEND drawn last, sorted.
 #include "render/raster_pass.hpp"
 
+#include "face_culling.hpp"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -57,7 +59,6 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
     std::array<GLint, 5> texCoords{-1, -1, -1, -1, -1};
     std::array<glm::mat3, 5> uvTransforms{};
     uvTransforms.fill(glm::mat3(1.0f));
-    bool doubleSided = true;
     if (instance.materialOverride >= 0) {
         const Material& m = scene.materials[std::size_t(instance.materialOverride)];
         baseColor = glm::vec4(m.baseColor, 1.0f);
@@ -70,7 +71,6 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
                              m->occlusionStrength};
         emissive = m->emissiveFactor * m->emissiveStrength;
         alpha = {float(int(m->alphaMode)), m->alphaCutoff, m->unlit ? 1.0f : 0.0f, 0.0f};
-        doubleSided = m->doubleSided;
         if (index < mesh.materialTextures.size()) {
             const GpuMeshMaterialTextures& t = mesh.materialTextures[index];
             textures = {t.baseColor, t.metallicRoughness, t.normal, t.emissive, t.occlusion};
@@ -83,15 +83,8 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
                     uvTransforms[u] = refs[u]->transform.matrix();
                 }
         }
-    } else {
-        doubleSided = false; // the glTF default material
     }
-    if (doubleSided) {
-        glDisable(GL_CULL_FACE);
-    } else {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_BACK);
-    }
+    setFaceCulling(drawsBothFaces(scene, instance, primitive));
     glUniform4fv(baseColorFactor_, 1, glm::value_ptr(baseColor));
     glUniform4fv(metallicRoughness_, 1, glm::value_ptr(metallicRoughness));
     glUniform3fv(emissive_, 1, glm::value_ptr(emissive));
@@ -121,8 +114,7 @@ void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
         glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
         glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
         glUniform1ui(objectId_, instance.objectId);
-        // A mirroring instance transform turns counter-clockwise triangles clockwise.
-        glFrontFace(glm::determinant(glm::mat3(instance.model)) < 0.0f ? GL_CW : GL_CCW);
+        setFrontFace(instance);
         for (const GpuMeshPrimitive& primitive : mesh.primitives) {
             if (isBlended(materialOf(scene, instance, primitive))) continue;
             bindPrimitive(scene, instance, primitive);
@@ -176,7 +168,7 @@ void RasterPass::drawBlended(const GpuScene& scene, const FrameCamera& camera,
         glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
         glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
         glUniform1ui(objectId_, instance.objectId);
-        glFrontFace(glm::determinant(glm::mat3(instance.model)) < 0.0f ? GL_CW : GL_CCW);
+        setFrontFace(instance);
         bindPrimitive(scene, instance, *item.primitive);
         glBindVertexArray(item.primitive->vertexArray.id());
         glDrawElements(GL_TRIANGLES, item.primitive->indexCount, GL_UNSIGNED_INT, nullptr);

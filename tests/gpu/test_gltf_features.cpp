@@ -1,9 +1,9 @@
 // glTF features on the GPU, each on a small file the test writes itself where the answer is
-// known: COLOR_0 multiplies the base colour, doubleSided culls or flips back faces, a MASK edge
-// lands on the pixel its cutoff says (in the image and in a shadow), BLEND panes composite "over"
-// an SDF object behind them in back-to-front order without hiding it from the depth and id
-// AOVs, KHR_texture_transform moves a texture as its matrix says, KHR_materials_unlit shows the
-// base colour as it is.
+// known: COLOR_0 multiplies the base colour, doubleSided culls or flips back faces (in the image
+// and in shadows), a MASK edge lands on the pixel its cutoff says (in the image and in a shadow),
+// BLEND panes composite "over" an SDF object behind them in back-to-front order without hiding it
+// from the depth and id AOVs, KHR_texture_transform moves a texture as its matrix says,
+// KHR_materials_unlit shows the base colour as it is.
 #include "gltf_builder.hpp"
 #include "gpu_test_support.hpp"
 
@@ -243,6 +243,52 @@ TEST(GltfFeatures, MaskCutOutCastsNoShadow) {
     const float open = hdrAt(hdr, pixelOf(prepared, {2.5f, 0, 0.5f})).y;
     EXPECT_LT(shaded, 0.3f * open) << "the kept half casts no shadow";
     EXPECT_NEAR(underCut, open, 0.02f * open) << "the cut-out half casts a shadow";
+    expectNoGlErrors();
+}
+
+TEST(GltfFeatures, SingleSidedSurfaceCastsOnlyWhereTheLightSeesItsFront) {
+    // A horizontal quad at y = 1 over a floor at y = 0, the light slanting along +x so the
+    // shadow falls at 1 < x < 3, where the camera above sees the floor past the quad. The shadow
+    // pass culls faces as the raster pass does, seen from the light: a single-sided quad facing
+    // down (its back to the light) casts nothing; facing up, double-sided, or mirrored by its
+    // glTF node so that it faces up, it casts.
+    struct Case {
+        const char* name;
+        bool flipped;
+        bool doubleSided;
+        bool mirrored;
+        bool casts;
+    };
+    const Case cases[] = {{"up", false, false, false, true},
+                          {"down", true, false, false, false},
+                          {"down_double", true, true, false, true},
+                          {"down_mirrored", true, false, true, true}};
+    GltfBuilder f;
+    const json floor = place("floor", f, quadGltf(f, json::object()),
+                             {{"position", {2, 0, 0}}, {"rotation", {-90, 0, 0}}, {"scale", 3}});
+    const json light = {{{"type", "directional"}, {"direction", {2, -1, 0}}, {"intensity", 3}}};
+    const json camera = {
+        {"position", {2, 6, 0}}, {"target", {2, 0, 0}}, {"up", {0, 0, -1}}, {"fov", 50}};
+    const json render = {{"ambient", {0.05, 0.05, 0.05}}, {"shadows", {{"pcf_radius", 0}}}};
+    // The floor's colour there without the quad.
+    const PreparedScene bare = openTestScene({floor}, light, nullptr, render, camera);
+    const glm::ivec2 under = pixelOf(bare, {2.0f, 0, 0.5f});
+    const float lit = hdrAt(readHdrColor(renderPrepared(bare, kWidth, kHeight)), under).y;
+    ASSERT_GT(lit, 0.1f) << "the floor is not lit";
+    for (const Case& c : cases) {
+        GltfBuilder q;
+        json gltf = quadGltf(q, c.doubleSided ? json{{"doubleSided", true}} : json::object(), {},
+                             c.flipped);
+        if (c.mirrored) gltf["nodes"][0]["scale"] = {1, 1, -1};
+        const json quad =
+            place(c.name, q, gltf, {{"position", {0, 1, 0}}, {"rotation", {-90, 0, 0}}});
+        const PreparedScene prepared = openTestScene({quad, floor}, light, nullptr, render, camera);
+        const float shade = hdrAt(readHdrColor(renderPrepared(prepared, kWidth, kHeight)), under).y;
+        if (c.casts)
+            EXPECT_LT(shade, 0.3f * lit) << c.name << ": no shadow";
+        else
+            EXPECT_NEAR(shade, lit, kHalfFloatStep) << c.name << ": a back face cast a shadow";
+    }
     expectNoGlErrors();
 }
 
