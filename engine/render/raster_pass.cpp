@@ -1,5 +1,6 @@
 // Raster pass: depth-tested; back faces culled for single-sided glTF materials and lit with
-// flipped normals for double-sided ones; MASK cut out in the shader; BLEND drawn last, sorted.
+// flipped normals for double-sided ones; MASK cut out in the shader; BLEND drawn last, sorted;
+// lines and points drawn unlit.
 #include "render/raster_pass.hpp"
 
 #include "face_culling.hpp"
@@ -70,7 +71,9 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
         metallicRoughness = {m->metallicFactor, m->roughnessFactor, m->normalScale,
                              m->occlusionStrength};
         emissive = m->emissiveFactor * m->emissiveStrength;
-        alpha = {float(int(m->alphaMode)), m->alphaCutoff, m->unlit ? 1.0f : 0.0f, 0.0f};
+        alpha.x = float(int(m->alphaMode));
+        alpha.y = m->alphaCutoff;
+        alpha.z = m->unlit ? 1.0f : 0.0f;
         if (index < mesh.materialTextures.size()) {
             const GpuMeshMaterialTextures& t = mesh.materialTextures[index];
             textures = {t.baseColor, t.metallicRoughness, t.normal, t.emissive, t.occlusion};
@@ -84,6 +87,8 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
                 }
         }
     }
+    // Lines and points have no surface to light: their base colour, as KHR_materials_unlit.
+    if (primitive.mode != GL_TRIANGLES) alpha.z = 1.0f;
     setFaceCulling(drawsBothFaces(scene, instance, primitive));
     glUniform4fv(baseColorFactor_, 1, glm::value_ptr(baseColor));
     glUniform4fv(metallicRoughness_, 1, glm::value_ptr(metallicRoughness));
@@ -106,6 +111,7 @@ void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    glPointSize(kGltfPointSize);
     glUseProgram(program_.id());
 
     for (const GpuMeshInstance& instance : scene.instances) {
@@ -119,12 +125,13 @@ void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
             if (isBlended(materialOf(scene, instance, primitive))) continue;
             bindPrimitive(scene, instance, primitive);
             glBindVertexArray(primitive.vertexArray.id());
-            glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
+            glDrawElements(primitive.mode, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
         }
     }
     glBindVertexArray(0);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
+    glPointSize(1.0f);
     for (GLuint unit = 0; unit < 5; ++unit)
         glBindTextureUnit(unit, 0);
 }
@@ -162,6 +169,7 @@ void RasterPass::drawBlended(const GpuScene& scene, const FrameCamera& camera,
     glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnablei(GL_BLEND, 0);
     glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glPointSize(kGltfPointSize);
     glUseProgram(program_.id());
     for (const Item& item : items) {
         const GpuMeshInstance& instance = *item.instance;
@@ -171,9 +179,10 @@ void RasterPass::drawBlended(const GpuScene& scene, const FrameCamera& camera,
         setFrontFace(instance);
         bindPrimitive(scene, instance, *item.primitive);
         glBindVertexArray(item.primitive->vertexArray.id());
-        glDrawElements(GL_TRIANGLES, item.primitive->indexCount, GL_UNSIGNED_INT, nullptr);
+        glDrawElements(item.primitive->mode, item.primitive->indexCount, GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
+    glPointSize(1.0f);
     glDisablei(GL_BLEND, 0);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);

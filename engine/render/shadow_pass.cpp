@@ -2,6 +2,7 @@
 // single-sided surface whose back faces the light casts no shadow, as the light does not see
 // it), and a slope-scaled polygon offset as the depth bias (the shader adds a normal offset).
 // MASK materials cast through their cut-outs; BLEND ones cast where their alpha is >= 0.5.
+// Lines and points cast no shadow.
 #include "render/shadow_pass.hpp"
 
 #include "face_culling.hpp"
@@ -107,6 +108,7 @@ void ShadowPass::draw(const GpuScene& scene, std::span<const ShellPass* const> s
             setFrontFace(instance);
             const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
             for (const GpuMeshPrimitive& primitive : mesh.primitives) {
+                if (primitive.mode != GL_TRIANGLES) continue;
                 setFaceCulling(drawsBothFaces(scene, instance, primitive));
                 bindAlphaTest(scene, instance, primitive);
                 glBindVertexArray(primitive.vertexArray.id());
