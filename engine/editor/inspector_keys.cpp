@@ -118,6 +118,7 @@ constexpr KeyControl kMeshKeys[] = {
     {"material", "material"},
     {"animation", "animation"},
     {"time", "time (drag to scrub the animation)"},
+    {"scene", "glTF scene"},
     {"position", "position"},
     {"rotation", "rotation"},
     {"scale", "scale"},
