@@ -117,7 +117,7 @@ constexpr KeyControl kMeshKeys[] = {
     {"file", "file (applied when it loads)"},
     {"material", "material"},
     {"animation", "animation"},
-    {"time", "time (drag to scrub the animation)"},
+    {"time", "time (drag to scrub the animation, or play it)"},
     {"scene", "glTF scene"},
     {"position", "position"},
     {"rotation", "rotation"},
