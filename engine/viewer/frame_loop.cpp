@@ -186,9 +186,12 @@ void Viewer::playAnimation(float seconds) {
     if (!playback.playing) return;
     editor::Document& document = session_.document;
     const int mesh = playback.mesh;
-    // The mesh playing must still show an animation the compiled scene knows the length of.
+    // While playing, the play is a pending change that nothing commits: when something did (an
+    // edit applied, undo, another scene opened), the play has ended. And the mesh playing must
+    // still show an animation the compiled scene knows the length of.
     std::optional<editor::GltfContents> contents;
-    if (mesh >= 0 && std::size_t(mesh) < document.scene().meshes.size() &&
+    if (document.hasPendingChange() && mesh >= 0 &&
+        std::size_t(mesh) < document.scene().meshes.size() &&
         !document.scene().meshes[std::size_t(mesh)].animation.empty() && inspector_.prepared)
         contents = editor::gltfContents(*inspector_.prepared, mesh);
     if (!contents || contents->animation < 0) {
