@@ -13,6 +13,7 @@ Triangles loadTriangles(const std::string& gltfPath) {
     if (!asset) throw badInput(diagnostics);
     Triangles triangles;
     for (const MeshPrimitive& primitive : asset->primitives) {
+        if (primitive.mode != PrimitiveMode::Triangles) continue; // points and lines
         const auto base = std::uint32_t(triangles.positions.size() / 3);
         for (const MeshVertex& vertex : primitive.vertices) {
             triangles.positions.insert(triangles.positions.end(),

@@ -2,6 +2,7 @@
 #include "editor/picking.hpp"
 
 #include "editor/mesh_coverage.hpp"
+#include "editor/ray_segment.hpp"
 #include "editor/ray_triangle.hpp"
 #include "editor/scene_edits.hpp"
 #include "sdf/cpu_eval.hpp"
@@ -23,6 +24,7 @@ std::optional<float> nearestTriangle(const MeshAsset& asset, glm::vec3 origin, g
         return std::nullopt;
     std::optional<float> nearest;
     for (const MeshPrimitive& primitive : asset.primitives) {
+        if (primitive.mode != PrimitiveMode::Triangles) continue; // nearestLine
         for (std::size_t i = 0; i + 2 < primitive.indices.size(); i += 3) {
             const std::uint32_t ia = primitive.indices[i], ib = primitive.indices[i + 1],
                                 ic = primitive.indices[i + 2];
@@ -35,6 +37,44 @@ std::optional<float> nearestTriangle(const MeshAsset& asset, glm::vec3 origin, g
             if (hit && (materialOverride ||
                         meshPointDrawn(asset, primitive, a, b, c, hit->u, hit->v, hit->frontFace)))
                 nearest = hit->t;
+        }
+    }
+    return nearest;
+}
+
+// Whether a line or point is drawn where the ray comes nearest it: not where a MASK material
+// cuts it out (its alpha interpolated along the segment).
+bool lineDrawn(const MeshAsset& asset, const MeshPrimitive& primitive, const MeshVertex& a,
+               const MeshVertex& b, float s) {
+    if (primitive.material < 0 || std::size_t(primitive.material) >= asset.materials.size())
+        return true;
+    const MeshMaterial& m = asset.materials[std::size_t(primitive.material)];
+    return m.alphaMode != AlphaMode::Mask ||
+           meshAlphaAt(asset, m, a, b, b, s, 0.0f) >= m.alphaCutoff;
+}
+
+// The nearest line or point of one asset, placed by `model`, that the ray passes within
+// kLinePickPixels pixels of. In world space, where the pixel's size is known.
+std::optional<float> nearestLine(const MeshAsset& asset, const glm::mat4& model, const PickRay& ray,
+                                 float tMax, bool materialOverride) {
+    if (ray.pixelSize <= 0.0f && ray.pixelSpread <= 0.0f) return std::nullopt;
+    std::optional<float> nearest;
+    for (const MeshPrimitive& primitive : asset.primitives) {
+        if (primitive.mode == PrimitiveMode::Triangles) continue;
+        const std::size_t per = indicesPerElement(primitive.mode);
+        for (std::size_t i = 0; i + per - 1 < primitive.indices.size(); i += per) {
+            const std::uint32_t ia = primitive.indices[i], ib = primitive.indices[i + per - 1];
+            if (std::max(ia, ib) >= primitive.vertices.size()) continue;
+            const MeshVertex &a = primitive.vertices[ia], &b = primitive.vertices[ib];
+            const glm::vec3 pa = glm::vec3(model * glm::vec4(a.position, 1.0f));
+            const glm::vec3 pb = glm::vec3(model * glm::vec4(b.position, 1.0f));
+            const std::optional<SegmentApproach> approach = raySegmentApproach(
+                ray.origin, ray.direction, pa, pb, ray.tMin, nearest ? *nearest : tMax);
+            if (!approach) continue;
+            const float pixel = ray.pixelSize + ray.pixelSpread * approach->t;
+            if (approach->distance > kLinePickPixels * pixel) continue;
+            if (materialOverride || lineDrawn(asset, primitive, a, b, approach->s))
+                nearest = approach->t;
         }
     }
     return nearest;
@@ -54,9 +94,13 @@ std::optional<PickHit> pickMesh(const PreparedScene& prepared, const PickRay& ra
         const glm::vec3 origin = glm::vec3(toAsset * glm::vec4(ray.origin, 1.0f));
         const glm::vec3 direction = glm::vec3(toAsset * glm::vec4(ray.direction, 0.0f));
         const float tMax = best ? best->t : ray.tMax;
-        const std::optional<float> t =
-            nearestTriangle(prepared.assets[std::size_t(assetIndex)], origin, direction, ray.tMin,
-                            tMax, meshes[i].materialOverride >= 0);
+        const MeshAsset& asset = prepared.assets[std::size_t(assetIndex)];
+        const bool materialOverride = meshes[i].materialOverride >= 0;
+        std::optional<float> t =
+            nearestTriangle(asset, origin, direction, ray.tMin, tMax, materialOverride);
+        if (const std::optional<float> line = nearestLine(asset, meshes[i].transform.matrix(), ray,
+                                                          t ? *t : tMax, materialOverride))
+            t = line;
         if (t) {
             const std::uint32_t id = kMeshIdBase + std::uint32_t(i);
             best = PickHit{id, *t, Selection::mesh(int(i))};

@@ -149,20 +149,23 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
     const int errorsBefore = diagnostics.errorCount();
     const std::string sceneFile = scene.file.string();
 
-    // One asset per file and pose: instances showing the same file at the same animation and
-    // time share it; another pose of a loaded file is a copy of it, posed.
-    std::map<std::filesystem::path, int> assetByPath; // the first asset of each file
-    std::map<std::tuple<std::filesystem::path, std::string, double>, int> assetByPose;
+    // One asset per file (and glTF scene) and pose: instances showing the same file's scene at
+    // the same animation and time share it; another pose of a loaded file is a copy of it, posed.
+    using FileScene = std::pair<std::filesystem::path, int>;
+    std::map<FileScene, int> assetByPath; // the first asset of each file's scene
+    std::map<std::tuple<std::filesystem::path, int, std::string, double>, int> assetByPose;
     // Shared by the meshes, the shells' proxy meshes, the material textures and the sky image.
     GltfBudget gltfBudget;
     for (const MeshInstance& instance : scene.meshes) {
-        const auto poseKey = std::make_tuple(instance.path, instance.animation, instance.time);
+        const FileScene fileScene{instance.path, instance.gltfScene};
+        const auto poseKey =
+            std::make_tuple(instance.path, instance.gltfScene, instance.animation, instance.time);
         if (const auto found = assetByPose.find(poseKey); found != assetByPose.end()) {
             prepared.instanceAsset.push_back(found->second);
             continue;
         }
         std::optional<MeshAsset> asset;
-        if (const auto loaded = assetByPath.find(instance.path); loaded != assetByPath.end()) {
+        if (const auto loaded = assetByPath.find(fileScene); loaded != assetByPath.end()) {
             asset = prepared.assets[std::size_t(loaded->second)];
             if (!takeCopyBudget(*asset, gltfBudget)) {
                 diagnostics.error(sceneFile, instance.pointer,
@@ -174,7 +177,7 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
             }
         } else {
             Diagnostics meshDiagnostics;
-            asset = loadGltf(instance.path, files, meshDiagnostics, gltfBudget);
+            asset = loadGltf(instance.path, files, meshDiagnostics, gltfBudget, instance.gltfScene);
             for (Diagnostic& d : meshDiagnostics.items) {
                 // "scene.json: /meshes/0/file ("model.gltf"): model.gltf: /accessors/2: ..."
                 // names both places.
@@ -190,7 +193,7 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
             continue;
         }
         MeshPose pose;
-        if (instance.animation.empty() && assetByPath.count(instance.path)) {
+        if (instance.animation.empty() && assetByPath.count(fileScene)) {
             Diagnostics restDiagnostics; // the rest pose was baked once already: it bakes
             poseMeshAsset(*asset, pose, restDiagnostics);
         } else if (!instance.animation.empty()) {
@@ -213,7 +216,7 @@ std::optional<PreparedScene> prepareScene(Scene scene, const FileSource& files,
                 continue;
             }
         }
-        assetByPath.emplace(instance.path, int(prepared.assets.size()));
+        assetByPath.emplace(fileScene, int(prepared.assets.size()));
         assetByPose.emplace(poseKey, int(prepared.assets.size()));
         prepared.instanceAsset.push_back(int(prepared.assets.size()));
         prepared.assets.push_back(std::move(*asset));
@@ -286,6 +289,7 @@ std::optional<PreparedScene> openScene(const std::filesystem::path& path, Diagno
         if (!asset) return std::nullopt;
         PreparedScene prepared;
         prepared.scene = sceneFromGltf(path, *asset);
+        prepared.scene.meshes[0].gltfScene = gltfScene;
         prepared.assets.push_back(std::move(*asset));
         prepared.assetPoses.emplace_back();
         prepared.instanceAsset.push_back(0);

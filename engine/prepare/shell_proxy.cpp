@@ -84,6 +84,7 @@ ShellProxyMesh sphereProxyMesh(glm::vec3 min, glm::vec3 max) {
 ShellProxyMesh assetProxyMesh(const MeshAsset& asset) {
     ShellProxyMesh mesh;
     for (const MeshPrimitive& primitive : asset.primitives) {
+        if (primitive.mode != PrimitiveMode::Triangles) continue; // lines enclose nothing
         const auto base = std::uint32_t(mesh.positions.size());
         for (const MeshVertex& v : primitive.vertices)
             mesh.positions.push_back(v.position);

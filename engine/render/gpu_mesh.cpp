@@ -42,6 +42,9 @@ GpuMesh uploadMesh(const MeshAsset& asset) {
         p.indices = gl::createBufferWithData(
             GLsizeiptr(source.indices.size() * sizeof(std::uint32_t)), source.indices.data());
         p.indexCount = GLsizei(source.indices.size());
+        p.mode = source.mode == PrimitiveMode::Lines    ? GL_LINES
+                 : source.mode == PrimitiveMode::Points ? GL_POINTS
+                                                        : GL_TRIANGLES;
         p.material = source.material;
         p.centre = boundsCentre(source);
         p.vertexArray = gl::createVertexArray();

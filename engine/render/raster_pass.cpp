@@ -1,6 +1,9 @@
 // Raster pass: depth-tested; back faces culled for single-sided glTF materials and lit with
-// flipped normals for double-sided ones; MASK cut out in the shader; BLEND drawn last, sorted.
+// flipped normals for double-sided ones; MASK cut out in the shader; BLEND drawn last, sorted;
+// lines and points drawn unlit.
 #include "render/raster_pass.hpp"
+
+#include "face_culling.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -57,7 +60,6 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
     std::array<GLint, 5> texCoords{-1, -1, -1, -1, -1};
     std::array<glm::mat3, 5> uvTransforms{};
     uvTransforms.fill(glm::mat3(1.0f));
-    bool doubleSided = true;
     if (instance.materialOverride >= 0) {
         const Material& m = scene.materials[std::size_t(instance.materialOverride)];
         baseColor = glm::vec4(m.baseColor, 1.0f);
@@ -69,8 +71,9 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
         metallicRoughness = {m->metallicFactor, m->roughnessFactor, m->normalScale,
                              m->occlusionStrength};
         emissive = m->emissiveFactor * m->emissiveStrength;
-        alpha = {float(int(m->alphaMode)), m->alphaCutoff, m->unlit ? 1.0f : 0.0f, 0.0f};
-        doubleSided = m->doubleSided;
+        alpha.x = float(int(m->alphaMode));
+        alpha.y = m->alphaCutoff;
+        alpha.z = m->unlit ? 1.0f : 0.0f;
         if (index < mesh.materialTextures.size()) {
             const GpuMeshMaterialTextures& t = mesh.materialTextures[index];
             textures = {t.baseColor, t.metallicRoughness, t.normal, t.emissive, t.occlusion};
@@ -83,15 +86,10 @@ void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& ins
                     uvTransforms[u] = refs[u]->transform.matrix();
                 }
         }
-    } else {
-        doubleSided = false; // the glTF default material
     }
-    if (doubleSided) {
-        glDisable(GL_CULL_FACE);
-    } else {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_BACK);
-    }
+    // Lines and points have no surface to light: their base colour, as KHR_materials_unlit.
+    if (primitive.mode != GL_TRIANGLES) alpha.z = 1.0f;
+    setFaceCulling(drawsBothFaces(scene, instance, primitive));
     glUniform4fv(baseColorFactor_, 1, glm::value_ptr(baseColor));
     glUniform4fv(metallicRoughness_, 1, glm::value_ptr(metallicRoughness));
     glUniform3fv(emissive_, 1, glm::value_ptr(emissive));
@@ -113,6 +111,7 @@ void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    glPointSize(kGltfPointSize);
     glUseProgram(program_.id());
 
     for (const GpuMeshInstance& instance : scene.instances) {
@@ -121,18 +120,18 @@ void RasterPass::draw(const GpuScene& scene, const glm::vec3& background,
         glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
         glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
         glUniform1ui(objectId_, instance.objectId);
-        // A mirroring instance transform turns counter-clockwise triangles clockwise.
-        glFrontFace(glm::determinant(glm::mat3(instance.model)) < 0.0f ? GL_CW : GL_CCW);
+        setFrontFace(instance);
         for (const GpuMeshPrimitive& primitive : mesh.primitives) {
             if (isBlended(materialOf(scene, instance, primitive))) continue;
             bindPrimitive(scene, instance, primitive);
             glBindVertexArray(primitive.vertexArray.id());
-            glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
+            glDrawElements(primitive.mode, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
         }
     }
     glBindVertexArray(0);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
+    glPointSize(1.0f);
     for (GLuint unit = 0; unit < 5; ++unit)
         glBindTextureUnit(unit, 0);
 }
@@ -170,18 +169,20 @@ void RasterPass::drawBlended(const GpuScene& scene, const FrameCamera& camera,
     glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnablei(GL_BLEND, 0);
     glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glPointSize(kGltfPointSize);
     glUseProgram(program_.id());
     for (const Item& item : items) {
         const GpuMeshInstance& instance = *item.instance;
         glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
         glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(instance.normalMatrix));
         glUniform1ui(objectId_, instance.objectId);
-        glFrontFace(glm::determinant(glm::mat3(instance.model)) < 0.0f ? GL_CW : GL_CCW);
+        setFrontFace(instance);
         bindPrimitive(scene, instance, *item.primitive);
         glBindVertexArray(item.primitive->vertexArray.id());
-        glDrawElements(GL_TRIANGLES, item.primitive->indexCount, GL_UNSIGNED_INT, nullptr);
+        glDrawElements(item.primitive->mode, item.primitive->indexCount, GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
+    glPointSize(1.0f);
     glDisablei(GL_BLEND, 0);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);

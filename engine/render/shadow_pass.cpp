@@ -1,7 +1,11 @@
-// Shadow pass: depth only, both faces drawn (closed and open meshes alike, single-sided or
-// not), with a slope-scaled polygon offset as the depth bias (the shader adds a normal offset).
+// Shadow pass: depth only, with the raster pass's face culling seen from the light (a
+// single-sided surface whose back faces the light casts no shadow, as the light does not see
+// it), and a slope-scaled polygon offset as the depth bias (the shader adds a normal offset).
 // MASK materials cast through their cut-outs; BLEND ones cast where their alpha is >= 0.5.
+// Lines and points cast no shadow.
 #include "render/shadow_pass.hpp"
+
+#include "face_culling.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -101,13 +105,18 @@ void ShadowPass::draw(const GpuScene& scene, std::span<const ShellPass* const> s
         for (const GpuMeshInstance& instance : scene.instances) {
             if (instance.mesh < 0) continue;
             glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
+            setFrontFace(instance);
             const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
             for (const GpuMeshPrimitive& primitive : mesh.primitives) {
+                if (primitive.mode != GL_TRIANGLES) continue;
+                setFaceCulling(drawsBothFaces(scene, instance, primitive));
                 bindAlphaTest(scene, instance, primitive);
                 glBindVertexArray(primitive.vertexArray.id());
                 glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
             }
         }
+        glDisable(GL_CULL_FACE);
+        glFrontFace(GL_CCW);
         for (std::size_t i = 0; i < scene.shells.size() && i < shellPasses.size(); ++i)
             shellPasses[i]->drawDepth(scene.shells[i], scene.shadowViews[layer],
                                       scene.shadowSlopeBias);

@@ -50,20 +50,58 @@ std::string primitivePointer(std::size_t mesh, std::size_t primitive) {
     return "/meshes/" + std::to_string(mesh) + "/primitives/" + std::to_string(primitive);
 }
 
-// Converts an index list of `mode` (4, 5 or 6) to a triangle list.
-std::optional<std::vector<std::uint32_t>> toTriangles(const std::vector<std::uint32_t>& indices,
-                                                      int mode, const std::string& pointer,
-                                                      Reporter& report) {
+bool isTriangleMode(int mode) {
+    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+PrimitiveMode primitiveMode(int mode) {
+    if (isTriangleMode(mode)) return PrimitiveMode::Triangles;
+    return mode == TINYGLTF_MODE_POINTS ? PrimitiveMode::Points : PrimitiveMode::Lines;
+}
+
+// The number of indices an index list of `count` entries in glTF mode `mode` becomes (what
+// toElements makes of it).
+std::uint64_t elementIndexCount(std::uint64_t count, int mode) {
+    switch (mode) {
+    case TINYGLTF_MODE_POINTS:
+    case TINYGLTF_MODE_LINE:
+    case TINYGLTF_MODE_TRIANGLES:
+        return count;
+    case TINYGLTF_MODE_LINE_STRIP:
+        return count < 2 ? 0 : (count - 1) * 2;
+    case TINYGLTF_MODE_LINE_LOOP:
+        return count < 2 ? 0 : count * 2;
+    default: // strips and fans
+        return count < 3 ? 0 : (count - 2) * 3;
+    }
+}
+
+// Converts an index list of glTF mode `mode` (0 to 6; validated) to a list of points, line
+// segments (pairs) or triangles (glTF 2.0 section 3.7.2.1, "Topology Types").
+std::optional<std::vector<std::uint32_t>> toElements(const std::vector<std::uint32_t>& indices,
+                                                     int mode, const std::string& pointer,
+                                                     Reporter& report) {
     std::vector<std::uint32_t> out;
     const std::size_t n = indices.size();
-    if (mode == TINYGLTF_MODE_TRIANGLES) {
-        if (n % 3 != 0) {
-            report.error(pointer, std::to_string(n) +
-                                      " indices (or vertices) do not form whole triangles, "
-                                      "expected a multiple of 3");
+    if (mode == TINYGLTF_MODE_POINTS) return indices;
+    if (mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_LINE) {
+        const std::size_t per = mode == TINYGLTF_MODE_LINE ? 2 : 3;
+        if (n % per != 0) {
+            report.error(pointer, std::to_string(n) + " indices (or vertices) do not form whole " +
+                                      (per == 2 ? "lines" : "triangles") +
+                                      ", expected a multiple of " + std::to_string(per));
             return std::nullopt;
         }
         return indices;
+    }
+    if (mode == TINYGLTF_MODE_LINE_STRIP || mode == TINYGLTF_MODE_LINE_LOOP) {
+        if (n < 2) return out;
+        out.reserve(std::size_t(elementIndexCount(n, mode)));
+        for (std::size_t i = 0; i + 1 < n; ++i)
+            out.insert(out.end(), {indices[i], indices[i + 1]});
+        if (mode == TINYGLTF_MODE_LINE_LOOP) out.insert(out.end(), {indices[n - 1], indices[0]});
+        return out;
     }
     if (n < 3) return out;
     out.reserve((n - 2) * 3);
@@ -177,12 +215,6 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
                    Reporter& report, SourcePrimitive& out) {
     const tinygltf::Primitive& prim = model.meshes[meshIndex].primitives[primIndex];
     const std::string pointer = primitivePointer(meshIndex, primIndex);
-    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-        prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-        report.warning(pointer + "/mode", "points and lines (mode " + std::to_string(prim.mode) +
-                                              ") are not drawn; primitive skipped");
-        return true;
-    }
     const auto accessorOf = [&](const char* name) -> int {
         const auto it = prim.attributes.find(name);
         if (it == prim.attributes.end()) return -1;
@@ -310,11 +342,16 @@ bool readPrimitive(const tinygltf::Model& model, std::size_t meshIndex, std::siz
         for (std::size_t i = 0; i < vertexCount; ++i)
             indices[i] = std::uint32_t(i);
     }
-    auto triangles = toTriangles(indices, prim.mode, pointer, report);
-    if (!triangles) return false;
-    out.triangles = std::move(*triangles);
-    if (out.triangles.empty()) {
-        report.warning(pointer, "primitive has no triangles; skipped");
+    auto elements = toElements(indices, prim.mode, pointer, report);
+    if (!elements) return false;
+    out.indices = std::move(*elements);
+    out.mode = primitiveMode(prim.mode);
+    if (out.indices.empty()) {
+        report.warning(pointer, std::string("primitive has no ") +
+                                    (out.mode == PrimitiveMode::Triangles ? "triangles"
+                                     : out.mode == PrimitiveMode::Lines   ? "lines"
+                                                                          : "points") +
+                                    "; skipped");
         return true;
     }
     out.material = prim.material >= 0 && std::size_t(prim.material) < model.materials.size()
@@ -371,12 +408,16 @@ bool bakePrimitive(const RigPrimitive& source, const glm::dmat4& world,
             return false;
         }
     }
-    out.indices = source.triangles;
-    if (det < 0)
+    out.indices = source.indices;
+    out.mode = source.mode;
+    const bool triangles = source.mode == PrimitiveMode::Triangles;
+    if (det < 0 && triangles)
         for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3)
             std::swap(out.indices[t + 1], out.indices[t + 2]);
     std::vector<glm::vec3> normals;
-    if (source.normals.empty()) {
+    if (source.normals.empty() && !triangles) {
+        normals.assign(positions.size(), glm::vec3(0.0f)); // nothing to compute them from
+    } else if (source.normals.empty()) {
         normals = smoothNormals(positions, out.indices);
     } else {
         normals.resize(source.normals.size());
@@ -388,7 +429,9 @@ bool bakePrimitive(const RigPrimitive& source, const glm::dmat4& world,
         }
     }
     std::vector<glm::vec4> tangents;
-    if (source.tangents.empty()) {
+    if (!triangles) {
+        tangents.assign(positions.size(), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)); // drawn unlit
+    } else if (source.tangents.empty()) {
         tangents = generateTangents(
             positions, normals, source.tangentUvSet == 1 ? source.uvs1 : source.uvs, out.indices);
     } else {
@@ -564,14 +607,11 @@ bool walkNodes(const tinygltf::Model& model, Reporter& report, MeshRig& rig) {
     return true;
 }
 // The vertices and triangle indices one instance of mesh `m` adds, from its accessors' counts
-// (what readPrimitive will read and toTriangles make of it). Accessor references were checked.
+// (what readPrimitive will read and toElements make of it). Accessor references were checked.
 void meshCounts(const tinygltf::Model& model, std::size_t m, std::uint64_t& vertices,
                 std::uint64_t& indices) {
     vertices = indices = 0;
     for (const tinygltf::Primitive& prim : model.meshes[m].primitives) {
-        if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-            prim.mode != TINYGLTF_MODE_TRIANGLE_FAN)
-            continue; // skipped
         const auto position = prim.attributes.find("POSITION");
         if (position == prim.attributes.end() || position->second < 0 ||
             std::size_t(position->second) >= model.accessors.size())
@@ -580,11 +620,8 @@ void meshCounts(const tinygltf::Model& model, std::size_t m, std::uint64_t& vert
         std::uint64_t listed = count;
         if (prim.indices >= 0 && std::size_t(prim.indices) < model.accessors.size())
             listed = model.accessors[std::size_t(prim.indices)].count;
-        const std::uint64_t triangleIndices = prim.mode == TINYGLTF_MODE_TRIANGLES ? listed
-                                              : listed < 3                         ? 0
-                                                           : (listed - 2) * 3;
         vertices += count;
-        indices += triangleIndices;
+        indices += elementIndexCount(listed, prim.mode);
     }
 }
 
@@ -701,7 +738,8 @@ bool buildGeometry(const tinygltf::Model& model, int scene, Allowance& vertices,
     }
     asset.rig = rig;
     if (!bakePose(*rig, {}, report, asset)) return false;
-    if (asset.primitives.empty()) report.warning("", "the file's scene contains no triangles");
+    if (asset.primitives.empty())
+        report.warning("", "the file's scene contains no triangles, lines or points");
     return true;
 }
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <limits>
 
 namespace rmsc {
 
@@ -66,8 +67,9 @@ const std::vector<std::string> kCameraKeys = {"position", "target", "up",       
 const std::vector<std::string> kRenderKeys = {"max_steps",  "max_distance", "surface_epsilon",
                                               "background", "ambient",      "exposure"};
 const std::vector<std::string> kMaterialKeys = {"base_color", "metallic", "roughness", "emissive"};
-const std::vector<std::string> kMeshKeys = {
-    "name", "file", "position", "rotation", "quaternion", "scale", "material", "animation", "time"};
+const std::vector<std::string> kMeshKeys = {"name",       "file",  "position", "rotation",
+                                            "quaternion", "scale", "material", "animation",
+                                            "time",       "scene"};
 
 // "animation" (a glTF animation's name, or its index as text: "0") and "time" (seconds, >= 0) of a
 // mesh.
@@ -239,6 +241,9 @@ void readMeshes(SceneReader& r, const Json& array, std::vector<MeshInstance>& me
         readTransform(r.json, object, meshPointer, mesh.transform);
         readMaterialRef(r, object, meshPointer, &mesh.materialOverride);
         readMeshAnimation(r, object, meshPointer, mesh);
+        // Which scene of the glTF file (checked against the file when it loads).
+        readIntegerField(r.json, object, meshPointer, "scene", &mesh.gltfScene, 0,
+                         std::numeric_limits<int>::max());
         meshes.push_back(std::move(mesh));
     }
 }

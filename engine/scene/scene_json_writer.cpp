@@ -181,6 +181,7 @@ Json sceneToJsonValue(const Scene& scene) {
             out["animation"] = mesh.animation;
             out["time"] = mesh.time;
         }
+        if (mesh.gltfScene >= 0) out["scene"] = mesh.gltfScene;
         meshes.push_back(std::move(out));
     }
     root["meshes"] = std::move(meshes);

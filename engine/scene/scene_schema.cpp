@@ -368,7 +368,10 @@ std::vector<ObjectDef> objectDefs() {
                 described(string(), "the glTF animation shown, by name or by index as text "
                                     "(\"0\"); without it the rest pose")},
                {"time", described(number(NumberRange::atLeast(0.0)),
-                                  "seconds into \"animation\" (default 0)")}},
+                                  "seconds into \"animation\" (default 0)")},
+               {"scene", described(Json{{"type", "integer"}, {"minimum", 0}},
+                                   "the index of the glTF file's scene drawn (default: the "
+                                   "file's default scene)")}},
               transformKeys()),
          {"file"},
          "a placement of a glTF file"},

@@ -14,4 +14,13 @@ void EditorSession::saveCameraToScene() {
     sceneCamera = view;
 }
 
+void EditorSession::lookThrough(const Camera& view) {
+    sceneCamera.fovYDegrees = view.fovYDegrees;
+    sceneCamera.nearPlane = view.nearPlane;
+    sceneCamera.farPlane = view.farPlane;
+    sceneCamera.projection = view.projection;
+    sceneCamera.orthoHeight = view.orthoHeight;
+    camera.setFromCamera(view);
+}
+
 } // namespace rmsc::app

@@ -19,6 +19,9 @@ struct EditorSession {
     void resetCamera();
     // The view becomes the scene's camera, as one undo step.
     void saveCameraToScene();
+    // The view looks through `view` (a glTF file's camera): its place and its lens; the scene's
+    // camera is unchanged until saved to it.
+    void lookThrough(const Camera& view);
 };
 
 } // namespace rmsc::app

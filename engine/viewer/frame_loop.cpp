@@ -3,6 +3,7 @@
 
 #include "core/exit_code.hpp"
 #include "editor/dropped_files.hpp"
+#include "editor/gltf_contents.hpp"
 #include "editor/multi_selection.hpp"
 #include "editor/recent_files.hpp"
 #include "editor/recovery.hpp"
@@ -73,6 +74,7 @@ int Viewer::run() {
         layout_ = layoutPanels(ww, wh, ImGui::GetFrameHeight(), ImGui::GetFontSize() / 13.0f);
 
         handleInput(seconds);
+        playAnimation(seconds);
         drawUi();
         commitFinishedEdits();
         pollFiles();
@@ -131,7 +133,7 @@ ScriptActions Viewer::readInput() {
         else
             playScriptFrame(*script_, scriptFrame_++, glfwGetTime(), queue_, scriptMods_);
     } else if (queue_.empty() && gpu_.refined() && !ImGui::IsAnyItemActive() && !gesture_.active &&
-               !gizmo_.dragging()) {
+               !gizmo_.dragging() && !inspector_.playback.playing) {
         glfwWaitEventsTimeout(0.25); // idle: wake for input or the file poll
     } else {
         glfwPollEvents();
@@ -178,6 +180,30 @@ void Viewer::handleInput(float seconds) {
     updateGesture(gesture_, input_, session_.document, layout_.viewport);
 }
 
+void Viewer::playAnimation(float seconds) {
+    inspector_.prepared = gpu_.newestScene();
+    editor::AnimationPlayback& playback = inspector_.playback;
+    if (!playback.playing) return;
+    editor::Document& document = session_.document;
+    const int mesh = playback.mesh;
+    // While playing, the play is a pending change that nothing commits: when something did (an
+    // edit applied, undo, another scene opened), the play has ended. And the mesh playing must
+    // still show an animation the compiled scene knows the length of.
+    std::optional<editor::GltfContents> contents;
+    if (document.hasPendingChange() && mesh >= 0 &&
+        std::size_t(mesh) < document.scene().meshes.size() &&
+        !document.scene().meshes[std::size_t(mesh)].animation.empty() && inspector_.prepared)
+        contents = editor::gltfContents(*inspector_.prepared, mesh);
+    if (!contents || contents->animation < 0) {
+        editor::pausePlayback(playback);
+        return;
+    }
+    MeshInstance& instance = document.editScene().meshes[std::size_t(mesh)];
+    instance.time = editor::advancePlayback(playback, instance.time, seconds,
+                                            contents->durations[std::size_t(contents->animation)]);
+    document.markChanged("Play animation");
+}
+
 void Viewer::drawUi() {
     ViewerCommands commands;
     const NewShapePlace place = newShapePlace();
@@ -211,8 +237,9 @@ void Viewer::drawUi() {
 
 void Viewer::commitFinishedEdits() {
     editor::Document& document = session_.document;
+    // Playing an animation is one undo step, from Play to Pause.
     if (!ImGui::IsAnyItemActive() && !gesture_.active && !gizmo_.dragging() &&
-        document.hasPendingChange())
+        !inspector_.playback.playing && document.hasPendingChange())
         document.commit();
     if (!editor::selectionValid(document.scene(), document.selection))
         document.selection = editor::Selection::none();

@@ -50,7 +50,10 @@ class Viewer {
   private:
     ScriptActions readInput();       // this frame's events, and a script's other actions
     void handleInput(float seconds); // shortcuts, gestures, camera, click to select
-    void drawUi();                   // the menus, panels, overlay and dialogs
+    // Advances the glTF animation playing by the frame's seconds (editor/animation_playback.hpp)
+    // and hands the inspector the newest compiled scene.
+    void playAnimation(float seconds);
+    void drawUi(); // the menus, panels, overlay and dialogs
     // Carries out the commands the part that just ran queued, and clears them.
     void carryOut(ViewerCommands& commands);
     void commitFinishedEdits(); // once no widget or gesture is changing the scene

@@ -5,10 +5,12 @@
 // place and mark it changed; the frame loop commits one undo step once no widget is active.
 #pragma once
 
+#include "editor/animation_playback.hpp"
 #include "editor/document.hpp"
 #include "editor_session.hpp"
 #include "file_field.hpp"
 #include "panel_layout.hpp"
+#include "prepare/prepared_scene.hpp"
 #include "view_settings.hpp"
 #include "viewer_commands.hpp"
 
@@ -41,6 +43,12 @@ struct InspectorState {
     FileField meshFile;          // the selected mesh's glTF file
     EnvironmentFields environment;
     std::string cameraRefusal; // why the last camera position / target / up was not taken
+    // The glTF animation playing (the frame loop advances its mesh's time), what the mesh
+    // inspector lists of a glTF file (the newest scene that compiled, set every frame; nullptr
+    // before one has), and why the last look through a glTF camera was refused.
+    editor::AnimationPlayback playback;
+    const PreparedScene* prepared = nullptr;
+    std::string gltfCameraRefusal;
 };
 
 void drawInspectorPanel(EditorSession& session, InspectorState& state, ViewSettings& view,
@@ -51,9 +59,12 @@ FileField* takeBrowseRequest(InspectorState& state);
 // The Object tab, by the kind of the selection.
 void drawSdfNodeInspector(editor::Document& document, const std::vector<int>& path,
                           InspectorState& state, ViewerCommands& commands);
-void drawMeshInspector(editor::Document& document, int mesh, InspectorState& state,
+void drawMeshInspector(EditorSession& session, int mesh, InspectorState& state,
                        ViewerCommands& commands);
 void drawLightInspector(editor::Document& document, int light, ViewerCommands& commands);
+// The part of a mesh's inspector about its glTF file: the animation shown, its timeline with
+// play / pause, the file's cameras to look through and its scenes to draw.
+void drawMeshGltfInspector(EditorSession& session, int mesh, InspectorState& state);
 
 // Parts of an SDF node's inspector; each returns true when it changed the node.
 // Lengths drag in steps that follow `size`; `refusal` says why the last edit was undone.

@@ -1,6 +1,6 @@
 // The inspector for a mesh instance: name, its glTF file (taken only when it loads,
-// editor/mesh_file_edits.hpp), transform, material override and the glTF animation shown with
-// its time (see inspector.hpp).
+// editor/mesh_file_edits.hpp), transform, material override, then what its glTF file holds
+// (inspector_mesh_gltf.cpp; see inspector.hpp).
 #include "inspector.hpp"
 
 #include "editor/mesh_file_edits.hpp"
@@ -13,8 +13,9 @@
 
 namespace rmsc::app {
 
-void drawMeshInspector(editor::Document& document, int index, InspectorState& state,
+void drawMeshInspector(EditorSession& session, int index, InspectorState& state,
                        ViewerCommands& commands) {
+    editor::Document& document = session.document;
     if (ImGui::InputText("name", &document.editScene().meshes[std::size_t(index)].name))
         document.markChanged("Rename");
     FileField& field = state.meshFile;
@@ -48,17 +49,7 @@ void drawMeshInspector(editor::Document& document, int index, InspectorState& st
     if (chooseMaterial(scene, mesh.materialOverride, "(glTF materials)"))
         document.markChanged("Material");
     ImGui::Separator();
-    // The glTF animation shown and its time: dragging the time scrubs it (each change poses
-    // the mesh again when the scene is prepared).
-    if (ImGui::InputText("animation", &mesh.animation)) document.markChanged("Animation");
-    helpTooltip("The glTF animation shown, by name or index (\"0\"); empty for the rest pose.");
-    float time = float(mesh.time);
-    // The reader takes any time >= 0.
-    if (numberField("time", &time, 1, 0.01f, {0.0, ParamRange{}.max, false, false, Unit::Seconds},
-                    "Seconds into the animation; drag to scrub.", {.format = "%.2f s"})) {
-        mesh.time = time;
-        document.markChanged("Animation time");
-    }
+    drawMeshGltfInspector(session, index, state);
     drawDuplicateDeleteButtons(commands);
 }
 

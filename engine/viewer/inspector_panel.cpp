@@ -17,7 +17,7 @@ void drawObjectTab(EditorSession& session, InspectorState& state, ViewerCommands
         drawSdfNodeInspector(session.document, selection.sdfPath, state, commands);
         break;
     case editor::SelectionKind::Mesh:
-        drawMeshInspector(session.document, selection.index, state, commands);
+        drawMeshInspector(session, selection.index, state, commands);
         break;
     case editor::SelectionKind::Light:
         drawLightInspector(session.document, selection.index, commands);

@@ -27,6 +27,8 @@ void openStartScene(const std::filesystem::path& path, EditorSession& session, S
             // The model becomes a mesh instance of a new scene, saved wherever the user says.
             opened->scene.meshes[0].path = std::filesystem::absolute(path);
             document.reset(opened->scene, {});
+            // Selected, so the inspector shows the file's animations, cameras and scenes.
+            document.selection = editor::Selection::mesh(0);
         }
     } else {
         std::optional<Scene> scene = editor::loadSceneForEditing(path, diagnostics);

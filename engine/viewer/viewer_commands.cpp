@@ -27,11 +27,13 @@ void Viewer::carryOut(ViewerCommands& commands) {
         const ViewerCommand command = queued.command;
         switch (command) {
         case ViewerCommand::Undo:
-            gizmo_.drag.reset(); // a drag running is committed, then undone
+            gizmo_.drag.reset();                        // a drag running is committed, then undone
+            editor::pausePlayback(inspector_.playback); // and so is the animation playing
             document.undo();
             break;
         case ViewerCommand::Redo:
             gizmo_.drag.reset();
+            editor::pausePlayback(inspector_.playback);
             document.redo();
             break;
         case ViewerCommand::Duplicate:

@@ -32,6 +32,10 @@ editor::Selection pickAt(const PreparedScene& prepared, const Scene& scene, cons
     ray.direction = direction / length;
     ray.tMin = camera.nearPlane * length; // the near and far planes are view depths
     ray.tMax = camera.farPlane * length;
+    // A pixel's size along the ray, from the next pixel's ray, so that lines and points (a
+    // pixel or a few wide) can be clicked.
+    ray.pixelSize = glm::length(pixelRayOrigin(frame, x + 1.0f, y, w, h) - ray.origin);
+    ray.pixelSpread = glm::length(pixelRayDirection(frame, x + 1.0f, y, w, h) - direction) / length;
     const std::optional<editor::PickHit> hit = editor::pick(prepared, ray);
     return hit ? editor::selectionForObjectId(scene, hit->objectId) : editor::Selection::none();
 }

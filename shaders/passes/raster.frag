@@ -51,7 +51,9 @@ void main() {
     outObjectId = uObjectId;
     if (uAlpha.z == 1.0) { // KHR_materials_unlit: the base colour, no lighting
         outColor = vec4(baseColor.rgb, alpha);
-        vec3 facing = normalize(vWorldNormal);
+        // Lines and points without NORMAL have none: they face the camera.
+        vec3 facing = dot(vWorldNormal, vWorldNormal) > 1e-12 ? normalize(vWorldNormal)
+                                                              : -frame.cameraForward.xyz;
         outNormal = vec4(gl_FrontFacing ? facing : -facing, 0.0);
         return;
     }

@@ -35,10 +35,12 @@ real (tests/e2e/xdnd_drop.py speaks XDND to the window, as a file manager does).
 An eighth run selects the ball, exports it with File > Export selection (its dialog, a
 resolution typed in, Export), and checks the .glb it writes (the ball's box, its material, the
 notice's triangle count, no temporary file left) and, from window shots, the dialog and the
-progress bar shown while the export runs on its thread. A last run checks that `--ui-scale 2`
-doubles the panels' sizes.
+progress bar shown while the export runs on its thread. A run checks that `--ui-scale 2`
+doubles the panels' sizes. A last run opens a .gltf written by the test, chooses its animation,
+plays it for 30 frames and pauses it, chooses its second scene and saves; the test checks the
+saved mesh's animation, time (1 s) and scene, and that the quad moved in the view.
 Usage: test_viewer.py RMSC SOURCE_DIR. Exits 77 (skipped) only when no X server can be started."""
-import json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
+import base64, json, math, os, re, shutil, struct, subprocess, sys, tempfile, zlib
 
 SKIP = 77
 
@@ -679,6 +681,69 @@ def scale_run(rmsc, source, tmp, xvfb_run, check):
               34 <= bar - 1 <= 38, bar - 1)
 
 
+def gltf_run(rmsc, source, tmp, xvfb_run, check):
+    """The glTF run (tests/e2e/viewer_gltf_script.txt): a .gltf with an animation, a camera and
+    two scenes opened by itself; its animation played for 1 s and paused, its second scene
+    chosen, the scene saved."""
+    folder = os.path.join(tmp, "gltf")
+    os.makedirs(folder)
+    # A 2 x 2 quad facing +z; node 0 draws it (scene A) and animation "Rise" lifts it from y = 0
+    # at 0 s to y = 2 at 2 s; node 1 draws it at x = 3 (scene B); camera 0 on node 2 (scene A).
+    data = struct.pack("12f", -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0) + \
+        struct.pack("6H", 0, 1, 2, 0, 2, 3) + bytes(4) + struct.pack("2f", 0, 2) + \
+        struct.pack("6f", 0, 0, 0, 0, 2, 0)
+    gltf = {
+        "asset": {"version": "2.0"}, "scene": 0,
+        "scenes": [{"name": "A", "nodes": [0, 2]}, {"name": "B", "nodes": [1]}],
+        "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [3, 0, 0]},
+                  {"camera": 0, "translation": [0, 0, 6]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "cameras": [{"name": "Front", "type": "perspective",
+                     "perspective": {"yfov": 0.6, "znear": 0.1, "zfar": 100}}],
+        "animations": [{"name": "Rise",
+                        "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}],
+                        "samplers": [{"input": 2, "output": 3}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 4,
+             "min": [-1, -1, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5123, "type": "SCALAR", "count": 6},
+            {"bufferView": 2, "componentType": 5126, "type": "SCALAR", "count": 2,
+             "min": [0], "max": [2]},
+            {"bufferView": 3, "componentType": 5126, "type": "VEC3", "count": 2}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                        {"buffer": 0, "byteOffset": 64, "byteLength": 8},
+                        {"buffer": 0, "byteOffset": 72, "byteLength": 24}],
+        "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64," +
+                     base64.b64encode(data).decode()}]}
+    model = os.path.join(folder, "model.gltf")
+    json.dump(gltf, open(model, "w"))
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_gltf_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    run = run_viewer(xvfb_run, rmsc, model, script, "640x480")
+    check("glTF run: viewer exits 0", run.returncode == 0, run.returncode)
+    saved_path = os.path.join(folder, "saved.json")
+    check("glTF run: the scene was saved", os.path.exists(saved_path))
+    if os.path.exists(saved_path):
+        mesh = json.load(open(saved_path))["meshes"][0]
+        check("the mesh shows the animation chosen", mesh.get("animation") == "Rise", mesh)
+        check("played for 30 frames of 1/30 s: its time is 1 s",
+              abs(mesh.get("time", 0) - 1.0) < 0.07, mesh.get("time"))
+        check("and draws the file's second scene", mesh.get("scene") == 1, mesh)
+    shots = {}
+    for name in ("rest", "played"):
+        path = os.path.join(folder, name + ".png")
+        check(f"glTF run: window shot {name} written", os.path.exists(path))
+        if os.path.exists(path):
+            shots[name] = read_png(path)
+    if len(shots) == 2:
+        # The view is x 153..440; the quad rose by 1 m, uncovering the ground below it.
+        moved = [p for p in differing_pixels(shots["rest"], shots["played"])
+                 if 160 <= p[0] <= 430 and 260 <= p[1] <= 340]
+        check("playing moved the quad in the view", len(moved) > 2000, len(moved))
+
+
 def glb_summary(path):
     """The JSON of a .glb and the box of its positions (the accessors' min and max)."""
     data = open(path, "rb").read()
@@ -877,6 +942,7 @@ def main():
         real_drop_run(rmsc, source, tmp, xvfb_run, check)
         export_run(rmsc, source, tmp, xvfb_run, check)
         scale_run(rmsc, source, tmp, xvfb_run, check)
+        gltf_run(rmsc, source, tmp, xvfb_run, check)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

@@ -1,13 +1,15 @@
 // glTF features on the GPU, each on a small file the test writes itself where the answer is
-// known: COLOR_0 multiplies the base colour, doubleSided culls or flips back faces, a MASK edge
-// lands on the pixel its cutoff says (in the image and in a shadow), BLEND panes composite "over"
-// an SDF object behind them in back-to-front order without hiding it from the depth and id
-// AOVs, KHR_texture_transform moves a texture as its matrix says, KHR_materials_unlit shows the
-// base colour as it is.
+// known: COLOR_0 multiplies the base colour, doubleSided culls or flips back faces (in the image
+// and in shadows), a MASK edge lands on the pixel its cutoff says (in the image and in a shadow),
+// BLEND panes composite "over" an SDF object behind them in back-to-front order without hiding it
+// from the depth and id AOVs, KHR_texture_transform moves a texture as its matrix says,
+// KHR_materials_unlit shows the base colour as it is, lines and points are drawn unlit where
+// they project and nowhere else.
 #include "gltf_builder.hpp"
 #include "gpu_test_support.hpp"
 
 #include "render/frame.hpp"
+#include "render/raster_pass.hpp"
 #include "scene/scene_json.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -243,6 +245,158 @@ TEST(GltfFeatures, MaskCutOutCastsNoShadow) {
     const float open = hdrAt(hdr, pixelOf(prepared, {2.5f, 0, 0.5f})).y;
     EXPECT_LT(shaded, 0.3f * open) << "the kept half casts no shadow";
     EXPECT_NEAR(underCut, open, 0.02f * open) << "the cut-out half casts a shadow";
+    expectNoGlErrors();
+}
+
+TEST(GltfFeatures, SingleSidedSurfaceCastsOnlyWhereTheLightSeesItsFront) {
+    // A horizontal quad at y = 1 over a floor at y = 0, the light slanting along +x so the
+    // shadow falls at 1 < x < 3, where the camera above sees the floor past the quad. The shadow
+    // pass culls faces as the raster pass does, seen from the light: a single-sided quad facing
+    // down (its back to the light) casts nothing; facing up, double-sided, or mirrored by its
+    // glTF node so that it faces up, it casts.
+    struct Case {
+        const char* name;
+        bool flipped;
+        bool doubleSided;
+        bool mirrored;
+        bool casts;
+    };
+    const Case cases[] = {{"up", false, false, false, true},
+                          {"down", true, false, false, false},
+                          {"down_double", true, true, false, true},
+                          {"down_mirrored", true, false, true, true}};
+    GltfBuilder f;
+    const json floor = place("floor", f, quadGltf(f, json::object()),
+                             {{"position", {2, 0, 0}}, {"rotation", {-90, 0, 0}}, {"scale", 3}});
+    const json light = {{{"type", "directional"}, {"direction", {2, -1, 0}}, {"intensity", 3}}};
+    const json camera = {
+        {"position", {2, 6, 0}}, {"target", {2, 0, 0}}, {"up", {0, 0, -1}}, {"fov", 50}};
+    const json render = {{"ambient", {0.05, 0.05, 0.05}}, {"shadows", {{"pcf_radius", 0}}}};
+    // The floor's colour there without the quad.
+    const PreparedScene bare = openTestScene({floor}, light, nullptr, render, camera);
+    const glm::ivec2 under = pixelOf(bare, {2.0f, 0, 0.5f});
+    const float lit = hdrAt(readHdrColor(renderPrepared(bare, kWidth, kHeight)), under).y;
+    ASSERT_GT(lit, 0.1f) << "the floor is not lit";
+    for (const Case& c : cases) {
+        GltfBuilder q;
+        json gltf = quadGltf(q, c.doubleSided ? json{{"doubleSided", true}} : json::object(), {},
+                             c.flipped);
+        if (c.mirrored) gltf["nodes"][0]["scale"] = {1, 1, -1};
+        const json quad =
+            place(c.name, q, gltf, {{"position", {0, 1, 0}}, {"rotation", {-90, 0, 0}}});
+        const PreparedScene prepared = openTestScene({quad, floor}, light, nullptr, render, camera);
+        const float shade = hdrAt(readHdrColor(renderPrepared(prepared, kWidth, kHeight)), under).y;
+        if (c.casts)
+            EXPECT_LT(shade, 0.3f * lit) << c.name << ": no shadow";
+        else
+            EXPECT_NEAR(shade, lit, kHalfFloatStep) << c.name << ": a back face cast a shadow";
+    }
+    expectNoGlErrors();
+}
+
+// The continuous window position (x from the left, y from the top, in pixels) of world point p.
+glm::vec2 windowOf(const PreparedScene& prepared, glm::vec3 p) {
+    const FrameCamera camera = makeFrameCamera(prepared.scene.camera, kWidth, kHeight);
+    const glm::vec4 clip = camera.viewProjection * glm::vec4(p, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {(ndc.x * 0.5f + 0.5f) * kWidth, (0.5f - ndc.y * 0.5f) * kHeight};
+}
+
+float distanceToSegment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
+    const glm::vec2 e = b - a;
+    const float s = glm::clamp(glm::dot(p - a, e) / glm::dot(e, e), 0.0f, 1.0f);
+    return glm::length(p - (a + s * e));
+}
+
+TEST(GltfFeatures, LinesAndPointsAreDrawnWhereTheyProject) {
+    // One mesh with a primitive of each mode 0 to 3 in the plane z = 0, seen face on, lit by a
+    // strong light: LINES (a horizontal and a slanted segment), LINE_LOOP (a triangle, closed),
+    // LINE_STRIP (a V) and POINTS (two). Every pixel drawn must lie on a projected segment (its
+    // centre within a pixel of it) or in a point's 3x3 square, every stretch of each segment must
+    // be drawn, and each shows the base colour unlit, at the plane's depth, with the mesh's id.
+    using Segment = std::pair<glm::vec3, glm::vec3>;
+    const std::vector<std::vector<glm::vec3>> strips = {
+        {{-1.8f, 0.9f, 0}, {1.8f, 0.9f, 0}, {-1.6f, -1.2f, 0}, {-0.6f, -0.1f, 0}}, // LINES
+        {{0.4f, -1.2f, 0}, {1.6f, -1.2f, 0}, {1.6f, -0.2f, 0}},                    // LINE_LOOP
+        {{-1.2f, 0.6f, 0}, {-0.3f, 0.1f, 0}, {0.6f, 0.6f, 0}},                     // LINE_STRIP
+        {{1.9f, 0.2f, 0}, {-1.95f, -0.45f, 0}}};                                   // POINTS
+    const int modes[] = {1, 2, 3, 0};
+    std::vector<Segment> segments = {{strips[0][0], strips[0][1]}, {strips[0][2], strips[0][3]}};
+    for (std::size_t i = 0; i < 3; ++i)
+        segments.push_back({strips[1][i], strips[1][(i + 1) % 3]});
+    for (std::size_t i = 0; i < 2; ++i)
+        segments.push_back({strips[2][i], strips[2][i + 1]});
+    GltfBuilder b;
+    json primitives = json::array();
+    for (std::size_t p = 0; p < strips.size(); ++p) {
+        std::vector<float> positions;
+        for (const glm::vec3& v : strips[p])
+            positions.insert(positions.end(), {v.x, v.y, v.z});
+        primitives.push_back(
+            {{"attributes",
+              {{"POSITION", b.accessor(positions, kFloatType, "VEC3", strips[p].size())}}},
+             {"mode", modes[p]},
+             {"material", 0}});
+    }
+    const glm::vec3 base(0.2f, 0.6f, 0.9f);
+    const json gltf = {
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"materials",
+         {{{"pbrMetallicRoughness", {{"baseColorFactor", {base.x, base.y, base.z, 1}}}}}}},
+        {"meshes", {{{"primitives", primitives}}}}};
+    const json sun = {{{"type", "directional"}, {"direction", {0, 0, -1}}, {"intensity", 8}}};
+    const PreparedScene prepared = openTestScene({place("lines", b, gltf)}, sun);
+    const FrameTargets targets = renderPrepared(prepared, kWidth, kHeight);
+    const Pixels<std::uint32_t> ids = readObjectIds(targets);
+    const Pixels<float> hdr = readHdrColor(targets);
+    const Pixels<float> depth = readViewDepth(targets);
+
+    std::vector<std::pair<glm::vec2, glm::vec2>> projected;
+    for (const Segment& s : segments)
+        projected.push_back({windowOf(prepared, s.first), windowOf(prepared, s.second)});
+    std::vector<glm::vec2> points;
+    for (const glm::vec3& p : strips[3])
+        points.push_back(windowOf(prepared, p));
+    int drawn = 0;
+    std::vector<glm::vec2> drawnCentres;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const std::uint32_t id = ids.at(x, y)[0];
+            if (id == 0) continue;
+            ++drawn;
+            const glm::vec2 centre(float(x) + 0.5f, float(y) + 0.5f);
+            drawnCentres.push_back(centre);
+            float nearest = 1e9f;
+            for (const auto& [a, b2] : projected)
+                nearest = std::min(nearest, distanceToSegment(centre, a, b2));
+            bool inPoint = false;
+            for (const glm::vec2& p : points)
+                inPoint = inPoint || glm::all(glm::lessThanEqual(glm::abs(centre - p),
+                                                                 glm::vec2(0.5f * kGltfPointSize)));
+            EXPECT_TRUE(nearest <= 1.0f || inPoint)
+                << "pixel " << x << ", " << y << " drawn " << nearest << " px from every line";
+            EXPECT_EQ(id, kMeshIdBase) << "pixel " << x << ", " << y;
+            expectColorNear(hdrAt(hdr, {x, y}), base, kHalfFloatStep,
+                            "unlit at " + std::to_string(x) + ", " + std::to_string(y));
+            EXPECT_NEAR(depth.at(x, y)[0], 4.0f, 1e-3f) << "pixel " << x << ", " << y;
+        }
+    // Each segment is drawn all along: every point of it has a drawn pixel centre within a pixel
+    // and a half (GL's diamond-exit rule may leave out the pixel a segment ends in).
+    for (const auto& [a, b2] : projected) {
+        const int steps = int(glm::length(b2 - a) * 2.0f);
+        for (int i = 1; i < steps; ++i) {
+            const glm::vec2 q = a + (b2 - a) * (float(i) / float(steps));
+            float nearest = 1e9f;
+            for (const glm::vec2& c : drawnCentres)
+                nearest = std::min(nearest, glm::length(c - q));
+            EXPECT_LE(nearest, 1.5f) << "a gap in the line at " << q.x << ", " << q.y;
+        }
+    }
+    for (const glm::vec2& p : points)
+        EXPECT_EQ(ids.at(int(p.x), int(p.y))[0], kMeshIdBase)
+            << "the point at " << p.x << ", " << p.y;
+    EXPECT_GT(drawn, 150);
     expectNoGlErrors();
 }
 

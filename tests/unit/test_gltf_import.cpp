@@ -342,15 +342,76 @@ TEST(GltfImport, StripAndFanBecomeTriangleLists) {
         EXPECT_GT(triangleNormal(asset->primitives[0], t).z, 0.0f) << "fan keeps winding";
 }
 
-TEST(GltfImport, LinePrimitivesAreSkippedWithAWarning) {
-    const nlohmann::json nodes = {{{"mesh", 0}}};
+TEST(GltfImport, PointsAndLinesKeepTheirTopology) {
+    // glTF 2.0 section 3.7.2.1: LINES pairs, LINE_STRIP joins each vertex to the next,
+    // LINE_LOOP also the last to the first, POINTS one index a point; a mirroring node does not
+    // reorder them (only triangles have a winding).
+    const std::vector<float> square = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    const nlohmann::json mirrored = {{{"mesh", 0}, {"scale", {-1, 1, 1}}}};
+    struct Case {
+        int mode;
+        PrimitiveMode expected;
+        std::vector<std::uint32_t> indices;
+    };
+    const Case cases[] = {{0, PrimitiveMode::Points, {0, 1, 2, 3}},
+                          {1, PrimitiveMode::Lines, {0, 1, 2, 3}},
+                          {2, PrimitiveMode::Lines, {0, 1, 1, 2, 2, 3, 3, 0}},
+                          {3, PrimitiveMode::Lines, {0, 1, 1, 2, 2, 3}}};
+    for (const Case& c : cases) {
+        Diagnostics diagnostics;
+        const auto asset =
+            loadText(makeGltf(square, {}, {}, c.mode, mirrored, nlohmann::json{0}), diagnostics);
+        ASSERT_TRUE(asset) << diagnostics.format();
+        EXPECT_TRUE(diagnostics.items.empty()) << "mode " << c.mode << ": " << diagnostics.format();
+        ASSERT_EQ(asset->primitives.size(), 1u) << "mode " << c.mode;
+        const MeshPrimitive& p = asset->primitives[0];
+        EXPECT_EQ(p.mode, c.expected) << "mode " << c.mode;
+        EXPECT_EQ(p.indices, c.indices) << "mode " << c.mode;
+        EXPECT_EQ(p.indices.size() % indicesPerElement(p.mode), 0u);
+        expectVec3Near(p.vertices[1].position, {-1, 0, 0}); // the node's transform applies
+        for (const MeshVertex& v : p.vertices) // no NORMAL and nothing to compute one from
+            expectVec3Near(v.normal, {0, 0, 0});
+    }
+}
+
+TEST(GltfImport, LinesFromIndicesAndTheirNormals) {
+    // Indexed LINE_STRIP over three of four vertices, with the file's normals kept.
+    const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    const std::vector<float> normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    Diagnostics diagnostics;
+    const auto asset = loadText(makeGltf(positions, normals, {3, 0, 1}, 3,
+                                         nlohmann::json{{{"mesh", 0}}}, nlohmann::json{0}),
+                                diagnostics);
+    ASSERT_TRUE(asset) << diagnostics.format();
+    ASSERT_EQ(asset->primitives.size(), 1u);
+    EXPECT_EQ(asset->primitives[0].indices, (std::vector<std::uint32_t>{3, 0, 0, 1}));
+    expectVec3Near(asset->primitives[0].vertices[2].normal, {0, 0, 1});
+}
+
+TEST(GltfImport, LinesWithAnOddIndexCountAreRefused) {
+    Diagnostics diagnostics;
+    const auto asset = loadText(makeGltf({0, 0, 0, 1, 0, 0, 1, 1, 0}, {}, {}, 1,
+                                         nlohmann::json{{{"mesh", 0}}}, nlohmann::json{0}),
+                                diagnostics);
+    EXPECT_FALSE(asset);
+    EXPECT_NE(diagnostics.format().find("/meshes/0/primitives/0: 3 indices (or vertices) do not "
+                                        "form whole lines, expected a multiple of 2"),
+              std::string::npos)
+        << diagnostics.format();
+}
+
+TEST(GltfImport, ALoneVertexMakesNoLine) {
+    // A LINE_STRIP of one vertex has no segment: skipped with a warning, like a strip of two.
     Diagnostics diagnostics;
     const auto asset =
-        loadText(makeGltf({0, 0, 0, 1, 0, 0}, {}, {}, 1, nodes, nlohmann::json{0}), diagnostics);
+        loadText(makeGltf({0, 0, 0}, {}, {}, 3, nlohmann::json{{{"mesh", 0}}}, nlohmann::json{0}),
+                 diagnostics);
     ASSERT_TRUE(asset) << diagnostics.format();
     EXPECT_TRUE(asset->primitives.empty());
     EXPECT_FALSE(diagnostics.hasErrors());
-    EXPECT_NE(diagnostics.format().find("/meshes/0/primitives/0/mode"), std::string::npos);
+    EXPECT_NE(diagnostics.format().find("/meshes/0/primitives/0: warning: primitive has no lines"),
+              std::string::npos)
+        << diagnostics.format();
 }
 
 TEST(GltfImport, SceneFromGltfFramesTheBounds) {

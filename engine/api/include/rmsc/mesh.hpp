@@ -8,7 +8,8 @@
 
 namespace rmsc::api {
 
-// Every primitive of the file's default scene, node transforms applied, in one indexed list.
+// Every triangle primitive of the file's default scene (points and lines are left out), node
+// transforms applied, in one indexed list.
 struct Triangles {
     std::vector<float> positions;       // x, y, z per vertex
     std::vector<float> normals;         // x, y, z per vertex, unit length

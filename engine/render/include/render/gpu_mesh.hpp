@@ -13,8 +13,9 @@ struct GpuMeshPrimitive {
     gl::Buffer indices;
     gl::VertexArray vertexArray;
     GLsizei indexCount = 0;
-    int material = -1;      // index into MeshAsset::materials
-    glm::vec3 centre{0.0f}; // of the primitive's bounds, in the asset's space (blend order)
+    GLenum mode = GL_TRIANGLES; // GL_TRIANGLES, GL_LINES or GL_POINTS (MeshPrimitive::mode)
+    int material = -1;          // index into MeshAsset::materials
+    glm::vec3 centre{0.0f};     // of the primitive's bounds, in the asset's space (blend order)
 };
 
 // A material's textures as indices into GpuMesh::textures (-1 = none).

@@ -1,6 +1,8 @@
 // Raster pass: draws every glTF mesh instance into a G-buffer with the shared PBR shading.
 // OPAQUE and MASK primitives go into the raster G-buffer (MASK cut out at its alphaCutoff);
-// BLEND primitives are drawn later, over the finished frame, sorted back to front.
+// BLEND primitives are drawn later, over the finished frame, sorted back to front. Lines are
+// drawn one pixel wide and points kGltfPointSize pixels square, unlit (their base colour, as
+// KHR_materials_unlit draws it), into the colour, depth and id targets alike.
 #pragma once
 
 #include "gl/program.hpp"
@@ -12,6 +14,9 @@
 #include <string>
 
 namespace rmsc {
+
+// The size of a glTF point (mode POINTS) on screen, in pixels.
+constexpr float kGltfPointSize = 3.0f;
 
 class RasterPass {
   public:

@@ -1,5 +1,5 @@
-// A glTF file loaded into plain CPU arrays: triangle primitives already transformed by the
-// file's node hierarchy, with their materials and decoded textures. Uploaded by
+// A glTF file loaded into plain CPU arrays: triangle, line and point primitives already
+// transformed by the file's node hierarchy, with their materials and decoded textures. Uploaded by
 // render/gpu_mesh.hpp; instanced by Scene::meshes.
 #pragma once
 
@@ -97,11 +97,22 @@ struct MeshMaterial {
     bool unlit = false;       // KHR_materials_unlit: the base colour as it is, no lighting
 };
 
-// Triangles in the asset's root space (node transforms, morph weights and skins of its pose
-// applied), always indexed.
+// What a primitive's indices list: glTF's modes 4 to 6 become triangles, 1 to 3 line segments
+// (strips and loops unrolled into pairs), 0 points.
+enum class PrimitiveMode { Triangles, Lines, Points };
+
+// The indices one element of `mode` takes: 3, 2 or 1.
+inline std::size_t indicesPerElement(PrimitiveMode mode) {
+    return mode == PrimitiveMode::Triangles ? 3 : mode == PrimitiveMode::Lines ? 2 : 1;
+}
+
+// Triangles, line segments or points in the asset's root space (node transforms, morph weights
+// and skins of its pose applied), always indexed. Lines and points without NORMAL have zero
+// normals (nothing to compute them from).
 struct MeshPrimitive {
     std::vector<MeshVertex> vertices;
-    std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> indices; // indicesPerElement(mode) per element
+    PrimitiveMode mode = PrimitiveMode::Triangles;
     int material = -1; // index into MeshAsset::materials, -1 for the glTF default material
 };
 

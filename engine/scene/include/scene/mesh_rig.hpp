@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/gltf_animation.hpp"
+#include "scene/mesh_asset.hpp"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -27,12 +28,13 @@ struct MorphTarget {
 struct RigPrimitive {
     bool drawable = false; // false for primitives skipped with a warning
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;       // empty when the file has none
-    std::vector<glm::vec2> uvs;           // TEXCOORD_0, zeros when absent
-    std::vector<glm::vec2> uvs1;          // TEXCOORD_1, zeros when absent
-    std::vector<glm::vec4> tangents;      // empty when the file has none
-    std::vector<glm::vec4> colors;        // COLOR_0 as RGBA, empty when the file has none
-    std::vector<std::uint32_t> triangles; // 3 indices per triangle
+    std::vector<glm::vec3> normals;     // empty when the file has none
+    std::vector<glm::vec2> uvs;         // TEXCOORD_0, zeros when absent
+    std::vector<glm::vec2> uvs1;        // TEXCOORD_1, zeros when absent
+    std::vector<glm::vec4> tangents;    // empty when the file has none
+    std::vector<glm::vec4> colors;      // COLOR_0 as RGBA, empty when the file has none
+    std::vector<std::uint32_t> indices; // indicesPerElement(mode) per element
+    PrimitiveMode mode = PrimitiveMode::Triangles;
     int material = -1;
     int tangentUvSet = 0; // the TEXCOORD set of the material's normal texture
     std::vector<MorphTarget> targets;

@@ -79,6 +79,7 @@ struct MeshInstance {
     // and at which time in seconds.
     std::string animation;
     double time = 0.0;
+    int gltfScene = -1;  // "scene": the glTF scene drawn, -1 for the file's default one
     std::string pointer; // JSON pointer of this instance, for messages
 };
 
