@@ -354,6 +354,167 @@ TEST(Api, UnsupportedConventionsAndTargetsAreRefused) {
     glDeleteRenderbuffers(1, &renderbuffer);
 }
 
+// Host lights: lights equal to the scene's draw what the scene's draw; others change the SDF
+// object's shading; the next call without them is lit by the scene's again.
+namespace {
+
+// The sphere's pixels drawn into a fresh host (depth 1, blue), RGB top row first, with the
+// scene's lights or with `lights`.
+std::vector<int> drawnSphere(const Scene& scene, const std::vector<Light>* lights) {
+    HostTextures host(GL_DEPTH_COMPONENT24, 1.0f);
+    const HostTarget target{host.color, host.depth, 0, false};
+    if (lights)
+        renderer().drawInto(scene, target, hostView(DepthConvention::Default), *lights);
+    else
+        renderer().drawInto(scene, target, hostView(DepthConvention::Default));
+    const std::vector<std::uint8_t> rgba = host.readColor();
+    std::vector<int> rgb;
+    for (int y = kHeight - 1; y >= 0; --y)
+        for (int x = 0; x < kWidth; ++x)
+            for (int c = 0; c < 3; ++c)
+                rgb.push_back(
+                    rgba[(std::size_t(y) * kWidth + std::size_t(x)) * 4 + std::size_t(c)]);
+    return rgb;
+}
+
+// The mean of channel `c` over the pixels where `id` shows the sphere.
+double sphereMean(const std::vector<int>& rgb, const Image& id, int c) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (pixel<std::uint32_t>(id, x, y) >= 65536u) {
+                sum += rgb[(std::size_t(y) * kWidth + std::size_t(x)) * 3 + std::size_t(c)];
+                ++count;
+            }
+    return count ? sum / count : 0.0;
+}
+
+int differingPixels(const std::vector<int>& a, const std::vector<int>& b, int tolerance) {
+    int differing = 0;
+    for (std::size_t i = 0; i < a.size(); i += 3)
+        for (std::size_t c = 0; c < 3; ++c)
+            if (std::abs(a[i + c] - b[i + c]) > tolerance) {
+                ++differing;
+                break;
+            }
+    return differing;
+}
+
+} // namespace
+
+TEST(Api, DrawIntoWithHostLights) {
+    Scene scene = Scene::fromJson(kSphereScene);
+    const Image id = renderer().render(scene, kWidth, kHeight, Aov::Id);
+    const std::vector<int> sceneLit = drawnSphere(scene, nullptr);
+
+    // The scene's light given by the host: the same picture.
+    Light sun;
+    sun.direction = {-0.3f, -1.0f, -0.6f};
+    sun.intensity = 3.0f;
+    const std::vector<Light> same = {sun};
+    EXPECT_EQ(differingPixels(drawnSphere(scene, &same), sceneLit, 2), 0);
+
+    // A red point light at the front left and a dim spot: the sphere turns red.
+    Light red;
+    red.type = Light::Type::Point;
+    red.position = {-2.0f, 0.5f, 2.0f};
+    red.color = {1.0f, 0.1f, 0.1f};
+    red.intensity = 30.0f;
+    Light spot;
+    spot.type = Light::Type::Spot;
+    spot.position = {0.0f, 3.0f, 0.0f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.intensity = 5.0f;
+    spot.innerAngle = 10.0f;
+    spot.outerAngle = 30.0f;
+    const std::vector<Light> host = {red, spot};
+    const std::vector<int> hostLit = drawnSphere(scene, &host);
+    const double sceneRed = sphereMean(sceneLit, id, 0), sceneGreen = sphereMean(sceneLit, id, 1);
+    const double hostRed = sphereMean(hostLit, id, 0), hostGreen = sphereMean(hostLit, id, 1);
+    EXPECT_GT(hostRed - hostGreen, sceneRed - sceneGreen + 40.0)
+        << "scene-lit mean red " << sceneRed << " green " << sceneGreen << "; host-lit red "
+        << hostRed << " green " << hostGreen;
+    // Only the SDF pixels changed: the host's blue stays around the sphere.
+    EXPECT_EQ(hostLit[0], 0);
+    EXPECT_EQ(hostLit[2], 255);
+
+    // No lights at all: only the ambient light, darker than either.
+    const std::vector<Light> none;
+    const std::vector<int> unlit = drawnSphere(scene, &none);
+    EXPECT_LT(sphereMean(unlit, id, 0) + 20.0, sceneRed);
+
+    // The next call without host lights, and render(), are lit by the scene's lights again.
+    EXPECT_EQ(differingPixels(drawnSphere(scene, nullptr), sceneLit, 0), 0);
+    const Image rendered = renderer().render(scene, kWidth, kHeight, Aov::Color);
+    const int centre = (kHeight / 2 * kWidth + kWidth / 2) * 3;
+    EXPECT_NEAR(pixel<std::uint8_t>(rendered, kWidth / 2, kHeight / 2), sceneLit[centre], 8);
+}
+
+TEST(Api, BadHostLightsAreRefusedAsInAFile) {
+    Scene scene = Scene::fromJson(kSphereScene);
+    HostTextures host(GL_DEPTH_COMPONENT24, 1.0f);
+    const HostTarget target{host.color, host.depth, 0, false};
+    const auto problemsOf = [&](const std::vector<Light>& lights) {
+        try {
+            renderer().drawInto(scene, target, hostView(DepthConvention::Default), lights);
+        } catch (const Error& error) {
+            EXPECT_EQ(error.kind(), ErrorKind::BadInput);
+            return error.problems();
+        }
+        ADD_FAILURE() << "the lights were accepted";
+        return std::vector<Problem>{};
+    };
+    Light dark;
+    dark.intensity = -1.0f;
+    std::vector<Problem> problems = problemsOf({Light{}, dark});
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].file, "host lights");
+    EXPECT_EQ(problems[0].pointer, "/1/intensity");
+    // The reader's message for the same value in a scene file.
+    try {
+        Scene::fromJson(R"({"version": 1, "lights": [{"type": "directional", "intensity": -1}],
+                            "sdf": {"shape": "sphere"}})");
+        ADD_FAILURE() << "the scene's light was accepted";
+    } catch (const Error& error) {
+        ASSERT_FALSE(error.problems().empty());
+        EXPECT_EQ(error.problems()[0].pointer, "/lights/0/intensity");
+        EXPECT_EQ(problems[0].message, error.problems()[0].message);
+    }
+
+    Light cone;
+    cone.type = Light::Type::Spot;
+    cone.innerAngle = 50.0f;
+    cone.outerAngle = 40.0f;
+    Light nowhere;
+    nowhere.direction = {0.0f, 0.0f, 0.0f};
+    Light notANumber;
+    notANumber.type = Light::Type::Point;
+    notANumber.color = {1.0f, NAN, 1.0f};
+    Light negativeRange;
+    negativeRange.type = Light::Type::Point;
+    negativeRange.range = -2.0f;
+    problems = problemsOf({cone, nowhere, notANumber, negativeRange});
+    ASSERT_EQ(problems.size(), 4u);
+    EXPECT_EQ(problems[0].pointer.rfind("/0/", 0), 0u) << problems[0].text();
+    EXPECT_NE(problems[0].message.find("40"), std::string::npos) << problems[0].text();
+    EXPECT_EQ(problems[1].pointer, "/1/direction") << problems[1].text();
+    EXPECT_EQ(problems[2].pointer, "/2/color/1") << problems[2].text();
+    EXPECT_NE(problems[2].message.find("finite"), std::string::npos) << problems[2].text();
+    EXPECT_EQ(problems[3].pointer, "/3/range") << problems[3].text();
+
+    // One more than a scene may have.
+    problems = problemsOf(std::vector<Light>(17));
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(problems[0].message.find("at most 16"), std::string::npos) << problems[0].text();
+
+    // Nothing was drawn by the refused calls; sixteen lights are drawn.
+    const std::size_t centre = std::size_t(kHeight / 2) * kWidth + std::size_t(kWidth / 2);
+    EXPECT_EQ(host.readColor()[centre * 4 + 2], 255);
+    renderer().drawInto(scene, target, hostView(DepthConvention::Default), std::vector<Light>(16));
+    EXPECT_NE(host.readColor()[centre * 4 + 2], 255);
+}
+
 namespace {
 
 // The state a host may have set, as glGet reads it back.

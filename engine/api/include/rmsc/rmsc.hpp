@@ -4,6 +4,7 @@
 #include "rmsc/context.hpp"
 #include "rmsc/error.hpp"
 #include "rmsc/image.hpp"
+#include "rmsc/light.hpp"
 #include "rmsc/mesh.hpp"
 #include "rmsc/renderer.hpp"
 #include "rmsc/scene.hpp"
