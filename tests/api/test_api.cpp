@@ -215,6 +215,64 @@ TEST(Api, EditsByPointerCompileNoShadersAfterTheFirst) {
     EXPECT_EQ(kindOf([&] { scene.set("/sdf/radius", "one"); }), ErrorKind::BadInput);
 }
 
+// Edits by object id (as the Id output shows it) and by name, beside edits by pointer.
+TEST(Api, EditsByNodeIdAndName) {
+    Scene scene = Scene::fromJson(R"({
+      "version": 1,
+      "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
+      "lights": [{"type": "directional", "name": "sun", "intensity": 3}],
+      "sdf": {"op": "union", "name": "pair", "children": [
+        {"shape": "sphere", "name": "ball", "radius": 0.5, "position": [-0.7, 0, 0]},
+        {"shape": "box", "name": "crate", "half_extents": [0.3, 0.3, 0.3], "position": [0.7, 0, 0]}
+      ]}
+    })");
+    EXPECT_EQ(scene.nodePointer(65536u), "/sdf");
+    EXPECT_EQ(scene.nodePointer(65538u), "/sdf/children/1");
+    EXPECT_EQ(scene.nodePointer("ball"), "/sdf/children/0");
+    EXPECT_EQ(scene.nodePointer("sun"), "/lights/0");
+    // The id under a pixel names the node drawn there.
+    const Image id = renderer().render(scene, kWidth, kHeight, Aov::Id);
+    const std::uint32_t left = pixel<std::uint32_t>(id, kWidth / 2 - 12, kHeight / 2);
+    EXPECT_EQ(scene.nodePointer(left), "/sdf/children/0");
+
+    scene.setNode(left, "radius", "0.3");
+    EXPECT_EQ(scene.get("/sdf/children/0/radius"), "0.3");
+    scene.setNode("crate", "position", "[0.7, 0.2, 0]");
+    EXPECT_EQ(scene.get("/sdf/children/1/position"), "[0.7,0.2,0]");
+    scene.setNode("sun", "/intensity", "5");
+    EXPECT_EQ(scene.get("/lights/0/intensity"), "5");
+    const Image depth = renderer().render(scene, kWidth, kHeight, Aov::Depth);
+    EXPECT_TRUE(std::isinf(pixel<float>(depth, kWidth / 2 - 12, kHeight / 2 - 8)))
+        << "the smaller ball should leave this pixel empty";
+
+    // Bad values: the reader's problem at the node's pointer; the scene as it was.
+    const std::uint64_t revision = scene.revision();
+    try {
+        scene.setNode("crate", "half_extents", "[0.3, -1, 0.3]");
+        ADD_FAILURE() << "accepted a negative size";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.kind(), ErrorKind::BadInput);
+        ASSERT_FALSE(error.problems().empty());
+        EXPECT_EQ(error.problems()[0].pointer, "/sdf/children/1/half_extents/1");
+    }
+    EXPECT_EQ(scene.revision(), revision);
+
+    // Unknown ids and names: an error naming them.
+    std::string message;
+    EXPECT_EQ(kindOf([&] { scene.setNode(65600u, "radius", "1"); }, &message), ErrorKind::Usage);
+    EXPECT_NE(message.find("65600"), std::string::npos) << message;
+    EXPECT_NE(message.find("65536 to 65538"), std::string::npos) << message;
+    EXPECT_EQ(kindOf([&] { scene.nodePointer(0u); }, &message), ErrorKind::Usage);
+    EXPECT_EQ(kindOf([&] { scene.setNode("crat", "radius", "1"); }, &message), ErrorKind::Usage);
+    EXPECT_NE(message.find("\"crat\""), std::string::npos) << message;
+    EXPECT_NE(message.find("\"crate\""), std::string::npos) << message;
+    EXPECT_EQ(kindOf([&] { scene.setNode("ball", "", "1"); }), ErrorKind::Usage);
+    EXPECT_EQ(kindOf([&] { scene.nodePointer(""); }), ErrorKind::Usage);
+    scene.set("/sdf/children/1/name", "\"ball\"");
+    EXPECT_EQ(kindOf([&] { scene.nodePointer("ball"); }, &message), ErrorKind::Usage);
+    EXPECT_NE(message.find("not unique"), std::string::npos) << message;
+}
+
 // drawInto in each convention: where the sphere is nearer than the host's depth its colour is
 // render()'s and its depth is the convention's window depth of view depth 2; elsewhere the
 // host's colour and depth stay.
