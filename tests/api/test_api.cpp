@@ -273,6 +273,145 @@ TEST(Api, EditsByNodeIdAndName) {
     EXPECT_NE(message.find("not unique"), std::string::npos) << message;
 }
 
+// A scene built in code is the scene its JSON text gives: the same document, the same picture;
+// and a bad value is the reader's problem at the same pointer.
+TEST(Api, SceneBuilderMakesTheSceneItsJsonGives) {
+    Light sun;
+    sun.name = "sun";
+    sun.direction = {-0.5f, -1.0f, -0.25f};
+    sun.intensity = 2.5f;
+    Light lamp;
+    lamp.type = Light::Type::Point;
+    lamp.position = {1.0f, 1.0f, 2.0f};
+    lamp.color = {1.0f, 0.5f, 0.25f};
+    lamp.intensity = 10.0f;
+    lamp.range = 8.0f;
+    SceneBuilder builder;
+    builder.camera({{"position", {0, 0.5, 3}}, {"target", {0, 0, 0}}, {"fov", 45}})
+        .render({{"background", {0.125, 0.125, 0.25}}})
+        .material("clay", {{"base_color", "#e07a5f"}, {"roughness", 0.5}})
+        .material("steel", {{"base_color", {0.5, 0.5, 0.75}}, {"metallic", 1}})
+        .light(sun)
+        .light(lamp)
+        .sdf(Node::group("smooth_union",
+                         {Node::shape("sphere", {{"radius", 0.5}, {"name", "ball"}}),
+                          Node::shape("torus", {{"major_radius", 0.75}, {"minor_radius", 0.125}})
+                              .set("material", "steel")
+                              .modifier("twist", {{"amount", 30}})},
+                         {{"smoothness", 0.25}, {"material", "clay"}})
+                 .add(Node::shape("box", {{"half_extents", {0.25, 0.25, 0.25}},
+                                          {"position", {0, 0.5, 0}},
+                                          {"cut", true}})));
+    const std::string text = R"({
+      "version": 1,
+      "camera": {"position": [0, 0.5, 3], "target": [0, 0, 0], "fov": 45},
+      "render": {"background": [0.125, 0.125, 0.25]},
+      "materials": {"clay": {"base_color": "#e07a5f", "roughness": 0.5},
+                    "steel": {"base_color": [0.5, 0.5, 0.75], "metallic": 1}},
+      "lights": [
+        {"type": "directional", "name": "sun", "direction": [-0.5, -1, -0.25], "color": [1, 1, 1],
+         "intensity": 2.5},
+        {"type": "point", "position": [1, 1, 2], "range": 8, "color": [1, 0.5, 0.25],
+         "intensity": 10}],
+      "sdf": {"op": "smooth_union", "smoothness": 0.25, "material": "clay", "children": [
+        {"shape": "sphere", "radius": 0.5, "name": "ball"},
+        {"shape": "torus", "major_radius": 0.75, "minor_radius": 0.125, "material": "steel",
+         "modifiers": [{"type": "twist", "amount": 30}]},
+        {"shape": "box", "half_extents": [0.25, 0.25, 0.25], "position": [0, 0.5, 0], "cut": true}
+      ]}
+    })";
+    const Scene built = builder.build();
+    const Scene read = Scene::fromJson(text);
+    EXPECT_EQ(built.json(), read.json());
+    EXPECT_EQ(Scene::fromJson(builder.json()).json(), read.json());
+    for (const Aov aov : {Aov::Color, Aov::Id, Aov::Depth}) {
+        const Image a = renderer().render(built, kWidth, kHeight, aov);
+        const Image b = renderer().render(read, kWidth, kHeight, aov);
+        EXPECT_EQ(a.bytes, b.bytes) << "output " << int(aov) << " differs";
+    }
+    EXPECT_EQ(built.nodePointer("ball"), "/sdf/children/0");
+
+    // Bad values: the problems the reader gives for the same JSON.
+    const auto problemsOf = [](const std::function<void()>& make) {
+        try {
+            make();
+        } catch (const Error& error) {
+            EXPECT_EQ(error.kind(), ErrorKind::BadInput);
+            return error.problems();
+        }
+        ADD_FAILURE() << "accepted";
+        return std::vector<Problem>{};
+    };
+    const std::vector<Problem> fromBuilder = problemsOf([] {
+        SceneBuilder()
+            .sdf(Node::group("union",
+                             {Node::shape("sphere"), Node::shape("sphere", {{"radius", -1}}),
+                              Node::shape("spere")}))
+            .build("built.json");
+    });
+    const std::vector<Problem> fromText = problemsOf([] {
+        Scene::fromJson(R"({"version": 1, "sdf": {"op": "union", "children": [
+            {"shape": "sphere"}, {"shape": "sphere", "radius": -1}, {"shape": "spere"}]}})",
+                        "built.json");
+    });
+    ASSERT_EQ(fromBuilder.size(), 2u);
+    ASSERT_EQ(fromText.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i)
+        EXPECT_EQ(fromBuilder[i].text(), fromText[i].text());
+    EXPECT_EQ(fromBuilder[0].pointer, "/sdf/children/1/radius");
+    EXPECT_EQ(fromBuilder[1].pointer, "/sdf/children/2/shape");
+    EXPECT_NE(fromBuilder[1].message.find("did you mean \"sphere\""), std::string::npos)
+        << fromBuilder[1].text();
+    // An unknown operation, a light out of range, a number JSON cannot hold.
+    Light dark;
+    dark.intensity = -1.0f;
+    const std::vector<Problem> more = problemsOf([&] {
+        SceneBuilder()
+            .light(dark)
+            .sdf(Node::group("onion", {Node::shape("box", {{"position", {0, NAN, 0}}})}))
+            .build();
+    });
+    ASSERT_EQ(more.size(), 1u); // the non-finite number first, before the reader runs
+    EXPECT_EQ(more[0].pointer, "/sdf/children/0/position/1");
+    const std::vector<Problem> reader = problemsOf([&] {
+        SceneBuilder().light(dark).sdf(Node::group("onion", {Node::shape("box")})).build();
+    });
+    ASSERT_EQ(reader.size(), 2u);
+    EXPECT_EQ(reader[0].pointer, "/lights/0/intensity");
+    EXPECT_EQ(reader[1].pointer, "/sdf/op");
+}
+
+// The builder's lists are the catalogues: every shape they list is read with its parameters at
+// their defaults, and every operation they list builds.
+TEST(Api, SceneBuilderListsTheCatalogues) {
+    const std::vector<ShapeInfo> shapes = SceneBuilder::shapes();
+    ASSERT_GT(shapes.size(), 20u);
+    EXPECT_EQ(shapes[0].name, "sphere");
+    EXPECT_EQ(shapes[0].parameters.at(0).key, "radius");
+    for (const ShapeInfo& shape : shapes) {
+        Params defaults;
+        for (const ShapeParameter& p : shape.parameters)
+            if (p.components == 1)
+                defaults.emplace_back(p.key, double(p.defaultValue[0]));
+            else
+                defaults.emplace_back(p.key,
+                                      Value({double(p.defaultValue[0]), double(p.defaultValue[1]),
+                                             double(p.defaultValue[2])}));
+        const std::string json = SceneBuilder().sdf(Node::shape(shape.name, defaults)).json();
+        SCOPED_TRACE(shape.name);
+        EXPECT_NO_THROW(Scene::fromJson(json));
+    }
+    const std::vector<std::string> operations = SceneBuilder::operations();
+    EXPECT_EQ(operations.front(), "union");
+    for (const std::string& operation : operations) {
+        SCOPED_TRACE(operation);
+        EXPECT_NO_THROW(SceneBuilder()
+                            .sdf(Node::group(operation, {Node::shape("sphere"), Node::shape("box")},
+                                             {{"smoothness", 0.1}}))
+                            .build());
+    }
+}
+
 // drawInto in each convention: where the sphere is nearer than the host's depth its colour is
 // render()'s and its depth is the convention's window depth of view depth 2; elsewhere the
 // host's colour and depth stay.

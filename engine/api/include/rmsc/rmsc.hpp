@@ -8,4 +8,5 @@
 #include "rmsc/mesh.hpp"
 #include "rmsc/renderer.hpp"
 #include "rmsc/scene.hpp"
+#include "rmsc/scene_builder.hpp"
 #include "rmsc/version.hpp"
