@@ -160,6 +160,9 @@ PYBIND11_MODULE(rmsc, m) {
     m.def("validate", &Scene::validate, py::arg("path"),
           "Checks a scene file as `rmsc validate` does: returns the list of rmsc.Problem found "
           "(errors and warnings, in order), empty when there is nothing to report.");
+    m.def("validate_json", &Scene::validateJson, py::arg("text"), py::arg("path") = "scene.json",
+          "Checks scene JSON text as `rmsc validate` checks the file `path` holding it: the "
+          "list of rmsc.Problem, as validate() returns it.");
 
     py::class_<Scene>(m, "Scene",
                       "A scene file's content, checked and compiled; edits by JSON "

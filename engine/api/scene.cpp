@@ -92,6 +92,17 @@ std::vector<Problem> Scene::validate(const std::string& path) {
     return toProblems(diagnostics);
 }
 
+std::vector<Problem> Scene::validateJson(std::string_view text, const std::string& path) {
+    Diagnostics diagnostics;
+    std::optional<::rmsc::Scene> scene = parseScene(text, path, diagnostics);
+    if (scene) {
+        std::optional<PreparedScene> prepared =
+            prepareScene(std::move(*scene), diskFileSource(), diagnostics);
+        if (prepared) checkSdfCost(*prepared, diagnostics);
+    }
+    return toProblems(diagnostics);
+}
+
 const std::vector<Problem>& Scene::warnings() const {
     return impl_->warnings;
 }

@@ -127,6 +127,10 @@ def test_validate_reports_what_rmsc_validate_prints(tmp_path):
         assert printed.returncode == 1
         assert printed.stderr.splitlines() == [str(p) for p in problems]
     assert rmsc.validate(PAWN) == []
+    # Text as the file holding it.
+    same = rmsc.validate_json(bad.read_text(), str(bad))
+    assert [str(p) for p in same] == [str(p) for p in problems]
+    assert rmsc.validate_json(open(PAWN).read(), PAWN) == []
 
 
 def test_backend_choice():

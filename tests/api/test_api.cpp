@@ -160,6 +160,43 @@ TEST(Api, MissingFileAndValidate) {
     EXPECT_TRUE(Scene::validate(RMSC_TEST_SOURCE_DIR "/samples/scenes/pawn.json").empty());
 }
 
+// validateJson reports for text what validate reports for the file holding it, and what
+// fromJson refuses it with.
+TEST(Api, ValidateJsonAsValidateAFile) {
+    const std::string text = R"({"version": 1, "camera": {"fovv": 3, "fov": -3},
+                                 "sdf": {"shape": "sphere", "radius": "big"}})";
+    const std::string path = ::testing::TempDir() + "rmsc_api_validate.json";
+    {
+        std::FILE* file = std::fopen(path.c_str(), "wb");
+        ASSERT_NE(file, nullptr);
+        std::fwrite(text.data(), 1, text.size(), file);
+        std::fclose(file);
+    }
+    const auto lines = [](const std::vector<Problem>& problems) {
+        std::vector<std::string> out;
+        for (const Problem& problem : problems)
+            out.push_back(problem.text());
+        return out;
+    };
+    const std::vector<Problem> fromFile = Scene::validate(path);
+    ASSERT_EQ(fromFile.size(), 3u);
+    EXPECT_EQ(fromFile[0].severity, Problem::Severity::Warning);
+    EXPECT_EQ(fromFile[0].pointer, "/camera/fovv");
+    EXPECT_EQ(fromFile[2].pointer, "/sdf/radius");
+    EXPECT_EQ(lines(Scene::validateJson(text, path)), lines(fromFile));
+    try {
+        Scene::fromJson(text, path);
+        ADD_FAILURE() << "accepted";
+    } catch (const Error& error) {
+        EXPECT_EQ(lines(error.problems()), lines(fromFile));
+    }
+    std::remove(path.c_str());
+    // Relative mesh paths resolve against the path given.
+    const std::string pawn = RMSC_TEST_SOURCE_DIR "/samples/scenes/pawn.json";
+    EXPECT_TRUE(Scene::validateJson(Scene::load(pawn).json(), pawn).empty());
+    EXPECT_FALSE(Scene::validateJson(Scene::load(pawn).json(), "elsewhere/pawn.json").empty());
+}
+
 TEST(Api, RenderEveryOutput) {
     Scene scene = Scene::fromJson(kSphereScene);
     const Image color = renderer().render(scene, kWidth, kHeight, Aov::Color);

@@ -26,6 +26,10 @@ class Scene {
     // What `rmsc validate PATH` reports: every error and warning, in order; empty when the
     // scene is valid and has nothing to warn about. Never throws for bad input.
     static std::vector<Problem> validate(const std::string& path);
+    // The same for scene JSON text (SceneBuilder::json(), a host's own text), as if it were
+    // the file `path`: what `rmsc validate` would report for that file.
+    static std::vector<Problem> validateJson(std::string_view text,
+                                             const std::string& path = "scene.json");
 
     Scene(Scene&&) noexcept;
     Scene& operator=(Scene&&) noexcept;
