@@ -215,7 +215,7 @@ SceneBuilder& SceneBuilder::light(const Light& light) {
 
 SceneBuilder& SceneBuilder::mesh(std::string file, Params params) {
     params.insert(params.begin(), {"file", std::move(file)});
-    meshes_.emplace_back("", std::move(params));
+    meshes_.push_back(std::move(params));
     return *this;
 }
 
@@ -231,8 +231,7 @@ namespace {
 Json writeDocument(Writer& writer, const Params& camera, const Params& render,
                    const Params& environment,
                    const std::vector<std::pair<std::string, Params>>& materials,
-                   const std::vector<Light>& lights,
-                   const std::vector<std::pair<std::string, Params>>& meshes,
+                   const std::vector<Light>& lights, const std::vector<Params>& meshes,
                    const std::vector<Node>& sdf) {
     Json document = Json::object();
     document["version"] = 1;
@@ -254,7 +253,7 @@ Json writeDocument(Writer& writer, const Params& camera, const Params& render,
     if (!meshes.empty()) {
         Json out = Json::array();
         for (std::size_t i = 0; i < meshes.size(); ++i)
-            out.push_back(writer.object(meshes[i].second, "/meshes/" + std::to_string(i)));
+            out.push_back(writer.object(meshes[i], "/meshes/" + std::to_string(i)));
         document["meshes"] = std::move(out);
     }
     if (!sdf.empty()) document["sdf"] = writer.node(sdf.front(), "/sdf");

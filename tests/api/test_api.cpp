@@ -330,6 +330,7 @@ TEST(Api, SceneBuilderMakesTheSceneItsJsonGives) {
         .material("steel", {{"base_color", {0.5, 0.5, 0.75}}, {"metallic", 1}})
         .light(sun)
         .light(lamp)
+        .mesh("../assets/plane.gltf", {{"position", {0, -0.75, 0}}, {"scale", 3}})
         .sdf(Node::group("smooth_union",
                          {Node::shape("sphere", {{"radius", 0.5}, {"name", "ball"}}),
                           Node::shape("torus", {{"major_radius", 0.75}, {"minor_radius", 0.125}})
@@ -350,6 +351,7 @@ TEST(Api, SceneBuilderMakesTheSceneItsJsonGives) {
          "intensity": 2.5},
         {"type": "point", "position": [1, 1, 2], "range": 8, "color": [1, 0.5, 0.25],
          "intensity": 10}],
+      "meshes": [{"file": "../assets/plane.gltf", "position": [0, -0.75, 0], "scale": 3}],
       "sdf": {"op": "smooth_union", "smoothness": 0.25, "material": "clay", "children": [
         {"shape": "sphere", "radius": 0.5, "name": "ball"},
         {"shape": "torus", "major_radius": 0.75, "minor_radius": 0.125, "material": "steel",
@@ -357,14 +359,18 @@ TEST(Api, SceneBuilderMakesTheSceneItsJsonGives) {
         {"shape": "box", "half_extents": [0.25, 0.25, 0.25], "position": [0, 0.5, 0], "cut": true}
       ]}
     })";
-    const Scene built = builder.build();
-    const Scene read = Scene::fromJson(text);
+    const std::string path = RMSC_TEST_SOURCE_DIR "/samples/scenes/built.json"; // for the mesh
+    const Scene built = builder.build(path);
+    const Scene read = Scene::fromJson(text, path);
     EXPECT_EQ(built.json(), read.json());
-    EXPECT_EQ(Scene::fromJson(builder.json()).json(), read.json());
+    EXPECT_EQ(Scene::fromJson(builder.json(), path).json(), read.json());
     for (const Aov aov : {Aov::Color, Aov::Id, Aov::Depth}) {
         const Image a = renderer().render(built, kWidth, kHeight, aov);
         const Image b = renderer().render(read, kWidth, kHeight, aov);
         EXPECT_EQ(a.bytes, b.bytes) << "output " << int(aov) << " differs";
+        if (aov == Aov::Id) {
+            EXPECT_EQ(pixel<std::uint32_t>(a, kWidth / 2, kHeight - 1), 1u); // the mesh
+        }
     }
     EXPECT_EQ(built.nodePointer("ball"), "/sdf/children/0");
 

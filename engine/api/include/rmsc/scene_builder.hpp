@@ -113,7 +113,7 @@ class SceneBuilder {
     Params camera_, render_, environment_;
     std::vector<std::pair<std::string, Params>> materials_;
     std::vector<Light> lights_;
-    std::vector<std::pair<std::string, Params>> meshes_;
+    std::vector<Params> meshes_;
     std::vector<Node> sdf_; // none or one
 };
 
