@@ -422,6 +422,21 @@ TEST(Api, SceneBuilderMakesTheSceneItsJsonGives) {
     ASSERT_EQ(reader.size(), 2u);
     EXPECT_EQ(reader[0].pointer, "/lights/0/intensity");
     EXPECT_EQ(reader[1].pointer, "/sdf/op");
+    // Value::json for what the other values cannot say (a profile); text that is not JSON.
+    const Scene ring =
+        SceneBuilder()
+            .sdf(Node::shape("revolution",
+                             {{"profile", Value::json(R"({"type": "circle", "radius": 0.2})")},
+                              {"offset", 0.5}}))
+            .build();
+    EXPECT_EQ(ring.get("/sdf/profile/radius"), "0.2");
+    const std::vector<Problem> notJson = problemsOf([] {
+        SceneBuilder()
+            .sdf(Node::shape("revolution", {{"profile", Value::json("{circle}")}}))
+            .build();
+    });
+    ASSERT_EQ(notJson.size(), 1u);
+    EXPECT_EQ(notJson[0].pointer, "/sdf/profile");
 }
 
 // The builder's lists are the catalogues: every shape they list is read with its parameters at
