@@ -212,7 +212,7 @@ PYBIND11_MODULE(rmsc, m) {
             py::arg("node"), py::arg("key"), py::arg("value"),
             "set() of `key` under a node given by object id or name (see node_pointer): "
             "scene.set_node('ball', 'radius', 0.3), scene.set_node(65537, 'position', "
-            "[0, 1, 0]); `key` may be a path below the node ('modifiers/0/angle').")
+            "[0, 1, 0]); `key` may be a path below the node ('modifiers/0/radius').")
         .def(
             "get_node",
             [](const Scene& scene, const py::object& node, const std::string& key) {

@@ -59,7 +59,7 @@ class Scene {
     std::string nodePointer(std::uint32_t objectId) const;
     std::string nodePointer(std::string_view name) const;
     // set() of `key` under the node: a key of the node ("radius", "position") or a path below it
-    // ("modifiers/0/angle"). Errors as nodePointer's and set's.
+    // ("modifiers/0/radius"). Errors as nodePointer's and set's.
     void setNode(std::uint32_t objectId, std::string_view key, std::string_view value);
     void setNode(std::string_view name, std::string_view key, std::string_view value);
 
