@@ -1,6 +1,6 @@
-// The rmsc Python module: scenes, edits by JSON pointer, validation and rendering to NumPy
-// arrays, over the public C++ API (rmsc/rmsc.hpp). Rendering uses one headless context and one
-// renderer per process, made on first use (or by use_backend) and released at exit.
+// The rmsc Python module: scenes, edits by JSON pointer or node id, validation and rendering to
+// NumPy arrays, over the public C++ API (rmsc/rmsc.hpp). Rendering uses one headless context and
+// one renderer per process, made on first use (or by use_backend) and released at exit.
 #include <rmsc/rmsc.hpp>
 
 #include <pybind11/numpy.h>
@@ -94,6 +94,27 @@ py::object fromJson(const std::string& text) {
     return py::module_::import("json").attr("loads")(text);
 }
 
+// The JSON pointer of a node given as an object id (int) or a name (str).
+std::string nodePointer(const Scene& scene, const py::object& node) {
+    if (py::isinstance<py::str>(node)) return scene.nodePointer(node.cast<std::string>());
+    if (py::isinstance<py::int_>(node) && !py::isinstance<py::bool_>(node)) {
+        const long long id = node.cast<long long>();
+        if (id < 0 || id > 0xffffffffLL)
+            throw Error(ErrorKind::Usage, "no node has the object id " + std::to_string(id) +
+                                              " (object ids are 0 to 2^32 - 1)");
+        return scene.nodePointer(std::uint32_t(id));
+    }
+    throw py::type_error("a node is an object id (int) or a name (str), not " +
+                         std::string(py::str(node.get_type().attr("__name__"))));
+}
+
+// "/sdf/children/1" and "radius" (or "/radius") -> "/sdf/children/1/radius".
+std::string underNode(const std::string& pointer, std::string key) {
+    if (!key.empty() && key.front() == '/') key.erase(0, 1);
+    if (key.empty()) throw Error(ErrorKind::Usage, "no key given (\"radius\", \"position\", ...)");
+    return pointer + "/" + key;
+}
+
 } // namespace
 
 PYBIND11_MODULE(rmsc, m) {
@@ -139,6 +160,9 @@ PYBIND11_MODULE(rmsc, m) {
     m.def("validate", &Scene::validate, py::arg("path"),
           "Checks a scene file as `rmsc validate` does: returns the list of rmsc.Problem found "
           "(errors and warnings, in order), empty when there is nothing to report.");
+    m.def("validate_json", &Scene::validateJson, py::arg("text"), py::arg("path") = "scene.json",
+          "Checks scene JSON text as `rmsc validate` checks the file `path` holding it: the "
+          "list of rmsc.Problem, as validate() returns it.");
 
     py::class_<Scene>(m, "Scene",
                       "A scene file's content, checked and compiled; edits by JSON "
@@ -171,6 +195,31 @@ PYBIND11_MODULE(rmsc, m) {
                 return fromJson(scene.get(pointer));
             },
             py::arg("pointer"), "The value at a JSON pointer, as a Python value.")
+        .def(
+            "node_pointer",
+            [](const Scene& scene, const py::object& node) { return nodePointer(scene, node); },
+            py::arg("node"),
+            "The JSON pointer of a node: `node` is an object id as the 'id' output shows it "
+            "(65536 + n for the SDF node n in pre-order, 1 + i for the mesh placement i) or "
+            "the name of an SDF node, mesh placement or light. An unknown id or name (or a "
+            "name two nodes share) raises rmsc.Error naming it.")
+        .def(
+            "set_node",
+            [](Scene& scene, const py::object& node, const std::string& key,
+               const py::object& value) {
+                scene.set(underNode(nodePointer(scene, node), key), toJson(value));
+            },
+            py::arg("node"), py::arg("key"), py::arg("value"),
+            "set() of `key` under a node given by object id or name (see node_pointer): "
+            "scene.set_node('ball', 'radius', 0.3), scene.set_node(65537, 'position', "
+            "[0, 1, 0]); `key` may be a path below the node ('modifiers/0/radius').")
+        .def(
+            "get_node",
+            [](const Scene& scene, const py::object& node, const std::string& key) {
+                return fromJson(scene.get(underNode(nodePointer(scene, node), key)));
+            },
+            py::arg("node"), py::arg("key"),
+            "get() of `key` under a node given by object id or name (see node_pointer).")
         .def("json", &Scene::json, "The scene as JSON text, edits applied.")
         .def_property_readonly("warnings", &Scene::warnings,
                                "Warnings of the last load or edit, as rmsc.Problem.")

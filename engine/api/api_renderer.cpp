@@ -12,6 +12,7 @@
 #include "render/readback.hpp"
 #include "render/renderer.hpp"
 #include "render/shader_library.hpp"
+#include "scene/scene_json.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -22,7 +23,8 @@
 namespace rmsc::api {
 namespace {
 
-constexpr std::size_t kUploadedScenes = 8; // scenes kept on the GPU, least recently drawn goes
+constexpr std::size_t kUploadedScenes = 8;     // scenes kept on the GPU, least recently drawn goes
+const std::string kHostLights = "host lights"; // the "file" of problems in a host's lights
 
 template <class T> Image toImage(const Pixels<T>& pixels, int channels, Image::Type type) {
     Image image;
@@ -139,6 +141,55 @@ class DepthModeGuard {
     GLint mode_ = GL_DEPTH_COMPONENT;
 };
 
+// The engine's light of a host's, its values as given (checkLights checks them).
+std::vector<::rmsc::Light> hostLights(std::span<const Light> lights) {
+    std::vector<::rmsc::Light> out;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Light& light = lights[i];
+        ::rmsc::Light converted;
+        switch (light.type) {
+        case Light::Type::Directional:
+            converted.type = LightType::Directional;
+            break;
+        case Light::Type::Point:
+            converted.type = LightType::Point;
+            break;
+        case Light::Type::Spot:
+            converted.type = LightType::Spot;
+            break;
+        default: {
+            Diagnostics diagnostics;
+            diagnostics.error(kHostLights, "/" + std::to_string(i) + "/type",
+                              "unknown light type " + std::to_string(int(light.type)) +
+                                  "; known types: Directional, Point, Spot");
+            throw badInput(diagnostics);
+        }
+        }
+        converted.name = light.name;
+        converted.direction = glm::make_vec3(light.direction.data());
+        converted.position = glm::make_vec3(light.position.data());
+        converted.color = glm::make_vec3(light.color.data());
+        converted.intensity = light.intensity;
+        converted.range = light.range;
+        converted.innerAngleDegrees = light.innerAngle;
+        converted.outerAngleDegrees = light.outerAngle;
+        converted.castShadows = light.castShadows;
+        converted.shadowSoftness = light.shadowSoftness;
+        out.push_back(std::move(converted));
+    }
+    return out;
+}
+
+bool sameLights(const std::vector<::rmsc::Light>& a, const std::vector<::rmsc::Light>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
+        return x.type == y.type && x.direction == y.direction && x.position == y.position &&
+               x.color == y.color && x.intensity == y.intensity && x.range == y.range &&
+               x.innerAngleDegrees == y.innerAngleDegrees &&
+               x.outerAngleDegrees == y.outerAngleDegrees && x.castShadows == y.castShadows &&
+               x.shadowSoftness == y.shadowSoftness;
+    });
+}
+
 } // namespace
 
 struct Renderer::Impl {
@@ -148,6 +199,8 @@ struct Renderer::Impl {
         std::uint64_t revision = 0;
         GpuScene gpu;
         std::uint64_t lastUse = 0;
+        bool hostLit = false; // gpu holds hostLights, not the scene's lights
+        std::vector<::rmsc::Light> hostLights;
     };
     std::map<std::uint64_t, Uploaded> scenes; // by Scene::Impl::id
     std::uint64_t clock = 0;
@@ -168,7 +221,8 @@ struct Renderer::Impl {
 
     // The scene on the GPU with its programs built: uploaded again after an edit, through the
     // buffer map, whose text does not change with the numbers (so the programs are reused).
-    const GpuScene& upload(const Scene& scene) {
+    // Lit by `lights` when given (checked), else by the scene's own.
+    const GpuScene& upload(const Scene& scene, const std::vector<::rmsc::Light>* lights = nullptr) {
         const Scene::Impl& source = scene.impl();
         stats = {};
         auto found = scenes.find(source.id);
@@ -180,10 +234,22 @@ struct Renderer::Impl {
                                               [](const auto& a, const auto& b) {
                                                   return a.second.lastUse < b.second.lastUse;
                                               }));
-            Uploaded uploaded{source.revision, uploadScene(source.prepared, strategy), 0};
+            Uploaded uploaded{
+                source.revision, uploadScene(source.prepared, strategy), 0, false, {}};
             found = scenes.insert_or_assign(source.id, std::move(uploaded)).first;
         }
-        found->second.lastUse = ++clock;
+        Uploaded& uploaded = found->second;
+        uploaded.lastUse = ++clock;
+        if (lights && (!uploaded.hostLit || !sameLights(*lights, uploaded.hostLights))) {
+            setSceneLights(uploaded.gpu, source.prepared, *lights);
+            uploaded.hostLit = true;
+            uploaded.hostLights = *lights;
+        } else if (!lights && uploaded.hostLit) {
+            const PreparedScene& prepared = source.prepared;
+            setSceneLights(uploaded.gpu, prepared,
+                           prepared.lights.empty() ? prepared.scene.lights : prepared.lights);
+            uploaded.hostLit = false;
+        }
         const bool ready = renderer->hasPrograms(found->second.gpu.sdfMap);
         std::string error;
         if (!renderer->prepare(found->second.gpu, error))
@@ -193,6 +259,10 @@ struct Renderer::Impl {
         stats.compiledShaders = !ready || stats.compileMilliseconds > 0.0;
         return found->second.gpu;
     }
+
+    // drawInto's work, after the context check: lit by `lights` (checked) or the scene's.
+    void drawInto(const Scene& scene, const HostTarget& target, const HostView& view,
+                  const std::vector<::rmsc::Light>* lights);
 
     FrameTargets& frameTargets(int width, int height) {
         if (!targets || targets->combined.width != width || targets->combined.height != height)
@@ -264,8 +334,8 @@ Image Renderer::render(const Scene& scene, int width, int height, Aov aov) {
     throw Error(ErrorKind::Usage, "render: unknown aov");
 }
 
-void Renderer::drawInto(const Scene& scene, const HostTarget& target, const HostView& view) {
-    impl_->checkContext("drawInto");
+void Renderer::Impl::drawInto(const Scene& scene, const HostTarget& target, const HostView& view,
+                              const std::vector<::rmsc::Light>* lights) {
     // What to draw into: the host's framebuffer, or one made for its two textures.
     gl::Framebuffer own;
     GLuint framebuffer = target.framebuffer;
@@ -324,8 +394,8 @@ void Renderer::drawInto(const Scene& scene, const HostTarget& target, const Host
         throw Error(ErrorKind::Usage, "drawInto: the framebuffer is not complete");
     }
     DepthModeGuard depthMode(depthTexture);
-    const GpuScene& gpu = impl_->upload(scene);
-    FrameTargets& targets = impl_->frameTargets(view.width, view.height);
+    const GpuScene& gpu = upload(scene, lights);
+    FrameTargets& frame = frameTargets(view.width, view.height);
     ::rmsc::HostTarget output;
     output.depthTexture = depthTexture;
     output.framebuffer = framebuffer;
@@ -333,8 +403,23 @@ void Renderer::drawInto(const Scene& scene, const HostTarget& target, const Host
     output.y = view.y;
     output.farDepth = hostFarDepth(host);
     output.displayEncoded = !target.linearColor;
-    impl_->renderer->renderOverHost(gpu, *camera, zeroToOne, scene.impl().prepared.scene.render,
-                                    targets, output);
+    renderer->renderOverHost(gpu, *camera, zeroToOne, scene.impl().prepared.scene.render, frame,
+                             output);
+}
+
+void Renderer::drawInto(const Scene& scene, const HostTarget& target, const HostView& view) {
+    impl_->checkContext("drawInto");
+    impl_->drawInto(scene, target, view, nullptr);
+}
+
+void Renderer::drawInto(const Scene& scene, const HostTarget& target, const HostView& view,
+                        std::span<const Light> lights) {
+    impl_->checkContext("drawInto");
+    Diagnostics diagnostics;
+    const std::optional<std::vector<::rmsc::Light>> checked =
+        checkLights(hostLights(lights), kHostLights, diagnostics);
+    if (!checked) throw badInput(diagnostics);
+    impl_->drawInto(scene, target, view, &*checked);
 }
 
 RenderStats Renderer::lastStats() const {

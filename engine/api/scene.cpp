@@ -92,6 +92,17 @@ std::vector<Problem> Scene::validate(const std::string& path) {
     return toProblems(diagnostics);
 }
 
+std::vector<Problem> Scene::validateJson(std::string_view text, const std::string& path) {
+    Diagnostics diagnostics;
+    std::optional<::rmsc::Scene> scene = parseScene(text, path, diagnostics);
+    if (scene) {
+        std::optional<PreparedScene> prepared =
+            prepareScene(std::move(*scene), diskFileSource(), diagnostics);
+        if (prepared) checkSdfCost(*prepared, diagnostics);
+    }
+    return toProblems(diagnostics);
+}
+
 const std::vector<Problem>& Scene::warnings() const {
     return impl_->warnings;
 }
@@ -161,6 +172,116 @@ void Scene::set(std::string_view pointer, std::string_view value) {
     impl_->prepared = std::move(*prepared);
     impl_->warnings = warningsOf(diagnostics);
     ++impl_->revision;
+}
+
+namespace {
+
+constexpr std::uint32_t kSdfIdBase = 65536; // docs/scene-format.md, "Object ids"
+
+// The pointers of the SDF nodes under `node` (at `pointer`), in pre-order: the numbering of
+// their object ids.
+void sdfNodePointers(const nlohmann::json& node, const std::string& pointer,
+                     std::vector<std::string>& out) {
+    out.push_back(pointer);
+    if (!node.is_object()) return;
+    const auto children = node.find("children");
+    if (children == node.end() || !children->is_array()) return;
+    for (std::size_t i = 0; i < children->size(); ++i)
+        sdfNodePointers((*children)[i], pointer + "/children/" + std::to_string(i), out);
+}
+
+std::vector<std::string> sdfNodePointers(const nlohmann::json& document) {
+    std::vector<std::string> pointers;
+    if (document.contains("sdf")) sdfNodePointers(document["sdf"], "/sdf", pointers);
+    return pointers;
+}
+
+std::size_t arraySize(const nlohmann::json& document, const char* key) {
+    const auto found = document.find(key);
+    return found != document.end() && found->is_array() ? found->size() : 0;
+}
+
+std::string jsonString(std::string_view text) {
+    return nlohmann::json(std::string(text)).dump();
+}
+
+} // namespace
+
+std::string Scene::nodePointer(std::uint32_t objectId) const {
+    const nlohmann::json& document = impl_->document;
+    const std::vector<std::string> sdf = sdfNodePointers(document);
+    const std::size_t meshes = arraySize(document, "meshes");
+    if (objectId >= kSdfIdBase && objectId - kSdfIdBase < sdf.size())
+        return sdf[objectId - kSdfIdBase];
+    if (objectId >= 1 && objectId < kSdfIdBase && objectId - 1 < meshes)
+        return "/meshes/" + std::to_string(objectId - 1);
+    std::string known;
+    if (!sdf.empty())
+        known += "SDF nodes " + std::to_string(kSdfIdBase) + " to " +
+                 std::to_string(kSdfIdBase + sdf.size() - 1);
+    if (meshes > 0)
+        known += std::string(known.empty() ? "" : ", ") + "mesh placements 1 to " +
+                 std::to_string(meshes);
+    throw Error(ErrorKind::Usage, impl_->path.string() + ": no node has the object id " +
+                                      std::to_string(objectId) + " (" +
+                                      (known.empty() ? "the scene has no nodes" : known) + ")");
+}
+
+std::string Scene::nodePointer(std::string_view name) const {
+    if (name.empty())
+        throw Error(ErrorKind::Usage, "nodePointer: an empty name names no node; give a name or "
+                                      "an object id");
+    const nlohmann::json& document = impl_->document;
+    std::vector<std::string> candidates = sdfNodePointers(document);
+    for (const char* array : {"meshes", "lights"})
+        for (std::size_t i = 0; i < arraySize(document, array); ++i)
+            candidates.push_back(std::string("/") + array + "/" + std::to_string(i));
+    std::vector<std::string> found, names;
+    for (const std::string& pointer : candidates) {
+        const nlohmann::json& node = document.at(nlohmann::json::json_pointer(pointer));
+        const auto key = node.is_object() ? node.find("name") : node.end();
+        if (key == node.end() || !key->is_string()) continue;
+        const std::string& text = key->get_ref<const std::string&>();
+        if (text == name) found.push_back(pointer);
+        if (!text.empty() && std::find(names.begin(), names.end(), text) == names.end())
+            names.push_back(text);
+    }
+    if (found.size() == 1) return found[0];
+    const std::string file = impl_->path.string();
+    if (found.size() > 1) {
+        std::string list;
+        for (const std::string& pointer : found)
+            list += (list.empty() ? "" : ", ") + pointer;
+        throw Error(ErrorKind::Usage, file + ": the name " + jsonString(name) + " is not unique (" +
+                                          list + "); address the node by object id or pointer");
+    }
+    std::string list;
+    constexpr std::size_t kListed = 16;
+    for (std::size_t i = 0; i < names.size() && i < kListed; ++i)
+        list += (i ? ", " : "") + jsonString(names[i]);
+    if (names.size() > kListed) list += " and " + std::to_string(names.size() - kListed) + " more";
+    throw Error(ErrorKind::Usage,
+                file + ": no SDF node, mesh placement or light is named " + jsonString(name) +
+                    (names.empty() ? " (none has a name)" : " (names: " + list + ")"));
+}
+
+namespace {
+
+std::string underNode(const std::string& node, std::string_view key) {
+    if (key.starts_with('/')) key.remove_prefix(1);
+    if (key.empty())
+        throw Error(ErrorKind::Usage, "setNode: no key given (\"radius\", \"position\", ...)");
+    return node + "/" + std::string(key);
+}
+
+} // namespace
+
+void Scene::setNode(std::uint32_t objectId, std::string_view key, std::string_view value) {
+    set(underNode(nodePointer(objectId), key), value);
+}
+
+void Scene::setNode(std::string_view name, std::string_view key, std::string_view value) {
+    set(underNode(nodePointer(name), key), value);
 }
 
 } // namespace rmsc::api

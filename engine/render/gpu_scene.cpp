@@ -42,6 +42,39 @@ void GpuScene::bindBuffers() const {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfCellBinding, sdfCells.id());
 }
 
+void setSceneLights(GpuScene& gpu, const PreparedScene& prepared,
+                    const std::vector<Light>& lights) {
+    const ShadowSettings& shadows = prepared.scene.render.shadows;
+    CasterBounds casters;
+    for (const GpuMeshInstance& instance : gpu.instances) {
+        if (instance.mesh < 0) continue;
+        const MeshAsset& asset = prepared.assets[std::size_t(instance.mesh)];
+        if (asset.primitives.empty()) continue;
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner(c & 1 ? asset.boundsMax.x : asset.boundsMin.x,
+                                   c & 2 ? asset.boundsMax.y : asset.boundsMin.y,
+                                   c & 4 ? asset.boundsMax.z : asset.boundsMin.z);
+            casters.add(glm::vec3(instance.model * glm::vec4(corner, 1.0f)));
+        }
+    }
+    for (const PreparedShell& shell : prepared.shells)
+        for (const glm::vec3& corner : shell.proxy.positions)
+            casters.add(glm::vec3(shell.compiled.objectToWorld * glm::vec4(corner, 1.0f)));
+    const ShadowViewPlan plan = planShadowViews(lights, casters, shadows);
+    std::vector<GpuLight> packed = packLights(lights, shadows.enabled, shadows.softness);
+    for (std::size_t i = 0; i < packed.size(); ++i)
+        packed[i].spotShadow.w = float(plan.firstView[i]);
+    GpuLightHeader lightHeader{glm::uvec4(std::uint32_t(packed.size()), 0, 0, 0)};
+    gpu.lightBuffer = createHeaderedBuffer(lightHeader, packed);
+    gpu.shadowViews = plan.views;
+    std::vector<GpuShadowView> views = plan.views;
+    if (views.empty()) views.push_back(GpuShadowView{}); // a buffer is never empty
+    gpu.shadowViewBuffer =
+        gl::createBufferWithData(GLsizeiptr(views.size() * sizeof(GpuShadowView)), views.data());
+    gpu.shadowMapSize = plan.views.empty() ? 0 : std::clamp(shadows.mapSize, 1, 4096);
+    gpu.shadowSlopeBias = shadows.slopeBias;
+}
+
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
                      const SdfCellGrid* cells) {
     GpuScene gpu;
@@ -146,37 +179,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
 
     // Lights from the file and the glTF files (PreparedScene::lights); scenes prepared in code
     // without them use the file's.
-    const std::vector<Light>& sceneLights =
-        prepared.lights.empty() ? scene.lights : prepared.lights;
-    const ShadowSettings& shadows = scene.render.shadows;
-    CasterBounds casters;
-    for (const GpuMeshInstance& instance : gpu.instances) {
-        if (instance.mesh < 0) continue;
-        const MeshAsset& asset = prepared.assets[std::size_t(instance.mesh)];
-        if (asset.primitives.empty()) continue;
-        for (int c = 0; c < 8; ++c) {
-            const glm::vec3 corner(c & 1 ? asset.boundsMax.x : asset.boundsMin.x,
-                                   c & 2 ? asset.boundsMax.y : asset.boundsMin.y,
-                                   c & 4 ? asset.boundsMax.z : asset.boundsMin.z);
-            casters.add(glm::vec3(instance.model * glm::vec4(corner, 1.0f)));
-        }
-    }
-    for (const PreparedShell& shell : prepared.shells)
-        for (const glm::vec3& corner : shell.proxy.positions)
-            casters.add(glm::vec3(shell.compiled.objectToWorld * glm::vec4(corner, 1.0f)));
-    const ShadowViewPlan plan = planShadowViews(sceneLights, casters, shadows);
-    std::vector<GpuLight> lights = packLights(sceneLights, shadows.enabled, shadows.softness);
-    for (std::size_t i = 0; i < lights.size(); ++i)
-        lights[i].spotShadow.w = float(plan.firstView[i]);
-    GpuLightHeader lightHeader{glm::uvec4(std::uint32_t(lights.size()), 0, 0, 0)};
-    gpu.lightBuffer = createHeaderedBuffer(lightHeader, lights);
-    gpu.shadowViews = plan.views;
-    std::vector<GpuShadowView> views = plan.views;
-    if (views.empty()) views.push_back(GpuShadowView{}); // a buffer is never empty
-    gpu.shadowViewBuffer =
-        gl::createBufferWithData(GLsizeiptr(views.size() * sizeof(GpuShadowView)), views.data());
-    gpu.shadowMapSize = plan.views.empty() ? 0 : std::clamp(shadows.mapSize, 1, 4096);
-    gpu.shadowSlopeBias = shadows.slopeBias;
+    setSceneLights(gpu, prepared, prepared.lights.empty() ? scene.lights : prepared.lights);
 
     gpu.environment = scene.environment;
     const SkyImage& sky = prepared.skyImage;

@@ -10,12 +10,14 @@
 #include "material_texture_json.hpp"
 #include "param_json.hpp"
 #include "scene/camera_spec.hpp"
+#include "scene/light_spec.hpp"
 #include "scene/material_spec.hpp"
 #include "scene/render_spec.hpp"
 #include "sdf_json.hpp"
 #include "transform_json.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <limits>
 
@@ -350,6 +352,80 @@ std::optional<Scene> loadScene(const std::filesystem::path& path, const FileSour
         return std::nullopt;
     }
     return parseScene(*text, path, diagnostics);
+}
+
+namespace {
+
+// A light given in code as the JSON object a scene file would hold, its values as they are (the
+// writer's lightToJson makes values valid; here an invalid value must reach the reader). A
+// number that JSON cannot hold is reported here and gives nullopt.
+std::optional<Json> codeLightJson(const JsonReader& json, const Light& light,
+                                  const std::string& pointer) {
+    bool finite = true;
+    const auto number = [&](const std::string& key, float value) {
+        if (!std::isfinite(value)) {
+            json.error(childPointer(pointer, key),
+                       std::string("expected a finite number, got ") + (std::isnan(value) ? "nan"
+                                                                        : value > 0       ? "inf"
+                                                                                    : "-inf"));
+            finite = false;
+        }
+        return Json(double(value));
+    };
+    const auto vector = [&](const std::string& key, const glm::vec3& value) {
+        Json out = Json::array();
+        for (int i = 0; i < 3; ++i) {
+            if (!std::isfinite(value[i])) {
+                json.error(childPointer(childPointer(pointer, key), std::size_t(i)),
+                           std::string("expected a finite number, got ") +
+                               (std::isnan(value[i]) ? "nan"
+                                : value[i] > 0       ? "inf"
+                                                     : "-inf"));
+                finite = false;
+            }
+            out.push_back(double(value[i]));
+        }
+        return out;
+    };
+    Json object = Json::object();
+    object["type"] = std::string(lightTypeName(light.type));
+    if (!light.name.empty()) object["name"] = light.name;
+    if (hasDirection(light.type)) object["direction"] = vector("direction", light.direction);
+    if (hasPosition(light.type)) object["position"] = vector("position", light.position);
+    object["color"] = vector("color", light.color);
+    object["intensity"] = number("intensity", light.intensity);
+    if (hasRange(light.type) && light.range != 0.0f) object["range"] = number("range", light.range);
+    if (hasCone(light.type)) {
+        object["inner_angle"] = number("inner_angle", light.innerAngleDegrees);
+        object["outer_angle"] = number("outer_angle", light.outerAngleDegrees);
+    }
+    object["shadows"] = light.castShadows;
+    if (!(light.shadowSoftness < 0.0f))
+        object["shadow_softness"] = number("shadow_softness", light.shadowSoftness);
+    if (!finite) return std::nullopt;
+    return object;
+}
+
+} // namespace
+
+std::optional<std::vector<Light>> checkLights(std::span<const Light> lights,
+                                              const std::string& file, Diagnostics& diagnostics) {
+    const JsonReader json{file, &diagnostics};
+    const int errorsBefore = diagnostics.errorCount();
+    if (lights.size() > std::size_t(kMaxLights))
+        json.error("", "there are " + std::to_string(lights.size()) + " lights; at most " +
+                           std::to_string(kMaxLights) + " are supported (the limit)");
+    std::vector<Light> read;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const std::string pointer = childPointer("", i);
+        const std::optional<Json> object = codeLightJson(json, lights[i], pointer);
+        if (!object) continue;
+        Light light;
+        readLight(json, *object, pointer, light);
+        read.push_back(std::move(light));
+    }
+    if (diagnostics.errorCount() > errorsBefore) return std::nullopt;
+    return read;
 }
 
 } // namespace rmsc

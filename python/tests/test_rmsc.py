@@ -1,5 +1,6 @@
-"""The rmsc Python module: the calls the README promises, edits by pointer, validation as
-`rmsc validate` reports it, errors, the back end choice, docstrings and the turntable example.
+"""The rmsc Python module: the calls the README promises, edits by pointer and by node id or
+name, validation as `rmsc validate` reports it, errors, the back end choice, docstrings and the
+turntable example.
 Run by ctest with PYTHONPATH naming the built module, RMSC_BINARY the rmsc command and
 RMSC_SOURCE_DIR the repository."""
 import inspect
@@ -61,6 +62,47 @@ def test_edit_by_pointer():
     assert scene.get("/sdf/radius") == 0.5 and scene.revision == revision
 
 
+PAIR = """{"version": 1,
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
+  "lights": [{"type": "directional", "name": "sun", "intensity": 3}],
+  "sdf": {"op": "union", "children": [
+    {"shape": "sphere", "name": "ball", "radius": 0.5, "position": [-0.7, 0, 0]},
+    {"shape": "box", "name": "crate", "position": [0.7, 0, 0]}]}}"""
+
+
+def test_edit_by_node_id_and_name():
+    scene = rmsc.Scene.from_json(PAIR)
+    ids = scene.render(size=(32, 24), aov="id")
+    ball = int(ids[12, 10])  # the left one, as the id output shows it
+    assert ball == 65537
+    assert scene.node_pointer(ball) == "/sdf/children/0"
+    assert scene.node_pointer("crate") == "/sdf/children/1"
+    assert scene.node_pointer("sun") == "/lights/0"
+    scene.set_node(ball, "radius", 0.3)
+    assert scene.get("/sdf/children/0/radius") == 0.3
+    scene.set_node("crate", "half_extents", [0.2, 0.2, 0.2])
+    assert scene.get_node(65538, "half_extents") == [0.2, 0.2, 0.2]
+    scene.set_node("sun", "intensity", 5)
+    assert scene.get_node("sun", "intensity") == 5
+    revision = scene.revision
+    with pytest.raises(rmsc.Error) as error:
+        scene.set_node("ball", "radius", -1)
+    assert error.value.kind == "bad_input"
+    assert error.value.problems[0].pointer == "/sdf/children/0/radius"
+    assert scene.revision == revision
+    with pytest.raises(rmsc.Error) as error:
+        scene.set_node(65600, "radius", 1)
+    assert error.value.kind == "usage" and "65600" in str(error.value)
+    with pytest.raises(rmsc.Error) as error:
+        scene.set_node("crat", "radius", 1)
+    assert error.value.kind == "usage" and '"crat"' in str(error.value)
+    assert '"crate"' in str(error.value)  # the names there are
+    with pytest.raises(rmsc.Error):
+        scene.node_pointer(-1)
+    with pytest.raises(TypeError):
+        scene.node_pointer(1.5)
+
+
 def test_load_errors_carry_file_pointer_and_message(tmp_path):
     bad = tmp_path / "bad.json"
     bad.write_text('{"version": 1, "sdf": {"shape": "spere"}}')
@@ -85,6 +127,10 @@ def test_validate_reports_what_rmsc_validate_prints(tmp_path):
         assert printed.returncode == 1
         assert printed.stderr.splitlines() == [str(p) for p in problems]
     assert rmsc.validate(PAWN) == []
+    # Text as the file holding it.
+    same = rmsc.validate_json(bad.read_text(), str(bad))
+    assert [str(p) for p in same] == [str(p) for p in problems]
+    assert rmsc.validate_json(open(PAWN).read(), PAWN) == []
 
 
 def test_backend_choice():

@@ -1,9 +1,10 @@
 // A host program embedding rmsc: it draws a rotating glTF cube with its own shader into its own
 // colour and depth textures, then asks rmsc to add the SDF objects of scene.json, which
-// intersect the cube, through its own camera (rmsc::api::Renderer::drawInto). In a window
-// (GLFW) by default; `--headless OUT.png` renders one frame through EGL (rmsc's headless
-// context) at `--angle` degrees and writes it. The camera is the scene file's, so `rmsc render`
-// of the scene with the cube placed at that angle draws the same picture.
+// intersect the cube, through its own camera and lit by its own light
+// (rmsc::api::Renderer::drawInto). In a window (GLFW) by default; `--headless OUT.png` renders
+// one frame through EGL (rmsc's headless context) at `--angle` degrees and writes it. The camera
+// is the scene file's, so `rmsc render` of the scene with the cube placed at that angle and the
+// host's light in place of the file's draws the same picture.
 //
 //   rmsc_embed [--headless OUT.png] [--size WxH] [--angle DEG]
 #include <rmsc/rmsc.hpp>
@@ -31,6 +32,7 @@ namespace {
 // written as they are).
 constexpr float kMeshColor[3] = {0.80f, 0.80f, 0.84f};
 constexpr float kLightDirection[3] = {0.3f, 0.9f, 0.5f}; // towards the light, normalized below
+constexpr float kLightIntensity = 3.0f;                  // of the same light on the SDF objects
 constexpr float kBackground[4] = {0.10f, 0.11f, 0.13f, 1.0f};
 
 const char* kVertexShader = R"(#version 450 core
@@ -161,7 +163,12 @@ struct Host {
         std::memcpy(host.projection.data(), glm::value_ptr(projection), sizeof(float) * 16);
         host.width = width;
         host.height = height;
-        renderer.drawInto(scene, {color, depth, 0, false}, host);
+        // The SDF objects lit by the host's own light, the one its cube is shaded with (the
+        // direction it travels: away from the light), rather than by the scene file's.
+        rmsc::api::Light sun;
+        sun.direction = {-light.x, -light.y, -light.z};
+        sun.intensity = kLightIntensity;
+        renderer.drawInto(scene, {color, depth, 0, false}, host, {&sun, 1});
         // The host keeps drawing with its own state: rmsc restored it.
         gl.BindVertexArray(0);
     }

@@ -160,6 +160,43 @@ TEST(Api, MissingFileAndValidate) {
     EXPECT_TRUE(Scene::validate(RMSC_TEST_SOURCE_DIR "/samples/scenes/pawn.json").empty());
 }
 
+// validateJson reports for text what validate reports for the file holding it, and what
+// fromJson refuses it with.
+TEST(Api, ValidateJsonAsValidateAFile) {
+    const std::string text = R"({"version": 1, "camera": {"fovv": 3, "fov": -3},
+                                 "sdf": {"shape": "sphere", "radius": "big"}})";
+    const std::string path = ::testing::TempDir() + "rmsc_api_validate.json";
+    {
+        std::FILE* file = std::fopen(path.c_str(), "wb");
+        ASSERT_NE(file, nullptr);
+        std::fwrite(text.data(), 1, text.size(), file);
+        std::fclose(file);
+    }
+    const auto lines = [](const std::vector<Problem>& problems) {
+        std::vector<std::string> out;
+        for (const Problem& problem : problems)
+            out.push_back(problem.text());
+        return out;
+    };
+    const std::vector<Problem> fromFile = Scene::validate(path);
+    ASSERT_EQ(fromFile.size(), 3u);
+    EXPECT_EQ(fromFile[0].severity, Problem::Severity::Warning);
+    EXPECT_EQ(fromFile[0].pointer, "/camera/fovv");
+    EXPECT_EQ(fromFile[2].pointer, "/sdf/radius");
+    EXPECT_EQ(lines(Scene::validateJson(text, path)), lines(fromFile));
+    try {
+        Scene::fromJson(text, path);
+        ADD_FAILURE() << "accepted";
+    } catch (const Error& error) {
+        EXPECT_EQ(lines(error.problems()), lines(fromFile));
+    }
+    std::remove(path.c_str());
+    // Relative mesh paths resolve against the path given.
+    const std::string pawn = RMSC_TEST_SOURCE_DIR "/samples/scenes/pawn.json";
+    EXPECT_TRUE(Scene::validateJson(Scene::load(pawn).json(), pawn).empty());
+    EXPECT_FALSE(Scene::validateJson(Scene::load(pawn).json(), "elsewhere/pawn.json").empty());
+}
+
 TEST(Api, RenderEveryOutput) {
     Scene scene = Scene::fromJson(kSphereScene);
     const Image color = renderer().render(scene, kWidth, kHeight, Aov::Color);
@@ -213,6 +250,224 @@ TEST(Api, EditsByPointerCompileNoShadersAfterTheFirst) {
     EXPECT_EQ(scene.revision(), revision);
     EXPECT_EQ(kindOf([&] { scene.set("/sdf/nothing/radius", "1"); }), ErrorKind::Usage);
     EXPECT_EQ(kindOf([&] { scene.set("/sdf/radius", "one"); }), ErrorKind::BadInput);
+}
+
+// Edits by object id (as the Id output shows it) and by name, beside edits by pointer.
+TEST(Api, EditsByNodeIdAndName) {
+    Scene scene = Scene::fromJson(R"({
+      "version": 1,
+      "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
+      "lights": [{"type": "directional", "name": "sun", "intensity": 3}],
+      "sdf": {"op": "union", "name": "pair", "children": [
+        {"shape": "sphere", "name": "ball", "radius": 0.5, "position": [-0.7, 0, 0]},
+        {"shape": "box", "name": "crate", "half_extents": [0.3, 0.3, 0.3], "position": [0.7, 0, 0]}
+      ]}
+    })");
+    EXPECT_EQ(scene.nodePointer(65536u), "/sdf");
+    EXPECT_EQ(scene.nodePointer(65538u), "/sdf/children/1");
+    EXPECT_EQ(scene.nodePointer("ball"), "/sdf/children/0");
+    EXPECT_EQ(scene.nodePointer("sun"), "/lights/0");
+    // The id under a pixel names the node drawn there.
+    const Image id = renderer().render(scene, kWidth, kHeight, Aov::Id);
+    const std::uint32_t left = pixel<std::uint32_t>(id, kWidth / 2 - 12, kHeight / 2);
+    EXPECT_EQ(scene.nodePointer(left), "/sdf/children/0");
+
+    scene.setNode(left, "radius", "0.3");
+    EXPECT_EQ(scene.get("/sdf/children/0/radius"), "0.3");
+    scene.setNode("crate", "position", "[0.7, 0.2, 0]");
+    EXPECT_EQ(scene.get("/sdf/children/1/position"), "[0.7,0.2,0]");
+    scene.setNode("sun", "/intensity", "5");
+    EXPECT_EQ(scene.get("/lights/0/intensity"), "5");
+    const Image depth = renderer().render(scene, kWidth, kHeight, Aov::Depth);
+    EXPECT_TRUE(std::isinf(pixel<float>(depth, kWidth / 2 - 12, kHeight / 2 - 8)))
+        << "the smaller ball should leave this pixel empty";
+
+    // Bad values: the reader's problem at the node's pointer; the scene as it was.
+    const std::uint64_t revision = scene.revision();
+    try {
+        scene.setNode("crate", "half_extents", "[0.3, -1, 0.3]");
+        ADD_FAILURE() << "accepted a negative size";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.kind(), ErrorKind::BadInput);
+        ASSERT_FALSE(error.problems().empty());
+        EXPECT_EQ(error.problems()[0].pointer, "/sdf/children/1/half_extents/1");
+    }
+    EXPECT_EQ(scene.revision(), revision);
+
+    // Unknown ids and names: an error naming them.
+    std::string message;
+    EXPECT_EQ(kindOf([&] { scene.setNode(65600u, "radius", "1"); }, &message), ErrorKind::Usage);
+    EXPECT_NE(message.find("65600"), std::string::npos) << message;
+    EXPECT_NE(message.find("65536 to 65538"), std::string::npos) << message;
+    EXPECT_EQ(kindOf([&] { scene.nodePointer(0u); }, &message), ErrorKind::Usage);
+    EXPECT_EQ(kindOf([&] { scene.setNode("crat", "radius", "1"); }, &message), ErrorKind::Usage);
+    EXPECT_NE(message.find("\"crat\""), std::string::npos) << message;
+    EXPECT_NE(message.find("\"crate\""), std::string::npos) << message;
+    EXPECT_EQ(kindOf([&] { scene.setNode("ball", "", "1"); }), ErrorKind::Usage);
+    EXPECT_EQ(kindOf([&] { scene.nodePointer(""); }), ErrorKind::Usage);
+    scene.set("/sdf/children/1/name", "\"ball\"");
+    EXPECT_EQ(kindOf([&] { scene.nodePointer("ball"); }, &message), ErrorKind::Usage);
+    EXPECT_NE(message.find("not unique"), std::string::npos) << message;
+}
+
+// A scene built in code is the scene its JSON text gives: the same document, the same picture;
+// and a bad value is the reader's problem at the same pointer.
+TEST(Api, SceneBuilderMakesTheSceneItsJsonGives) {
+    Light sun;
+    sun.name = "sun";
+    sun.direction = {-0.5f, -1.0f, -0.25f};
+    sun.intensity = 2.5f;
+    Light lamp;
+    lamp.type = Light::Type::Point;
+    lamp.position = {1.0f, 1.0f, 2.0f};
+    lamp.color = {1.0f, 0.5f, 0.25f};
+    lamp.intensity = 10.0f;
+    lamp.range = 8.0f;
+    SceneBuilder builder;
+    builder.camera({{"position", {0, 0.5, 3}}, {"target", {0, 0, 0}}, {"fov", 45}})
+        .render({{"background", {0.125, 0.125, 0.25}}})
+        .material("clay", {{"base_color", "#e07a5f"}, {"roughness", 0.5}})
+        .material("steel", {{"base_color", {0.5, 0.5, 0.75}}, {"metallic", 1}})
+        .light(sun)
+        .light(lamp)
+        .mesh("../assets/plane.gltf", {{"position", {0, -0.75, 0}}, {"scale", 3}})
+        .sdf(Node::group("smooth_union",
+                         {Node::shape("sphere", {{"radius", 0.5}, {"name", "ball"}}),
+                          Node::shape("torus", {{"major_radius", 0.75}, {"minor_radius", 0.125}})
+                              .set("material", "steel")
+                              .modifier("twist", {{"amount", 30}})},
+                         {{"smoothness", 0.25}, {"material", "clay"}})
+                 .add(Node::shape("box", {{"half_extents", {0.25, 0.25, 0.25}},
+                                          {"position", {0, 0.5, 0}},
+                                          {"cut", true}})));
+    const std::string text = R"({
+      "version": 1,
+      "camera": {"position": [0, 0.5, 3], "target": [0, 0, 0], "fov": 45},
+      "render": {"background": [0.125, 0.125, 0.25]},
+      "materials": {"clay": {"base_color": "#e07a5f", "roughness": 0.5},
+                    "steel": {"base_color": [0.5, 0.5, 0.75], "metallic": 1}},
+      "lights": [
+        {"type": "directional", "name": "sun", "direction": [-0.5, -1, -0.25], "color": [1, 1, 1],
+         "intensity": 2.5},
+        {"type": "point", "position": [1, 1, 2], "range": 8, "color": [1, 0.5, 0.25],
+         "intensity": 10}],
+      "meshes": [{"file": "../assets/plane.gltf", "position": [0, -0.75, 0], "scale": 3}],
+      "sdf": {"op": "smooth_union", "smoothness": 0.25, "material": "clay", "children": [
+        {"shape": "sphere", "radius": 0.5, "name": "ball"},
+        {"shape": "torus", "major_radius": 0.75, "minor_radius": 0.125, "material": "steel",
+         "modifiers": [{"type": "twist", "amount": 30}]},
+        {"shape": "box", "half_extents": [0.25, 0.25, 0.25], "position": [0, 0.5, 0], "cut": true}
+      ]}
+    })";
+    const std::string path = RMSC_TEST_SOURCE_DIR "/samples/scenes/built.json"; // for the mesh
+    const Scene built = builder.build(path);
+    const Scene read = Scene::fromJson(text, path);
+    EXPECT_EQ(built.json(), read.json());
+    EXPECT_EQ(Scene::fromJson(builder.json(), path).json(), read.json());
+    for (const Aov aov : {Aov::Color, Aov::Id, Aov::Depth}) {
+        const Image a = renderer().render(built, kWidth, kHeight, aov);
+        const Image b = renderer().render(read, kWidth, kHeight, aov);
+        EXPECT_EQ(a.bytes, b.bytes) << "output " << int(aov) << " differs";
+        if (aov == Aov::Id) {
+            EXPECT_EQ(pixel<std::uint32_t>(a, kWidth / 2, kHeight - 1), 1u); // the mesh
+        }
+    }
+    EXPECT_EQ(built.nodePointer("ball"), "/sdf/children/0");
+
+    // Bad values: the problems the reader gives for the same JSON.
+    const auto problemsOf = [](const std::function<void()>& make) {
+        try {
+            make();
+        } catch (const Error& error) {
+            EXPECT_EQ(error.kind(), ErrorKind::BadInput);
+            return error.problems();
+        }
+        ADD_FAILURE() << "accepted";
+        return std::vector<Problem>{};
+    };
+    const std::vector<Problem> fromBuilder = problemsOf([] {
+        SceneBuilder()
+            .sdf(Node::group("union",
+                             {Node::shape("sphere"), Node::shape("sphere", {{"radius", -1}}),
+                              Node::shape("spere")}))
+            .build("built.json");
+    });
+    const std::vector<Problem> fromText = problemsOf([] {
+        Scene::fromJson(R"({"version": 1, "sdf": {"op": "union", "children": [
+            {"shape": "sphere"}, {"shape": "sphere", "radius": -1}, {"shape": "spere"}]}})",
+                        "built.json");
+    });
+    ASSERT_EQ(fromBuilder.size(), 2u);
+    ASSERT_EQ(fromText.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i)
+        EXPECT_EQ(fromBuilder[i].text(), fromText[i].text());
+    EXPECT_EQ(fromBuilder[0].pointer, "/sdf/children/1/radius");
+    EXPECT_EQ(fromBuilder[1].pointer, "/sdf/children/2/shape");
+    EXPECT_NE(fromBuilder[1].message.find("did you mean \"sphere\""), std::string::npos)
+        << fromBuilder[1].text();
+    // An unknown operation, a light out of range, a number JSON cannot hold.
+    Light dark;
+    dark.intensity = -1.0f;
+    const std::vector<Problem> more = problemsOf([&] {
+        SceneBuilder()
+            .light(dark)
+            .sdf(Node::group("onion", {Node::shape("box", {{"position", {0, NAN, 0}}})}))
+            .build();
+    });
+    ASSERT_EQ(more.size(), 1u); // the non-finite number first, before the reader runs
+    EXPECT_EQ(more[0].pointer, "/sdf/children/0/position/1");
+    const std::vector<Problem> reader = problemsOf([&] {
+        SceneBuilder().light(dark).sdf(Node::group("onion", {Node::shape("box")})).build();
+    });
+    ASSERT_EQ(reader.size(), 2u);
+    EXPECT_EQ(reader[0].pointer, "/lights/0/intensity");
+    EXPECT_EQ(reader[1].pointer, "/sdf/op");
+    // Value::json for what the other values cannot say (a profile); text that is not JSON.
+    const Scene ring =
+        SceneBuilder()
+            .sdf(Node::shape("revolution",
+                             {{"profile", Value::json(R"({"type": "circle", "radius": 0.2})")},
+                              {"offset", 0.5}}))
+            .build();
+    EXPECT_EQ(ring.get("/sdf/profile/radius"), "0.2");
+    const std::vector<Problem> notJson = problemsOf([] {
+        SceneBuilder()
+            .sdf(Node::shape("revolution", {{"profile", Value::json("{circle}")}}))
+            .build();
+    });
+    ASSERT_EQ(notJson.size(), 1u);
+    EXPECT_EQ(notJson[0].pointer, "/sdf/profile");
+}
+
+// The builder's lists are the catalogues: every shape they list is read with its parameters at
+// their defaults, and every operation they list builds.
+TEST(Api, SceneBuilderListsTheCatalogues) {
+    const std::vector<ShapeInfo> shapes = SceneBuilder::shapes();
+    ASSERT_GT(shapes.size(), 20u);
+    EXPECT_EQ(shapes[0].name, "sphere");
+    EXPECT_EQ(shapes[0].parameters.at(0).key, "radius");
+    for (const ShapeInfo& shape : shapes) {
+        Params defaults;
+        for (const ShapeParameter& p : shape.parameters)
+            if (p.components == 1)
+                defaults.emplace_back(p.key, double(p.defaultValue[0]));
+            else
+                defaults.emplace_back(p.key,
+                                      Value({double(p.defaultValue[0]), double(p.defaultValue[1]),
+                                             double(p.defaultValue[2])}));
+        const std::string json = SceneBuilder().sdf(Node::shape(shape.name, defaults)).json();
+        SCOPED_TRACE(shape.name);
+        EXPECT_NO_THROW(Scene::fromJson(json));
+    }
+    const std::vector<std::string> operations = SceneBuilder::operations();
+    EXPECT_EQ(operations.front(), "union");
+    for (const std::string& operation : operations) {
+        SCOPED_TRACE(operation);
+        EXPECT_NO_THROW(SceneBuilder()
+                            .sdf(Node::group(operation, {Node::shape("sphere"), Node::shape("box")},
+                                             {{"smoothness", 0.1}}))
+                            .build());
+    }
 }
 
 // drawInto in each convention: where the sphere is nearer than the host's depth its colour is
@@ -352,6 +607,167 @@ TEST(Api, UnsupportedConventionsAndTargetsAreRefused) {
     EXPECT_NE(message.find("renderbuffer"), std::string::npos) << message;
     glDeleteFramebuffers(1, &framebuffer);
     glDeleteRenderbuffers(1, &renderbuffer);
+}
+
+// Host lights: lights equal to the scene's draw what the scene's draw; others change the SDF
+// object's shading; the next call without them is lit by the scene's again.
+namespace {
+
+// The sphere's pixels drawn into a fresh host (depth 1, blue), RGB top row first, with the
+// scene's lights or with `lights`.
+std::vector<int> drawnSphere(const Scene& scene, const std::vector<Light>* lights) {
+    HostTextures host(GL_DEPTH_COMPONENT24, 1.0f);
+    const HostTarget target{host.color, host.depth, 0, false};
+    if (lights)
+        renderer().drawInto(scene, target, hostView(DepthConvention::Default), *lights);
+    else
+        renderer().drawInto(scene, target, hostView(DepthConvention::Default));
+    const std::vector<std::uint8_t> rgba = host.readColor();
+    std::vector<int> rgb;
+    for (int y = kHeight - 1; y >= 0; --y)
+        for (int x = 0; x < kWidth; ++x)
+            for (int c = 0; c < 3; ++c)
+                rgb.push_back(
+                    rgba[(std::size_t(y) * kWidth + std::size_t(x)) * 4 + std::size_t(c)]);
+    return rgb;
+}
+
+// The mean of channel `c` over the pixels where `id` shows the sphere.
+double sphereMean(const std::vector<int>& rgb, const Image& id, int c) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (pixel<std::uint32_t>(id, x, y) >= 65536u) {
+                sum += rgb[(std::size_t(y) * kWidth + std::size_t(x)) * 3 + std::size_t(c)];
+                ++count;
+            }
+    return count ? sum / count : 0.0;
+}
+
+int differingPixels(const std::vector<int>& a, const std::vector<int>& b, int tolerance) {
+    int differing = 0;
+    for (std::size_t i = 0; i < a.size(); i += 3)
+        for (std::size_t c = 0; c < 3; ++c)
+            if (std::abs(a[i + c] - b[i + c]) > tolerance) {
+                ++differing;
+                break;
+            }
+    return differing;
+}
+
+} // namespace
+
+TEST(Api, DrawIntoWithHostLights) {
+    Scene scene = Scene::fromJson(kSphereScene);
+    const Image id = renderer().render(scene, kWidth, kHeight, Aov::Id);
+    const std::vector<int> sceneLit = drawnSphere(scene, nullptr);
+
+    // The scene's light given by the host: the same picture.
+    Light sun;
+    sun.direction = {-0.3f, -1.0f, -0.6f};
+    sun.intensity = 3.0f;
+    const std::vector<Light> same = {sun};
+    EXPECT_EQ(differingPixels(drawnSphere(scene, &same), sceneLit, 2), 0);
+
+    // A red point light at the front left and a dim spot: the sphere turns red.
+    Light red;
+    red.type = Light::Type::Point;
+    red.position = {-2.0f, 0.5f, 2.0f};
+    red.color = {1.0f, 0.1f, 0.1f};
+    red.intensity = 30.0f;
+    Light spot;
+    spot.type = Light::Type::Spot;
+    spot.position = {0.0f, 3.0f, 0.0f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.intensity = 5.0f;
+    spot.innerAngle = 10.0f;
+    spot.outerAngle = 30.0f;
+    const std::vector<Light> host = {red, spot};
+    const std::vector<int> hostLit = drawnSphere(scene, &host);
+    const double sceneRed = sphereMean(sceneLit, id, 0), sceneGreen = sphereMean(sceneLit, id, 1);
+    const double hostRed = sphereMean(hostLit, id, 0), hostGreen = sphereMean(hostLit, id, 1);
+    EXPECT_GT(hostRed - hostGreen, sceneRed - sceneGreen + 40.0)
+        << "scene-lit mean red " << sceneRed << " green " << sceneGreen << "; host-lit red "
+        << hostRed << " green " << hostGreen;
+    // Only the SDF pixels changed: the host's blue stays around the sphere.
+    EXPECT_EQ(hostLit[0], 0);
+    EXPECT_EQ(hostLit[2], 255);
+
+    // No lights at all: only the ambient light, darker than either.
+    const std::vector<Light> none;
+    const std::vector<int> unlit = drawnSphere(scene, &none);
+    EXPECT_LT(sphereMean(unlit, id, 0) + 20.0, sceneRed);
+
+    // The next call without host lights, and render(), are lit by the scene's lights again.
+    EXPECT_EQ(differingPixels(drawnSphere(scene, nullptr), sceneLit, 0), 0);
+    const Image rendered = renderer().render(scene, kWidth, kHeight, Aov::Color);
+    const int centre = (kHeight / 2 * kWidth + kWidth / 2) * 3;
+    EXPECT_NEAR(pixel<std::uint8_t>(rendered, kWidth / 2, kHeight / 2), sceneLit[centre], 8);
+}
+
+TEST(Api, BadHostLightsAreRefusedAsInAFile) {
+    Scene scene = Scene::fromJson(kSphereScene);
+    HostTextures host(GL_DEPTH_COMPONENT24, 1.0f);
+    const HostTarget target{host.color, host.depth, 0, false};
+    const auto problemsOf = [&](const std::vector<Light>& lights) {
+        try {
+            renderer().drawInto(scene, target, hostView(DepthConvention::Default), lights);
+        } catch (const Error& error) {
+            EXPECT_EQ(error.kind(), ErrorKind::BadInput);
+            return error.problems();
+        }
+        ADD_FAILURE() << "the lights were accepted";
+        return std::vector<Problem>{};
+    };
+    Light dark;
+    dark.intensity = -1.0f;
+    std::vector<Problem> problems = problemsOf({Light{}, dark});
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].file, "host lights");
+    EXPECT_EQ(problems[0].pointer, "/1/intensity");
+    // The reader's message for the same value in a scene file.
+    try {
+        Scene::fromJson(R"({"version": 1, "lights": [{"type": "directional", "intensity": -1}],
+                            "sdf": {"shape": "sphere"}})");
+        ADD_FAILURE() << "the scene's light was accepted";
+    } catch (const Error& error) {
+        ASSERT_FALSE(error.problems().empty());
+        EXPECT_EQ(error.problems()[0].pointer, "/lights/0/intensity");
+        EXPECT_EQ(problems[0].message, error.problems()[0].message);
+    }
+
+    Light cone;
+    cone.type = Light::Type::Spot;
+    cone.innerAngle = 50.0f;
+    cone.outerAngle = 40.0f;
+    Light nowhere;
+    nowhere.direction = {0.0f, 0.0f, 0.0f};
+    Light notANumber;
+    notANumber.type = Light::Type::Point;
+    notANumber.color = {1.0f, NAN, 1.0f};
+    Light negativeRange;
+    negativeRange.type = Light::Type::Point;
+    negativeRange.range = -2.0f;
+    problems = problemsOf({cone, nowhere, notANumber, negativeRange});
+    ASSERT_EQ(problems.size(), 4u);
+    EXPECT_EQ(problems[0].pointer.rfind("/0/", 0), 0u) << problems[0].text();
+    EXPECT_NE(problems[0].message.find("40"), std::string::npos) << problems[0].text();
+    EXPECT_EQ(problems[1].pointer, "/1/direction") << problems[1].text();
+    EXPECT_EQ(problems[2].pointer, "/2/color/1") << problems[2].text();
+    EXPECT_NE(problems[2].message.find("finite"), std::string::npos) << problems[2].text();
+    EXPECT_EQ(problems[3].pointer, "/3/range") << problems[3].text();
+
+    // One more than a scene may have.
+    problems = problemsOf(std::vector<Light>(17));
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(problems[0].message.find("at most 16"), std::string::npos) << problems[0].text();
+
+    // Nothing was drawn by the refused calls; sixteen lights are drawn.
+    const std::size_t centre = std::size_t(kHeight / 2) * kWidth + std::size_t(kWidth / 2);
+    EXPECT_EQ(host.readColor()[centre * 4 + 2], 255);
+    renderer().drawInto(scene, target, hostView(DepthConvention::Default), std::vector<Light>(16));
+    EXPECT_NE(host.readColor()[centre * 4 + 2], 255);
 }
 
 namespace {

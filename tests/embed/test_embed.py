@@ -1,17 +1,18 @@
 #!/usr/bin/env python3
 """The installed package from outside the tree: `cmake --install` into a fresh prefix (only the
 public headers, librmsc.a, the CMake package and the pkg-config file), samples/embed configured
-and built against it with find_package(rmsc CONFIG), a program built with pkg-config alone, and
-the sample's headless frame compared with `rmsc render` of the equivalent scene (the sample's
-SDF objects with its cube placed as the sample draws it). The expected frame is rmsc's colour
-where the SDF objects are in front, the host's own shading of the cube (from rmsc's normals)
-where it is, and the host's background elsewhere; tolerance as the reference images (a pixel
-differs past 8/255 in a channel, at most 0.5% may). On a mismatch it writes embed.actual.png,
-embed.expected.png and embed.diff.png to test-output/.
+and built against it with find_package(rmsc CONFIG), programs built with pkg-config alone (the
+README's snippet and the complete C++ examples of docs/embedding.md, run with its Python ones),
+and the sample's headless frame compared with `rmsc render` of the equivalent scene (the
+sample's SDF objects with its cube placed as the sample draws it, lit by the sample's light).
+The expected frame is rmsc's colour where the SDF objects are in front, the host's own shading
+of the cube (from rmsc's normals) where it is, and the host's background elsewhere; tolerance
+as the reference images (a pixel differs past 8/255 in a channel, at most 0.5% may). On a
+mismatch it writes embed.actual.png, embed.expected.png and embed.diff.png to test-output/.
 
     test_embed.py RMSC_BINARY SOURCE_DIR BUILD_DIR [PYTHON]
 
-PYTHON (default: this interpreter) runs the README's Python snippet.
+PYTHON (default: this interpreter) runs the Python snippets.
 """
 import json
 import math
@@ -29,6 +30,7 @@ ANGLE = 30.0
 # samples/embed/main.cpp's look.
 MESH_COLOR = numpy.array([0.80, 0.80, 0.84])
 LIGHT = numpy.array([0.3, 0.9, 0.5]) / numpy.linalg.norm([0.3, 0.9, 0.5])
+LIGHT_INTENSITY = 3.0
 BACKGROUND = numpy.array([0.10, 0.11, 0.13])
 
 
@@ -121,6 +123,19 @@ def readme_snippets(readme):
     return blocks["cpp"], blocks["python"]
 
 
+def doc_examples(path):
+    """The complete examples of a Markdown file: its ```cpp blocks with a main() and its ```python
+    blocks that import rmsc."""
+    text = open(path).read()
+    examples = []
+    for language, needle in (("cpp", "int main("), ("python", "import rmsc")):
+        for block in text.split("```" + language + "\n")[1:]:
+            code = block[:block.index("```")]
+            if needle in code:
+                examples.append((language, code))
+    return examples
+
+
 def project_version(source):
     for line in open(os.path.join(source, "CMakeLists.txt")):
         if line.startswith("project(rmsc VERSION "):
@@ -162,6 +177,21 @@ def main():
                            PYTHONDONTWRITEBYTECODE="1")).stdout
     assert printed.strip() == "(180, 320, 3) uint8 float32 []", printed
 
+    # docs/embedding.md's complete examples, as printed, the same way.
+    examples = doc_examples(os.path.join(source, "docs", "embedding.md"))
+    assert sum(1 for language, _ in examples if language == "cpp") >= 2, "no C++ examples found"
+    for number, (language, code) in enumerate(examples):
+        if language == "cpp":
+            path = os.path.join(out, "doc_example_%d.cpp" % number)
+            with open(path, "w") as f:
+                f.write(code)
+            run(["g++", path, "-o", path[:-4]] + flags)
+            run([path[:-4]], cwd=source)
+        else:
+            run([python_interpreter, "-c", code], cwd=source,
+                env=dict(os.environ, PYTHONPATH=os.path.join(build, "python"),
+                         PYTHONDONTWRITEBYTECODE="1"))
+
     # The sample, configured and built against the installed package only.
     sample_build = os.path.join(out, "build")
     run(["cmake", "-S", os.path.join(source, "samples", "embed"), "-B", sample_build,
@@ -176,6 +206,9 @@ def main():
         scene = json.load(f)
     scene["meshes"] = [{"file": os.path.join(source, "samples", "assets", "cube.gltf"),
                         "rotation": [0, ANGLE, 0]}]
+    # The sample lights the SDF objects with its own light (drawInto's host lights).
+    scene["lights"] = [{"type": "directional", "direction": [float(-v) for v in LIGHT],
+                        "intensity": LIGHT_INTENSITY}]
     equivalent = os.path.join(out, "equivalent.json")
     with open(equivalent, "w") as f:
         json.dump(scene, f)

@@ -5,10 +5,12 @@
 #pragma once
 
 #include "rmsc/image.hpp"
+#include "rmsc/light.hpp"
 #include "rmsc/scene.hpp"
 
 #include <array>
 #include <memory>
+#include <span>
 
 namespace rmsc::api {
 
@@ -73,6 +75,13 @@ class Renderer {
     // are not drawn (they still cast shadows), nor its camera used. The GL state is as it was
     // after the call (docs/embedding.md lists what is saved).
     void drawInto(const Scene& scene, const HostTarget& target, const HostView& view);
+    // The same, lit by the host's `lights` instead of the scene's (an empty list: by the
+    // scene's sky and ambient light only). They are checked as a scene file's lights are: at
+    // most 16, each value in its range; invalid ones throw Error (BadInput, a problem at
+    // "/INDEX/KEY" of the file "host lights" for each) and nothing is drawn. The scene's
+    // meshes cast their shadows of these lights.
+    void drawInto(const Scene& scene, const HostTarget& target, const HostView& view,
+                  std::span<const Light> lights);
 
     RenderStats lastStats() const;
 

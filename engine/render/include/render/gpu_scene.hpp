@@ -76,6 +76,11 @@ struct GpuScene {
     void bindBuffers() const;
 };
 
+// Makes `lights` the lights `gpu` is drawn with: its light buffer and its shadow-map views,
+// planned against the scene's meshes and shells. uploadScene gives the prepared scene's own;
+// a host may draw with its own (rmsc::api::Renderer::drawInto).
+void setSceneLights(GpuScene& gpu, const PreparedScene& prepared, const std::vector<Light>& lights);
+
 // Under the Cells strategy the program is pruned here, unless `cells` gives the grid already
 // pruned for prepared.sdf (the viewer's, pruned again after an edit: sdf/cell_pruning.hpp).
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfStrategy::Baked,

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -25,6 +26,13 @@ std::optional<Scene> parseScene(std::string_view text, const std::filesystem::pa
 // Reads `path` through `files` and parses it.
 std::optional<Scene> loadScene(const std::filesystem::path& path, const FileSource& files,
                                Diagnostics& diagnostics);
+
+// Lights given in code (a host's own, drawn with a scene's SDF objects), checked as the reader
+// checks a scene's "lights": the same keys, ranges, messages and limit on their number, each
+// problem at "/INDEX/KEY" in `file`, and a non-finite number refused. Returns the lights as the
+// reader makes them (directions normalized), or nullopt when any is invalid.
+std::optional<std::vector<Light>> checkLights(std::span<const Light> lights,
+                                              const std::string& file, Diagnostics& diagnostics);
 
 // The scene as JSON text in the same format parseScene reads (round-trips).
 std::string sceneToJson(const Scene& scene);
