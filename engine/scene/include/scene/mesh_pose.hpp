@@ -28,8 +28,9 @@ std::vector<glm::dmat4> poseNodeWorlds(const MeshRig& rig, const MeshPose& pose)
 
 // Bakes the pose into asset.primitives, asset.jointMatrices and the bounds; the primitives keep
 // their order, count and indices (only the vertices, and bind vertices of morphed skinned
-// primitives, change), and the joint matrices their count. Returns false, with the problem in `diagnostics` and
-// the asset unchanged, when the animation does not exist or the pose makes positions infinite.
+// primitives, change), and the joint matrices their count. Returns false, with the problem in
+// `diagnostics` and the asset unchanged, when the animation does not exist or the pose makes
+// positions infinite.
 bool poseMeshAsset(MeshAsset& asset, const MeshPose& pose, Diagnostics& diagnostics);
 
 // The animation given by name or by index ("2"); nullopt with `why` saying which exist.
