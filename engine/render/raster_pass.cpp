@@ -36,6 +36,7 @@ std::optional<RasterPass> RasterPass::create(const ShaderFiles& files, std::stri
     pass.program_ = std::move(*program);
     pass.model_ = uniformLocation(pass.program_, "uModel");
     pass.normalMatrix_ = uniformLocation(pass.program_, "uNormalMatrix");
+    pass.jointBase_ = uniformLocation(pass.program_, "uJointBase");
     pass.baseColorFactor_ = uniformLocation(pass.program_, "uBaseColorFactor");
     pass.metallicRoughness_ = uniformLocation(pass.program_, "uMetallicRoughness");
     pass.emissive_ = uniformLocation(pass.program_, "uEmissive");
@@ -49,6 +50,9 @@ std::optional<RasterPass> RasterPass::create(const ShaderFiles& files, std::stri
 void RasterPass::bindPrimitive(const GpuScene& scene, const GpuMeshInstance& instance,
                                const GpuMeshPrimitive& primitive) const {
     const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
+    // Skinned on the GPU (shaders/common/skinning.glsl): the mesh's joint matrices.
+    glUniform1i(jointBase_, primitive.jointBase);
+    if (primitive.jointBase >= 0) bindJointMatrices(mesh);
     glm::vec4 baseColor(1.0f);
     // metallic, roughness, normal scale, occlusion strength
     glm::vec4 metallicRoughness(1.0f, 1.0f, 1.0f, 1.0f);

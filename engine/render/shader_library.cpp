@@ -22,6 +22,7 @@ std::vector<GlslConstant> renderGlslConstants() {
         {"SDF_DATA_BINDING", unit(kSdfDataBinding)},
         {"MARCH_STATISTICS_BINDING", unit(kMarchStatisticsBinding)},
         {"SDF_CELL_BINDING", unit(kSdfCellBinding)},
+        {"JOINT_MATRIX_BINDING", unit(kJointMatrixBinding)},
         {"FRAME_BINDING", unit(kFrameBinding)},
         {"SDF_PROGRAM_UNIFORM_BINDING", unit(kSdfProgramUniformBinding)},
         {"SKY_IMAGE_UNIT", unit(kSkyImageUnit)},

@@ -23,6 +23,7 @@ std::optional<ShadowPass> ShadowPass::create(const ShaderFiles& files, std::stri
     pass.lightViewProjection_ = uniformLocation(pass.program_, "uLightViewProjection");
     pass.alphaTest_ = uniformLocation(pass.program_, "uAlphaTest");
     pass.uvTransform_ = uniformLocation(pass.program_, "uUvTransform");
+    pass.jointBase_ = uniformLocation(pass.program_, "uJointBase");
     pass.framebuffer_ = gl::createFramebuffer();
     glNamedFramebufferDrawBuffer(pass.framebuffer_.id(), GL_NONE);
     glNamedFramebufferReadBuffer(pass.framebuffer_.id(), GL_NONE);
@@ -107,8 +108,10 @@ void ShadowPass::draw(const GpuScene& scene, std::span<const ShellPass* const> s
             glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(instance.model));
             setFrontFace(instance);
             const GpuMesh& mesh = scene.meshes[std::size_t(instance.mesh)];
+            bindJointMatrices(mesh);
             for (const GpuMeshPrimitive& primitive : mesh.primitives) {
                 if (primitive.mode != GL_TRIANGLES) continue;
+                glUniform1i(jointBase_, primitive.jointBase);
                 setFaceCulling(drawsBothFaces(scene, instance, primitive));
                 bindAlphaTest(scene, instance, primitive);
                 glBindVertexArray(primitive.vertexArray.id());

@@ -1,5 +1,6 @@
 // Posing a glTF file's rig: node transforms from the animation's channels, morph weights and
-// skins applied to each instanced primitive on the CPU (see mesh_pose.hpp).
+// skins applied to each instanced primitive on the CPU, and the joint matrices the GPU skins
+// with (see mesh_pose.hpp).
 #include "scene/mesh_pose.hpp"
 
 #include "scene/gltf_geometry.hpp"
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <limits>
 
 namespace rmsc {
@@ -102,48 +104,79 @@ RigPrimitive morphed(const RigPrimitive& source, const std::vector<float>& weigh
     return out;
 }
 
-// `source` skinned (glTF 2.0 section 3.7.3, "Skins"): each vertex transformed by the weighted
-// sum of its joints' matrices, jointMatrix = world(joint) * inverseBindMatrix, into the asset's
+// Each vertex's joints and weights of both sets; a joint whose weight is zero is written as 0,
+// so that the GPU never reads a matrix the skin does not have.
+std::vector<MeshSkinVertex> skinVerticesOf(const RigPrimitive& source) {
+    std::vector<MeshSkinVertex> out(source.positions.size());
+    for (std::size_t set = 0; set < 2; ++set) {
+        if (source.joints[set].empty()) continue;
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            const glm::vec4 w = source.weights[set][i];
+            glm::uvec4 j = source.joints[set][i];
+            for (int c = 0; c < 4; ++c)
+                if (w[c] == 0.0f) j[c] = 0u;
+            (set == 0 ? out[i].joints0 : out[i].joints1) = j;
+            (set == 0 ? out[i].weights0 : out[i].weights1) = w;
+        }
+    }
+    return out;
+}
+
+// The bind vertices of `primitive` skinned (glTF 2.0 section 3.7.3, "Skins") into its
+// vertices: each vertex moved by the weighted sum of its joints' matrices, jointMatrix =
+// world(joint) * inverseBindMatrix (asset.jointMatrices from jointBase + 1), into the asset's
 // root space (the transform of the skinned mesh's own node is not applied). A vertex whose
-// weights are all zero keeps the mesh node's transform.
-bool skinned(const RigPrimitive& source, const std::vector<glm::dmat4>& jointMatrices,
-             const glm::dmat4& meshWorld, const std::string& pointer, gltf::Reporter& report,
-             RigPrimitive& out) {
-    if (&out != &source) out = source;
-    for (std::size_t i = 0; i < source.positions.size(); ++i) {
+// weights are all zero keeps the mesh node's transform (the matrix at jointBase). Normals are
+// moved by the inverse transpose of the blended matrix, tangents by the matrix itself; the
+// vertex shaders (shaders/common/skinning.glsl) do the same on the GPU.
+bool skinVertices(MeshPrimitive& primitive, const std::vector<glm::mat4>& matrices,
+                  std::size_t jointCount, const std::string& pointer, gltf::Reporter& report) {
+    const std::size_t base = std::size_t(primitive.jointBase);
+    for (std::size_t i = 0; i < primitive.bindVertices.size(); ++i) {
+        const MeshSkinVertex& s = primitive.skin[i];
         glm::dmat4 m(0.0);
         double total = 0.0;
         for (std::size_t set = 0; set < 2; ++set) {
-            if (source.joints[set].empty()) continue;
+            const glm::uvec4 joints = set == 0 ? s.joints0 : s.joints1;
+            const glm::vec4 weights = set == 0 ? s.weights0 : s.weights1;
             for (int c = 0; c < 4; ++c) {
-                const double w = source.weights[set][i][c];
+                const double w = weights[c];
                 if (w == 0.0) continue;
-                const unsigned joint = source.joints[set][i][c];
-                if (joint >= jointMatrices.size()) {
+                if (joints[c] >= jointCount) {
                     report.error(pointer + "/attributes/JOINTS_" + std::to_string(set),
                                  "vertex " + std::to_string(i) + " uses joint " +
-                                     std::to_string(joint) + " but the node's skin has " +
-                                     std::to_string(jointMatrices.size()) +
+                                     std::to_string(joints[c]) + " but the node's skin has " +
+                                     std::to_string(jointCount) +
                                      " joints, expected an index below that");
                     return false;
                 }
-                m += w * jointMatrices[joint];
+                m += w * glm::dmat4(matrices[base + 1 + joints[c]]);
                 total += w;
             }
         }
-        if (!(total > 0.0)) m = meshWorld;
-        out.positions[i] = glm::vec3(m * glm::dvec4(glm::dvec3(source.positions[i]), 1.0));
-        const glm::dmat3 linear(m);
-        if (!source.normals.empty()) {
-            const double det = glm::determinant(linear);
-            const glm::dmat3 normalMatrix =
-                std::abs(det) > 1e-300 ? glm::inverseTranspose(linear) : linear;
-            out.normals[i] = glm::vec3(normalMatrix * glm::dvec3(source.normals[i]));
+        if (!(total > 0.0)) m = glm::dmat4(matrices[base]);
+        const MeshVertex& bind = primitive.bindVertices[i];
+        MeshVertex& out = primitive.vertices[i];
+        out = bind;
+        out.position = glm::vec3(m * glm::dvec4(glm::dvec3(bind.position), 1.0));
+        if (!std::isfinite(out.position.x) || !std::isfinite(out.position.y) ||
+            !std::isfinite(out.position.z)) {
+            report.error(pointer, "the skin's joint matrices make positions infinite or NaN");
+            return false;
         }
-        if (!source.tangents.empty())
-            out.tangents[i] =
-                glm::vec4(glm::vec3(linear * glm::dvec3(glm::vec3(source.tangents[i]))),
-                          source.tangents[i].w);
+        const glm::dmat3 linear(m);
+        const double det = glm::determinant(linear);
+        const glm::dmat3 normalMatrix =
+            std::abs(det) > 1e-300 ? glm::inverseTranspose(linear) : linear;
+        const glm::dvec3 n = normalMatrix * glm::dvec3(bind.normal);
+        const double length = glm::length(n);
+        out.normal =
+            length > 1e-12 && std::isfinite(length) ? glm::vec3(n / length) : glm::vec3(0.0f);
+        glm::dvec3 t = linear * glm::dvec3(glm::vec3(bind.tangent));
+        t -= glm::dvec3(out.normal) * glm::dot(glm::dvec3(out.normal), t);
+        const double tangentLength = glm::length(t);
+        if (tangentLength > 1e-12 && std::isfinite(tangentLength))
+            out.tangent = glm::vec4(glm::vec3(t / tangentLength), bind.tangent.w);
     }
     return true;
 }
@@ -163,9 +196,8 @@ bool bakePose(const MeshRig& rig, const MeshPose& pose, Reporter& report, MeshAs
     std::vector<glm::dmat4> worlds;
     std::vector<NodeState> states;
     evaluate(rig, pose, worlds, states);
-    MeshAsset baked; // only its primitives are filled
+    MeshAsset baked; // only its primitives and joint matrices are filled
     RigPrimitive scratch;
-    std::vector<glm::dmat4> jointMatrices;
     for (const int n : rig.instances) {
         const RigNode& node = rig.nodes[std::size_t(n)];
         const RigMesh& mesh = rig.meshes[std::size_t(node.mesh)];
@@ -176,11 +208,15 @@ bool bakePose(const MeshRig& rig, const MeshPose& pose, Reporter& report, MeshAs
                                             : !node.weights.empty() ? node.weights
                                                                     : mesh.weights;
         const bool skin = node.skin >= 0 && std::size_t(node.skin) < rig.skins.size();
+        const std::size_t jointBase = baked.jointMatrices.size();
+        std::size_t jointCount = 0;
         if (skin) {
             const RigSkin& s = rig.skins[std::size_t(node.skin)];
-            jointMatrices.resize(s.joints.size());
+            jointCount = s.joints.size();
+            baked.jointMatrices.push_back(glm::mat4(worlds[std::size_t(n)]));
             for (std::size_t j = 0; j < s.joints.size(); ++j)
-                jointMatrices[j] = worlds[std::size_t(s.joints[j])] * s.inverseBind[j];
+                baked.jointMatrices.push_back(
+                    glm::mat4(worlds[std::size_t(s.joints[j])] * s.inverseBind[j]));
         }
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const RigPrimitive& primitive = mesh.primitives[p];
@@ -193,19 +229,26 @@ bool bakePose(const MeshRig& rig, const MeshPose& pose, Reporter& report, MeshAs
                 scratch = morphed(primitive, weights);
                 source = &scratch;
             }
-            glm::dmat4 world = worlds[std::size_t(n)];
             if (skin && !primitive.joints[0].empty()) {
+                // Baked in the skinned mesh's own space (the bind pose), then skinned.
+                if (!bakePrimitive(*source, glm::dmat4(1.0), pointer, report, baked)) return false;
+                MeshPrimitive& out = baked.primitives.back();
+                out.bindVertices = out.vertices;
+                out.skin = skinVerticesOf(primitive);
+                out.jointBase = int(jointBase);
+                out.morphed = !primitive.targets.empty();
                 const std::string primPointer =
                     "/meshes/" + std::to_string(node.mesh) + "/primitives/" + std::to_string(p);
-                if (!skinned(*source, jointMatrices, world, primPointer, report, scratch))
+                if (!skinVertices(out, baked.jointMatrices, jointCount, primPointer, report))
                     return false;
-                source = &scratch;
-                world = glm::dmat4(1.0);
+                continue;
             }
-            if (!bakePrimitive(*source, world, pointer, report, baked)) return false;
+            if (!bakePrimitive(*source, worlds[std::size_t(n)], pointer, report, baked))
+                return false;
         }
     }
     asset.primitives = std::move(baked.primitives);
+    asset.jointMatrices = std::move(baked.jointMatrices);
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const MeshPrimitive& p : asset.primitives)
         for (const MeshVertex& v : p.vertices) {

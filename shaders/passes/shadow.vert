@@ -1,6 +1,9 @@
 #version 450 core
 // Shadow pass vertex shader: mesh vertices into one shadow view's clip space, with what the
-// alpha test of MASK and BLEND materials needs (texture coordinates, vertex alpha).
+// alpha test of MASK and BLEND materials needs (texture coordinates, vertex alpha); skinned
+// primitives skinned first.
+#include "common/skinning.glsl"
+
 layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec2 inUv1;
@@ -17,5 +20,6 @@ void main() {
     vUv = inUv;
     vUv1 = inUv1;
     vAlpha = inColor.a;
-    gl_Position = uLightViewProjection * (uModel * vec4(inPosition, 1.0));
+    vec3 position = skinned() ? (skinMatrix() * vec4(inPosition, 1.0)).xyz : inPosition;
+    gl_Position = uLightViewProjection * (uModel * vec4(position, 1.0));
 }

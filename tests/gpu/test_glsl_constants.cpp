@@ -49,6 +49,7 @@ std::vector<Expected> expectedConstants() {
         {"SHADOW_VIEW_BINDING", std::to_string(kShadowViewBinding)},
         {"SDF_DATA_BINDING", std::to_string(kSdfDataBinding)},
         {"MARCH_STATISTICS_BINDING", std::to_string(kMarchStatisticsBinding)},
+        {"JOINT_MATRIX_BINDING", std::to_string(kJointMatrixBinding)},
         {"FRAME_BINDING", std::to_string(kFrameBinding)},
         {"SDF_PROGRAM_UNIFORM_BINDING", std::to_string(kSdfProgramUniformBinding)},
         {"SKY_IMAGE_UNIT", std::to_string(kSkyImageUnit)},

@@ -23,6 +23,7 @@ enum SsboBinding : unsigned {
     kSdfDataBinding = 4,         // SdfProgram::data (shaders/common/sdf_scene.glsl)
     kMarchStatisticsBinding = 5, // fragments that marched (shaders/common/march_statistics.glsl)
     kSdfCellBinding = 6,         // the cell table and programs (shaders/common/sdf_cells.glsl)
+    kJointMatrixBinding = 7,     // a mesh's joint matrices (shaders/common/skinning.glsl)
 };
 
 // Uniform block binding points: the frame (shaders/common/frame.glsl) and the program buffer's

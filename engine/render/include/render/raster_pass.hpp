@@ -36,8 +36,9 @@ class RasterPass {
                        const GpuMeshPrimitive& primitive) const;
 
     gl::Program program_;
-    GLint model_ = -1, normalMatrix_ = -1, baseColorFactor_ = -1, metallicRoughness_ = -1,
-          emissive_ = -1, texCoord_ = -1, uvTransform_ = -1, alpha_ = -1, objectId_ = -1;
+    GLint model_ = -1, normalMatrix_ = -1, jointBase_ = -1, baseColorFactor_ = -1,
+          metallicRoughness_ = -1, emissive_ = -1, texCoord_ = -1, uvTransform_ = -1, alpha_ = -1,
+          objectId_ = -1;
 };
 
 } // namespace rmsc

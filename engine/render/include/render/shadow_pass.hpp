@@ -27,7 +27,8 @@ class ShadowPass {
 
   private:
     gl::Program program_;
-    GLint model_ = -1, lightViewProjection_ = -1, alphaTest_ = -1, uvTransform_ = -1;
+    GLint model_ = -1, lightViewProjection_ = -1, alphaTest_ = -1, uvTransform_ = -1,
+          jointBase_ = -1;
     gl::Texture maps_;
     gl::Framebuffer framebuffer_;
     int size_ = 0, layers_ = 0;

@@ -106,6 +106,15 @@ inline std::size_t indicesPerElement(PrimitiveMode mode) {
     return mode == PrimitiveMode::Triangles ? 3 : mode == PrimitiveMode::Lines ? 2 : 1;
 }
 
+// A skinned vertex's four joints and weights of each set (JOINTS_0 / WEIGHTS_0, JOINTS_1 /
+// WEIGHTS_1; zero weights for a set the file lacks). Joints index the skin's joints.
+struct MeshSkinVertex {
+    glm::uvec4 joints0{0u};
+    glm::uvec4 joints1{0u};
+    glm::vec4 weights0{0.0f};
+    glm::vec4 weights1{0.0f};
+};
+
 // Triangles, line segments or points in the asset's root space (node transforms, morph weights
 // and skins of its pose applied), always indexed. Lines and points without NORMAL have zero
 // normals (nothing to compute them from).
@@ -114,6 +123,14 @@ struct MeshPrimitive {
     std::vector<std::uint32_t> indices; // indicesPerElement(mode) per element
     PrimitiveMode mode = PrimitiveMode::Triangles;
     int material = -1; // index into MeshAsset::materials, -1 for the glTF default material
+    // Skinned primitives only (empty otherwise), for skinning on the GPU: the vertices before
+    // any joint moves them (morphed, in the skinned mesh's space: the bind pose), each one's
+    // joints and weights, and where its node's matrices start in MeshAsset::jointMatrices.
+    // `vertices` are these skinned on the CPU with the same matrices (what picking reads).
+    std::vector<MeshVertex> bindVertices;
+    std::vector<MeshSkinVertex> skin;
+    int jointBase = -1;
+    bool morphed = false; // bindVertices change with the pose (the primitive has morph targets)
 };
 
 struct MeshRig; // scene/mesh_rig.hpp
@@ -127,6 +144,10 @@ struct MeshAsset {
     std::vector<MeshMaterial> materials;
     std::vector<Image> images;
     std::vector<Light> lights; // KHR_lights_punctual lights, in the asset's root space
+    // Per skinned node of the pose, from MeshPrimitive::jointBase: the node's world matrix (for
+    // vertices whose weights are all zero), then world(joint) * inverseBindMatrix for each of
+    // its skin's joints (at most limits::kGltfJoints). Empty without skins.
+    std::vector<glm::mat4> jointMatrices;
     glm::vec3 boundsMin{0.0f}; // axis-aligned bounds of all primitives
     glm::vec3 boundsMax{0.0f};
 };

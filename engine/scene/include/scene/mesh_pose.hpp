@@ -1,5 +1,6 @@
 // Posing a loaded glTF file: one of its animations at a time, with its morph weights and skins,
-// baked into the asset's primitives, which every pass (raster, shadow, picking) draws.
+// baked into the asset's primitives (what picking reads), and the joint matrices the raster and
+// shadow passes skin the bind vertices of skinned primitives with.
 #pragma once
 
 #include "core/diagnostics.hpp"
@@ -25,9 +26,11 @@ struct MeshPose {
 // The world matrix of every node of the rig at the pose.
 std::vector<glm::dmat4> poseNodeWorlds(const MeshRig& rig, const MeshPose& pose);
 
-// Bakes the pose into asset.primitives and the bounds; the primitives keep their order, count
-// and indices (only the vertices change). Returns false, with the problem in `diagnostics` and
-// the asset unchanged, when the animation does not exist or the pose makes positions infinite.
+// Bakes the pose into asset.primitives, asset.jointMatrices and the bounds; the primitives keep
+// their order, count and indices (only the vertices, and bind vertices of morphed skinned
+// primitives, change), and the joint matrices their count. Returns false, with the problem in
+// `diagnostics` and the asset unchanged, when the animation does not exist or the pose makes
+// positions infinite.
 bool poseMeshAsset(MeshAsset& asset, const MeshPose& pose, Diagnostics& diagnostics);
 
 // The animation given by name or by index ("2"); nullopt with `why` saying which exist.
