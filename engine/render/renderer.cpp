@@ -130,8 +130,8 @@ void limitRows(const RenderRows* rows, int begin, int end, int width) {
 
 const SdfPasses& Renderer::beginFrame(const GpuScene& scene, const FrameCamera& frameCamera,
                                       bool zeroToOneDepth, const RenderSettings& settings,
-                                      int width, int height,
-                                      std::vector<const ShellPass*>& shells) {
+                                      int width, int height, std::vector<const ShellPass*>& shells,
+                                      bool drawShadowMaps) {
     std::string error;
     if (!prepare(scene, error)) throw std::runtime_error("the SDF shaders do not build: " + error);
     const SdfPasses& sdf = sdfPasses_.find(scene.sdfMap)->second;
@@ -155,7 +155,7 @@ const SdfPasses& Renderer::beginFrame(const GpuScene& scene, const FrameCamera& 
 
     glDisable(GL_SCISSOR_TEST);
     glBeginQuery(GL_TIME_ELAPSED, timers_[std::size_t(Pass::Shadow)].id());
-    shadow_.draw(scene, shells);
+    if (drawShadowMaps) shadow_.draw(scene, shells);
     glEndQuery(GL_TIME_ELAPSED);
     glBindTextureUnit(kShadowMapUnit, shadow_.maps().id());
     glBindTextureUnit(kSkyImageUnit, scene.skyImage.id());
@@ -176,7 +176,8 @@ void Renderer::render(const GpuScene& scene, const Camera& camera, const RenderS
     const int height = targets.display.height;
     const FrameCamera frameCamera = makeFrameCamera(camera, width, height);
     std::vector<const ShellPass*> shells;
-    const SdfPasses& sdf = beginFrame(scene, frameCamera, false, settings, width, height, shells);
+    const SdfPasses& sdf = beginFrame(scene, frameCamera, false, settings, width, height, shells,
+                                      !(rows && rows->keepShadowMaps));
 
     auto timed = [this](Pass pass, auto&& draw) {
         glBeginQuery(GL_TIME_ELAPSED, timers_[std::size_t(pass)].id());

@@ -40,6 +40,7 @@ bool ViewRenderer::useShaders(ShaderFiles files, std::string& error) {
     if (newDisplay) newGizmos = LightGizmoPass::create(files, error);
     if (!newRenderer || !newDisplay || !newGizmos) return false;
     renderer_ = std::move(newRenderer);
+    shadowMapsDrawn_ = false;
     renderer_->setGroundGrid(true);
     display_ = std::move(newDisplay);
     gizmos_ = std::move(newGizmos);
@@ -132,6 +133,7 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
         const auto t0 = std::chrono::steady_clock::now();
         if (scale >= 1.0f) { // the whole image fits the budget
             renderer_->render(*gpuScene_, view.camera, view.scene->render, *full_);
+            shadowMapsDrawn_ = true;
             glFinish();
             lastRenderMilliseconds_ = millisecondsSince(t0);
             refinement_.finish(vh, lastRenderMilliseconds_);
@@ -144,6 +146,7 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
             if (!preview_ || preview_->display.width != tw || preview_->display.height != th)
                 preview_ = createFrameTargets(tw, th);
             renderer_->render(*gpuScene_, view.camera, view.scene->render, *preview_);
+            shadowMapsDrawn_ = true;
             glFinish();
             lastRenderMilliseconds_ = millisecondsSince(t0);
             previewScale_ = scale;
@@ -153,9 +156,12 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
         }
     } else if (!refinement_.done()) {
         const editor::RefineBand band = refinement_.nextBand(budgetMilliseconds, refineAll);
-        const RenderRows rows{band.begin, band.end, band.postBegin, band.postEnd};
+        // The render that started this refinement (or the band before) drew the shadow maps
+        // for this scene; a new renderer has none yet.
+        const RenderRows rows{band.begin, band.end, band.postBegin, band.postEnd, shadowMapsDrawn_};
         const auto t0 = std::chrono::steady_clock::now();
         renderer_->render(*gpuScene_, view.camera, view.scene->render, *full_, &rows);
+        shadowMapsDrawn_ = true;
         glFinish();
         lastRenderMilliseconds_ = millisecondsSince(t0);
         refinement_.rendered(band, lastRenderMilliseconds_);

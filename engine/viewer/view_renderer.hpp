@@ -112,7 +112,9 @@ class ViewRenderer {
     std::optional<Renderer> renderer_;
     std::optional<DisplayPass> display_;
     std::optional<LightGizmoPass> gizmos_;
-    std::optional<GpuScene> gpuScene_;      // what is drawn
+    std::optional<GpuScene> gpuScene_; // what is drawn
+    bool shadowMapsDrawn_ = false;     // renderer_'s shadow maps hold gpuScene_'s (its content
+                                       // changes only with a new revision, which renders whole)
     std::optional<PreparedScene> prepared_; // last scene that compiled (the newest), its SDF
                                             // without the bounding hierarchy (generated code's)
     SdfProgram boundedSdf_;                 // the same SDF with it, what the interpreter runs

@@ -37,10 +37,13 @@ FrameTargets createFrameTargets(int width, int height);
 // viewer's progressive refinement): [begin, end) go through every pass but the post pass,
 // [postBegin, postEnd) through the post pass; `begin` and `end` on multiples of the cone
 // pass's tile size (kConeTileSize) unless `end` is the frame's height. Rows outside keep what
-// they held. The shadow maps are drawn whole each time.
+// they held. The shadow maps are drawn whole, unless `keepShadowMaps`: the caller knows the
+// last render of this renderer drew them for the same scene (they depend on the scene alone:
+// its casters and lights, not the camera), so a band of a refinement does not draw them again.
 struct RenderRows {
     int begin = 0, end = 0;
     int postBegin = 0, postEnd = 0;
+    bool keepShadowMaps = false;
 };
 
 enum class Pass { Raster, March, Post, Shadow, Shell, Cone, Grid, Blend, Count };
@@ -117,7 +120,8 @@ class Renderer {
     // pass. Returns the scene's SDF passes and its shells' passes.
     const SdfPasses& beginFrame(const GpuScene& scene, const FrameCamera& frameCamera,
                                 bool zeroToOneDepth, const RenderSettings& settings, int width,
-                                int height, std::vector<const ShellPass*>& shells);
+                                int height, std::vector<const ShellPass*>& shells,
+                                bool drawShadowMaps = true);
     void endFrame() const;
 
     ShaderFiles files_;
