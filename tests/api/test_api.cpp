@@ -18,6 +18,7 @@
 #include <cstring>
 #include <functional>
 #include <optional>
+#include <set>
 #include <vector>
 
 using namespace rmsc::api;
@@ -443,7 +444,12 @@ TEST(Api, SceneBuilderMakesTheSceneItsJsonGives) {
 // their defaults, and every operation they list builds.
 TEST(Api, SceneBuilderListsTheCatalogues) {
     const std::vector<ShapeInfo> shapes = SceneBuilder::shapes();
+    // A floor against an empty or truncated list (the catalogue holds more than twenty); each
+    // name once.
     ASSERT_GT(shapes.size(), 20u);
+    std::set<std::string> names;
+    for (const ShapeInfo& shape : shapes)
+        EXPECT_TRUE(names.insert(shape.name).second) << shape.name << " listed twice";
     EXPECT_EQ(shapes[0].name, "sphere");
     EXPECT_EQ(shapes[0].parameters.at(0).key, "radius");
     for (const ShapeInfo& shape : shapes) {
@@ -687,7 +693,8 @@ TEST(Api, DrawIntoWithHostLights) {
     const std::vector<int> hostLit = drawnSphere(scene, &host);
     const double sceneRed = sphereMean(sceneLit, id, 0), sceneGreen = sphereMean(sceneLit, id, 1);
     const double hostRed = sphereMean(hostLit, id, 0), hostGreen = sphereMean(hostLit, id, 1);
-    EXPECT_GT(hostRed - hostGreen, sceneRed - sceneGreen + 40.0)
+    // Measured on llvmpipe: red minus green 69.8 scene-lit, 127.2 host-lit (57.4 more).
+    EXPECT_GT(hostRed - hostGreen, sceneRed - sceneGreen + 50.0)
         << "scene-lit mean red " << sceneRed << " green " << sceneGreen << "; host-lit red "
         << hostRed << " green " << hostGreen;
     // Only the SDF pixels changed: the host's blue stays around the sphere.
@@ -697,13 +704,15 @@ TEST(Api, DrawIntoWithHostLights) {
     // No lights at all: only the ambient light, darker than either.
     const std::vector<Light> none;
     const std::vector<int> unlit = drawnSphere(scene, &none);
-    EXPECT_LT(sphereMean(unlit, id, 0) + 20.0, sceneRed);
+    // Measured: mean red 31.0 unlit against 154.8 scene-lit.
+    EXPECT_LT(sphereMean(unlit, id, 0) + 100.0, sceneRed);
 
     // The next call without host lights, and render(), are lit by the scene's lights again.
     EXPECT_EQ(differingPixels(drawnSphere(scene, nullptr), sceneLit, 0), 0);
     const Image rendered = renderer().render(scene, kWidth, kHeight, Aov::Color);
     const int centre = (kHeight / 2 * kWidth + kWidth / 2) * 3;
-    EXPECT_NEAR(pixel<std::uint8_t>(rendered, kWidth / 2, kHeight / 2), sceneLit[centre], 8);
+    // Measured: the same value (189); one step for rounding between the two paths.
+    EXPECT_NEAR(pixel<std::uint8_t>(rendered, kWidth / 2, kHeight / 2), sceneLit[centre], 1);
 }
 
 TEST(Api, BadHostLightsAreRefusedAsInAFile) {
