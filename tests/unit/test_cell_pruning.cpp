@@ -293,6 +293,30 @@ TEST(CellPruning, AnEditPrunedAgainEqualsAFullBuild) {
     EXPECT_GT(edits, 40);
 }
 
+// Builds the cells of `before` with a kept state, prunes them again for `after` (numbers
+// changed only) and checks the result against a full build of `after` at random points.
+struct Repruned {
+    SdfCellStatePtr state;
+    SdfCellGrid grid;
+    std::size_t fullCells = 0; // cells the full build of `before` pruned
+};
+
+Repruned expectRepruneEqualsAFullBuild(const Compiled& before, const Compiled& after, unsigned seed,
+                                       const std::string& what) {
+    const Aabb box = sdfContentBox(*before.scene.sdf);
+    Repruned r;
+    r.grid = buildSdfCells(before.program, box, {}, &r.state);
+    EXPECT_TRUE(r.state) << what;
+    if (!r.state) return r;
+    r.fullCells = r.grid.stats.prunedCells;
+    EXPECT_TRUE(repruneSdfCells(*r.state, after.program, r.grid)) << what;
+    EXPECT_GT(r.grid.stats.prunedCells, 0u) << what;
+    std::mt19937 rng(seed);
+    expectSameLists(r.grid, buildSdfCells(after.program, box), rng, what);
+    EXPECT_EQ(expectCellsAgree(after, r.grid, rng, 2000, what), 2000);
+    return r;
+}
+
 // One sphere of a grid of 400 moved: the cells around its old and new place are pruned again,
 // a small part of what a full build prunes; a change of structure is refused.
 TEST(CellPruning, MovingOneShapePrunesFewCellsAgain) {
@@ -308,25 +332,19 @@ TEST(CellPruning, MovingOneShapePrunesFewCellsAgain) {
     const std::optional<Compiled> c = compileText(gridText(0.0f), false);
     const std::optional<Compiled> moved = compileText(gridText(0.6f), false);
     ASSERT_TRUE(c && moved);
-    const Aabb box = sdfContentBox(*c->scene.sdf);
-    SdfCellStatePtr state;
-    SdfCellGrid grid = buildSdfCells(c->program, box, {}, &state);
-    ASSERT_TRUE(state);
-    const std::size_t fullCells = grid.stats.prunedCells;
-    ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
-    EXPECT_GT(grid.stats.prunedCells, 0u);
-    EXPECT_LT(grid.stats.prunedCells * 6, fullCells);
-    std::mt19937 rng(9);
-    expectSameLists(grid, buildSdfCells(moved->program, box), rng, "moved");
-    EXPECT_EQ(expectCellsAgree(*moved, grid, rng, 2000, "moved"), 2000);
+    Repruned r = expectRepruneEqualsAFullBuild(*c, *moved, 9, "moved");
+    ASSERT_TRUE(r.state);
+    EXPECT_LT(r.grid.stats.prunedCells * 6, r.fullCells);
+    SdfCellState& state = *r.state;
+    SdfCellGrid& grid = r.grid;
     // Nothing changed: nothing pruned.
-    ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
+    ASSERT_TRUE(repruneSdfCells(state, moved->program, grid));
     EXPECT_EQ(grid.stats.prunedCells, 0u);
     // One sphere more is another structure.
     const std::optional<Compiled> more =
         compileText(gridText(0.0f).insert(14, R"({"shape": "sphere", "radius": 0.1}, )"), false);
     ASSERT_TRUE(more);
-    EXPECT_FALSE(repruneSdfCells(*state, more->program, grid));
+    EXPECT_FALSE(repruneSdfCells(state, more->program, grid));
 }
 
 // The same for a union of groups that have no floor (a twisted capsule in each): an edit must
@@ -348,19 +366,10 @@ TEST(CellPruning, MovingOneShapeAmongGroupsWithoutFloorsPrunesFewCellsAgain) {
     const std::optional<Compiled> c = compileText(groupsText(0.0f), false);
     const std::optional<Compiled> moved = compileText(groupsText(0.4f), false);
     ASSERT_TRUE(c && moved);
-    const Aabb box = sdfContentBox(*c->scene.sdf);
-    SdfCellStatePtr state;
-    SdfCellGrid grid = buildSdfCells(c->program, box, {}, &state);
-    ASSERT_TRUE(state);
-    const std::size_t fullCells = grid.stats.prunedCells;
-    ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
-    EXPECT_GT(grid.stats.prunedCells, 0u);
+    const Repruned r = expectRepruneEqualsAFullBuild(*c, *moved, 11, "moved group");
     // 19% of the cells here (the coarse cells hold every group); every cell, evaluating all
     // the groups everywhere.
-    EXPECT_LT(grid.stats.prunedCells * 4, fullCells);
-    std::mt19937 rng(11);
-    expectSameLists(grid, buildSdfCells(moved->program, box), rng, "moved group");
-    EXPECT_EQ(expectCellsAgree(*moved, grid, rng, 2000, "moved group"), 2000);
+    EXPECT_LT(r.grid.stats.prunedCells * 4, r.fullCells);
 }
 
 // Cells pruned from the tree without its bounding hierarchy, the hierarchy's program run outside
