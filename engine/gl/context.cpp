@@ -1,4 +1,5 @@
-// Headless contexts: EGL (EGL_MESA_platform_surfaceless + EGL_KHR_surfaceless_context) and
+// Headless contexts: EGL (EGL_MESA_platform_surfaceless, or the first EGL device of
+// EGL_EXT_platform_device where a driver lacks Mesa's platform, + EGL_KHR_surfaceless_context) and
 // OSMesa (a core-profile context made current on a 1x1 buffer); glad loads GL through each.
 #include "gl/context.hpp"
 
@@ -67,9 +68,14 @@ class EglContext final : public HeadlessContext {
         display_ = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         EGLint major = 0, minor = 0;
         if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor)) {
-            display_ = EGL_NO_DISPLAY;
-            error = "no surfaceless EGL display";
-            return false;
+            // Drivers without Mesa's surfaceless platform (NVIDIA's, for one) offer their GPUs as
+            // EGL devices (EGL_EXT_device_enumeration, EGL_EXT_platform_device).
+            display_ = firstDeviceDisplay(getPlatformDisplay);
+            if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor)) {
+                display_ = EGL_NO_DISPLAY;
+                error = "no surfaceless EGL display and no EGL device";
+                return false;
+            }
         }
         if (!eglBindAPI(EGL_OPENGL_API)) {
             error = "EGL cannot bind the desktop OpenGL API";
@@ -97,6 +103,16 @@ class EglContext final : public HeadlessContext {
     }
 
   private:
+    static EGLDisplay firstDeviceDisplay(PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay) {
+        auto queryDevices =
+            reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        if (!queryDevices) return EGL_NO_DISPLAY;
+        EGLDeviceEXT devices[8];
+        EGLint count = 0;
+        if (!queryDevices(8, devices, &count) || count < 1) return EGL_NO_DISPLAY;
+        return getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[0], nullptr);
+    }
+
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
     bool secondary_ = false;

@@ -4,13 +4,20 @@
 #include <algorithm>
 #include <cstring>
 #include <initializer_list>
+#include <vector>
 
 namespace rmsc {
 namespace {
 
-std::optional<gl::Shader> compile(const ShaderFiles& files, GLenum stage, std::string_view path,
-                                  std::string_view defines, std::string& error) {
-    const std::optional<AssembledShader> source = assembleShader(files, path, defines, error);
+struct CompiledShader {
+    gl::Shader shader;
+    AssembledShader source; // for the link log
+    const char* stage;      // as NVIDIA's link log heads its part: "Vertex", "Fragment"...
+};
+
+std::optional<CompiledShader> compile(const ShaderFiles& files, GLenum stage, std::string_view path,
+                                      std::string_view defines, std::string& error) {
+    std::optional<AssembledShader> source = assembleShader(files, path, defines, error);
     if (!source) return std::nullopt;
     gl::Shader shader(glCreateShader(stage));
     const char* text = source->text.c_str();
@@ -27,15 +34,18 @@ std::optional<gl::Shader> compile(const ShaderFiles& files, GLenum stage, std::s
         error = "shader compile error in " + std::string(path) + ":\n" + mapShaderLog(*source, log);
         return std::nullopt;
     }
-    return shader;
+    const char* name = stage == GL_VERTEX_SHADER     ? "Vertex"
+                       : stage == GL_FRAGMENT_SHADER ? "Fragment"
+                                                     : "Compute";
+    return CompiledShader{std::move(shader), std::move(*source), name};
 }
 
 // Links the compiled `shaders` into a program; on failure names `what` in `error`.
-std::optional<gl::Program> link(std::initializer_list<const gl::Shader*> shaders,
+std::optional<gl::Program> link(std::initializer_list<const CompiledShader*> shaders,
                                 const std::string& what, std::string& error) {
     gl::Program program(glCreateProgram());
-    for (const gl::Shader* shader : shaders)
-        glAttachShader(program.id(), shader->id());
+    for (const CompiledShader* shader : shaders)
+        glAttachShader(program.id(), shader->shader.id());
     glLinkProgram(program.id());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
@@ -44,11 +54,15 @@ std::optional<gl::Program> link(std::initializer_list<const gl::Shader*> shaders
         glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
         std::string log(std::size_t(std::max(length, 1)), '\0');
         glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-        error = "shader link error (" + what + "): " + log.c_str();
+        log.resize(std::strlen(log.c_str()));
+        std::vector<ShaderStageSource> stages;
+        for (const CompiledShader* shader : shaders)
+            stages.push_back({shader->stage, &shader->source});
+        error = "shader link error (" + what + "): " + mapLinkLog(stages, log);
         return std::nullopt;
     }
-    for (const gl::Shader* shader : shaders)
-        glDetachShader(program.id(), shader->id());
+    for (const CompiledShader* shader : shaders)
+        glDetachShader(program.id(), shader->shader.id());
     return program;
 }
 
@@ -56,10 +70,10 @@ std::optional<gl::Program> link(std::initializer_list<const gl::Shader*> shaders
 
 std::optional<gl::Program> buildProgram(const ShaderFiles& files, const ProgramDesc& desc,
                                         std::string& error) {
-    std::optional<gl::Shader> vertex =
+    std::optional<CompiledShader> vertex =
         compile(files, GL_VERTEX_SHADER, desc.vertexPath, desc.defines, error);
     if (!vertex) return std::nullopt;
-    std::optional<gl::Shader> fragment =
+    std::optional<CompiledShader> fragment =
         compile(files, GL_FRAGMENT_SHADER, desc.fragmentPath, desc.defines, error);
     if (!fragment) return std::nullopt;
     return link({&*vertex, &*fragment},
@@ -69,7 +83,7 @@ std::optional<gl::Program> buildProgram(const ShaderFiles& files, const ProgramD
 std::optional<gl::Program> buildComputeProgram(const ShaderFiles& files,
                                                std::string_view computePath,
                                                std::string_view defines, std::string& error) {
-    std::optional<gl::Shader> compute =
+    std::optional<CompiledShader> compute =
         compile(files, GL_COMPUTE_SHADER, computePath, defines, error);
     if (!compute) return std::nullopt;
     return link({&*compute}, std::string(computePath), error);

@@ -132,4 +132,21 @@ std::string mapShaderLog(const AssembledShader& shader, std::string_view log) {
     return out;
 }
 
+std::string mapLinkLog(std::span<const ShaderStageSource> stages, std::string_view log) {
+    const AssembledShader* current = stages.size() == 1 ? stages[0].source : nullptr;
+    std::string out;
+    std::size_t start = 0;
+    while (start < log.size()) {
+        std::size_t end = log.find('\n', start);
+        if (end == std::string_view::npos) end = log.size();
+        const std::string_view line = log.substr(start, end - start);
+        for (const ShaderStageSource& stage : stages)
+            if (line.starts_with(std::string(stage.stage) + " info")) current = stage.source;
+        out += current ? mapShaderLog(*current, line) : std::string(line);
+        if (end < log.size()) out += '\n';
+        start = end + 1;
+    }
+    return out;
+}
+
 } // namespace rmsc

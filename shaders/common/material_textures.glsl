@@ -113,12 +113,13 @@ vec3 triplanarNormal(GpuMaterialTexture tex, vec3 q, vec3 n, float localFootprin
 
 bool materialHasTextures(uint m) {
     if (m >= uint(materials.length())) return false;
-    return materials[m].baseColorTexture.slot >= 0 || materials[m].normalTexture.slot >= 0 ||
-           materials[m].roughnessTexture.slot >= 0;
+    GpuMaterial material = materialAt(m);
+    return material.baseColorTexture.slot >= 0 || material.normalTexture.slot >= 0 ||
+           material.roughnessTexture.slot >= 0;
 }
 
 bool materialHasNormalTexture(uint m) {
-    return m < uint(materials.length()) && materials[m].normalTexture.slot >= 0;
+    return m < uint(materials.length()) && materialAt(m).normalTexture.slot >= 0;
 }
 
 // Applies material m's textures at local point q (local unit normal n; a pixel covers
@@ -127,7 +128,7 @@ bool materialHasNormalTexture(uint m) {
 void applyMaterialTextures(uint m, vec3 q, float localFootprint, inout vec3 n,
                            inout vec3 baseColor, inout float roughness) {
     if (m >= uint(materials.length())) return;
-    GpuMaterial material = materials[m];
+    GpuMaterial material = materialAt(m);
     if (material.baseColorTexture.slot >= 0)
         baseColor *= triplanarSample(material.baseColorTexture, q, n, localFootprint).rgb;
     if (material.roughnessTexture.slot >= 0)

@@ -36,6 +36,14 @@ layout(std430, binding = MATERIAL_BINDING) readonly buffer MaterialBuffer {
     GpuMaterial materials[];
 };
 
+// materials[m], for an m the caller has checked is in range. The index is clamped all the
+// same: where m is a constant past the end (the empty surface's 0xffffffffu), NVIDIA's compiler
+// rejects the inlined materials[m] as "array index out of bounds", even in a branch that never
+// runs.
+GpuMaterial materialAt(uint m) {
+    return materials[min(m, uint(materials.length()) - 1u)];
+}
+
 layout(std430, binding = LIGHT_BINDING) readonly buffer LightBuffer {
     uvec4 lightHeader; // x = light count
     GpuLight lights[];

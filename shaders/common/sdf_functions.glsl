@@ -148,10 +148,11 @@ SdfSurface sdfMaterialSurface(float d, uint objectId, uint m, vec3 localPoint) {
     s.material = m;
     s.localPoint = localPoint;
     if (m < uint(materials.length())) {
-        s.baseColor = materials[m].baseColorMetallic.rgb;
-        s.metallic = materials[m].baseColorMetallic.a;
-        s.emissive = materials[m].emissiveRoughness.rgb;
-        s.roughness = materials[m].emissiveRoughness.a;
+        GpuMaterial material = materialAt(m);
+        s.baseColor = material.baseColorMetallic.rgb;
+        s.metallic = material.baseColorMetallic.a;
+        s.emissive = material.emissiveRoughness.rgb;
+        s.roughness = material.emissiveRoughness.a;
     } else { // the defaults of Material (engine/core/include/core/material.hpp)
         s.baseColor = vec3(0.8);
         s.metallic = 0.0;

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,5 +35,14 @@ std::optional<AssembledShader> assembleShader(const ShaderFiles& files, std::str
 
 // Rewrites "N:LINE(COL): ..." and "N(LINE) : ..." in a GLSL info log to "FILE:LINE: ...".
 std::string mapShaderLog(const AssembledShader& shader, std::string_view log);
+
+// The same for a program's link log. Drivers that compile at link time (NVIDIA's) report each
+// stage's errors under a heading ("Vertex info", "Fragment info", "Compute info") in that
+// stage's numbering; a log of one stage needs no heading.
+struct ShaderStageSource {
+    std::string_view stage; // "Vertex", "Fragment", "Compute"
+    const AssembledShader* source;
+};
+std::string mapLinkLog(std::span<const ShaderStageSource> stages, std::string_view log);
 
 } // namespace rmsc
