@@ -5,6 +5,8 @@
 #include "core/limits.hpp"
 #include "export/mesh_writers.hpp"
 #include "export/sdf_export.hpp"
+#include "gl/context.hpp"
+#include "render/gpu_field_sampler.hpp"
 #include "scene/scene_json.hpp"
 
 #include <atomic>
@@ -33,6 +35,10 @@ const OptionSpec kOptions[] = {
      "how far, in voxels, the adaptive octree may move the surface where it joins cells "
      "(default 0.1; 0: one vertex per cell)"},
     {"--threads", nullptr, "N", "sampling threads (default: every core)"},
+    {"--sampler", nullptr, "S",
+     "cpu | gpu: what samples the grid's blocks (default cpu; gpu: a compute shader, "
+     "docs/export.md)"},
+    {"--backend", nullptr, "NAME", "with --sampler gpu: auto | egl | osmesa (default auto)"},
     kSandboxOption,
 };
 
@@ -78,7 +84,7 @@ const CommandSpec kExportSpec = {
     "SCENE -o OUT.glb",
     "export the SDF tree or one node as a triangle mesh (glTF, OBJ, STL)",
     "rmsc export SCENE -o OUT.glb|.gltf|.obj|.stl [--node POINTER] [--voxel SIZE | "
-    "--resolution N] [--bounds X0,Y0,Z0,X1,Y1,Z1] [--tolerance T]",
+    "--resolution N] [--bounds X0,Y0,Z0,X1,Y1,Z1] [--tolerance T] [--sampler cpu|gpu]",
     "Samples the SDF tree of SCENE (or the node at --node, in its place in the scene) on a\n"
     "grid and extracts a closed, consistently oriented mesh by dual contouring, so edges and\n"
     "corners stay sharp; an adaptive octree joins the cells of flat regions, so they take few\n"
@@ -154,6 +160,36 @@ int runExport(const ParsedArgs& args) {
             return kExitUsage;
         }
     }
+    const std::string samplerName = args.get("--sampler", "cpu");
+    if (samplerName != "cpu" && samplerName != "gpu") {
+        std::fprintf(stderr, "rmsc export: --sampler: expected cpu or gpu, got '%s'\n",
+                     samplerName.c_str());
+        return kExitUsage;
+    }
+    GlBackend backend = GlBackend::Auto;
+    if (!parseGlBackend(args.get("--backend", "auto"), backend)) {
+        std::fprintf(stderr, "rmsc export: --backend: expected auto, egl or osmesa, got '%s'\n",
+                     args.get("--backend", "").c_str());
+        return kExitUsage;
+    }
+    // The GPU sampler's context and shader, made when the node is compiled; a failure to make
+    // either is an error, not a silent fall back to the CPU.
+    std::unique_ptr<HeadlessContext> context;
+    std::optional<GpuFieldSampler> sampler;
+    std::string samplerError;
+    if (samplerName == "gpu")
+        settings.latticeSampler = [&](const SdfProgram& program) -> SdfLattice {
+            context = createHeadlessContext(backend, false, samplerError);
+            if (!context) return {};
+            sampler = GpuFieldSampler::create(program, samplerError);
+            if (!sampler) return {};
+            return [&](glm::vec3 origin, float spacing, const glm::ivec3* starts, std::size_t count,
+                       int side, float* out) {
+                if (sampler->sample(origin, spacing, starts, count, side, out)) return true;
+                samplerError = "a GL error while sampling";
+                return false;
+            };
+        };
     // The output's folder must exist and be writable before any sampling is spent on it.
     const std::filesystem::path folder =
         output.parent_path().empty() ? std::filesystem::path(".") : output.parent_path();
@@ -185,6 +221,13 @@ int runExport(const ParsedArgs& args) {
         std::signal(SIGINT, previous);
         return kExitBadInput;
     }
+    if (samplerName == "gpu" && !exported->cancelled && !exported->latticeSampled) {
+        std::signal(SIGINT, previous);
+        std::fprintf(stderr, "rmsc export: --sampler gpu: %s; nothing was written\n",
+                     samplerError.empty() ? "the GPU did not sample the grid"
+                                          : samplerError.c_str());
+        return kExitSystem;
+    }
     if (exported->cancelled || interrupted) {
         std::signal(SIGINT, previous);
         std::fprintf(stderr, "rmsc export: interrupted; %s was not written\n",
@@ -203,11 +246,11 @@ int runExport(const ParsedArgs& args) {
     const MeshTopology topology = meshTopology(exported->mesh);
     const glm::ivec3 cells = exported->grid.cells;
     std::printf("%s: %zu triangles, %zu vertices, %zu materials from %s (voxel %g, grid %dx%dx%d) "
-                "in %.2f s\n",
+                "in %.2f s (sampling %.2f s on the %s)\n",
                 output.string().c_str(), exported->mesh.triangles.size(),
                 exported->mesh.positions.size(), exported->materials.size(),
                 exported->pointer.c_str(), double(exported->grid.voxel), cells.x, cells.y, cells.z,
-                seconds);
+                seconds, exported->samplingSeconds, exported->latticeSampled ? "GPU" : "CPU");
     if (!topology.closedManifold())
         std::fprintf(stderr,
                      "rmsc export: warning: the mesh is not a closed 2-manifold everywhere "

@@ -13,6 +13,7 @@
 #include "quad_fans.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -111,13 +112,31 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
     };
     auto cornerPosition = [&](glm::ivec3 c) { return grid.origin + voxel * glm::vec3(c); };
 
+    const auto samplingStart = std::chrono::steady_clock::now();
     // Pass 1: which blocks may hold surface.
     std::vector<std::uint8_t> near(std::size_t(blockCount), 0);
     const float halfDiagonal = 0.5f * voxel * float(B) * std::sqrt(3.0f);
     // Chamfer operations make the field up to sqrt(2) steep ((a + b) / sqrt(2) where both
     // sides fall), so the half diagonal is scaled by that, plus half a cell for rounding.
     const float reach = std::sqrt(2.0f) * halfDiagonal + 0.5f * voxel;
-    if (!parallelFor(blockCount, threads, options.cancel, progress, 0.0, 0.05, [&](std::int64_t i) {
+    // The block centres as a lattice of spacing B cells, from the first block's centre.
+    const glm::vec3 firstCentre = grid.origin + 0.5f * voxel * float(B);
+    // With a lattice sampler, the centres in one call: a lattice of one point per block, its
+    // spacing a block, from the first block's centre.
+    const bool latticeCentres = field.lattice && [&] {
+        std::vector<glm::ivec3> starts(static_cast<std::size_t>(blockCount));
+        for (std::int64_t i = 0; i < blockCount; ++i)
+            starts[std::size_t(i)] = blockCoord(i);
+        std::vector<float> centres(static_cast<std::size_t>(blockCount));
+        if (!field.lattice(grid.origin + 0.5f * voxel * float(B), voxel * float(B), starts.data(),
+                           starts.size(), 1, centres.data()))
+            return false;
+        for (std::int64_t i = 0; i < blockCount; ++i)
+            near[std::size_t(i)] = std::abs(centres[std::size_t(i)]) <= reach ? 1 : 0;
+        return true;
+    }();
+    if (!latticeCentres &&
+        !parallelFor(blockCount, threads, options.cancel, progress, 0.0, 0.05, [&](std::int64_t i) {
             const glm::vec3 centre = cornerPosition(blockCoord(i) * B) + 0.5f * voxel * float(B);
             near[std::size_t(i)] = std::abs(field.distance(centre)) <= reach ? 1 : 0;
         })) {
@@ -157,18 +176,42 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
         return index < 0 ? nullptr : &block->hermite[std::size_t(index)];
     };
 
-    // Pass 2: the corners of the blocks near the surface.
+    // Pass 2: the corners of the blocks near the surface. With a lattice sampler, the blocks'
+    // corners are sampled in chunks of kLatticeChunk blocks, each chunk in one call.
+    constexpr std::int64_t kCornersPerBlock = kCornersPerSide * kCornersPerSide * kCornersPerSide;
+    constexpr std::int64_t kLatticeChunk = 4096;
+    bool latticeCorners = latticeCentres;
+    for (std::int64_t first = 0; latticeCorners && first < activeCount; first += kLatticeChunk) {
+        if (options.cancel && options.cancel->load()) {
+            result.cancelled = true;
+            return result;
+        }
+        const std::int64_t count = std::min(kLatticeChunk, activeCount - first);
+        std::vector<glm::ivec3> starts(static_cast<std::size_t>(count));
+        for (std::int64_t i = 0; i < count; ++i)
+            starts[std::size_t(i)] = active[std::size_t(first + i)].cell;
+        std::vector<float> corners(std::size_t(count * kCornersPerBlock));
+        latticeCorners = field.lattice(grid.origin, voxel, starts.data(), starts.size(),
+                                       kCornersPerSide, corners.data());
+        for (std::int64_t i = 0; latticeCorners && i < count; ++i) {
+            const float* c = corners.data() + i * kCornersPerBlock;
+            active[std::size_t(first + i)].corners.assign(c, c + kCornersPerBlock);
+        }
+        if (progress) progress(0.05 + 0.3 * double(first + count) / double(activeCount));
+    }
+    result.latticeSampled = latticeCorners;
     if (!parallelFor(
             activeCount, threads, options.cancel, progress, 0.05, 0.35, [&](std::int64_t i) {
                 Block& block = active[std::size_t(i)];
-                block.corners.resize(
-                    std::size_t(kCornersPerSide * kCornersPerSide * kCornersPerSide));
-                for (int z = 0; z <= B; ++z)
-                    for (int y = 0; y <= B; ++y)
-                        for (int x = 0; x <= B; ++x)
-                            block.corners[std::size_t(cornerIndex({x, y, z}))] =
-                                field.distance(cornerPosition(block.cell + glm::ivec3(x, y, z)));
-                block.evaluations += kCornersPerSide * kCornersPerSide * kCornersPerSide;
+                if (!latticeCorners) {
+                    block.corners.resize(std::size_t(kCornersPerBlock));
+                    for (int z = 0; z <= B; ++z)
+                        for (int y = 0; y <= B; ++y)
+                            for (int x = 0; x <= B; ++x)
+                                block.corners[std::size_t(cornerIndex({x, y, z}))] = field.distance(
+                                    cornerPosition(block.cell + glm::ivec3(x, y, z)));
+                }
+                block.evaluations += kCornersPerBlock;
                 block.cellConfig.assign(std::size_t(B * B * B), 0);
                 block.faceFlip.assign(std::size_t(B * B * B * 3), 0);
                 for (int z = 0; z < B; ++z)
@@ -191,6 +234,8 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
         result.cancelled = true;
         return result;
     }
+    result.samplingSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - samplingStart).count();
 
     // The flips of the checkerboard faces. A face whose two patch edges belong to one component
     // in both cells beside it would join the two cells' vertices by four triangles. Both patch

@@ -177,6 +177,7 @@ std::optional<ExportField> exportField(const Scene& scene, const std::string& no
         material = s.material < materials->size() ? s.material : fallback;
         color = s.baseColor;
     };
+    out.program = p;
     out.keepAlive = compiled;
     return out;
 }
@@ -230,6 +231,30 @@ std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& set
     }
     grid.cells = glm::ivec3(cellsWanted);
 
+    if (settings.latticeSampler) {
+        SdfLattice lattice = settings.latticeSampler(*field->program);
+        if (lattice && field->clipped) {
+            // The CPU's field is cut to the box (exportField): so is the sampler's.
+            const Aabb box = field->box;
+            field->field.lattice = [lattice, box](glm::vec3 origin, float spacing,
+                                                  const glm::ivec3* starts, std::size_t count,
+                                                  int side, float* out) {
+                if (!lattice(origin, spacing, starts, count, side, out)) return false;
+                for (std::size_t s = 0, i = 0; s < count; ++s)
+                    for (int z = 0; z < side; ++z)
+                        for (int y = 0; y < side; ++y)
+                            for (int x = 0; x < side; ++x, ++i)
+                                out[i] = std::max(
+                                    out[i],
+                                    boxDistance(box,
+                                                origin + spacing * glm::vec3(starts[s] +
+                                                                             glm::ivec3(x, y, z))));
+                return true;
+            };
+        } else {
+            field->field.lattice = std::move(lattice);
+        }
+    }
     DcOptions options;
     options.threads = settings.threads;
     options.maxTriangles = limits::kExportTriangles;
@@ -284,6 +309,8 @@ std::optional<SdfExport> exportSdf(const Scene& scene, const ExportSettings& set
     out.fannedQuads = result.fannedQuads;
     out.verticesMovedIn = result.verticesMovedIn;
     out.untangledLeft = result.selfIntersections;
+    out.samplingSeconds = result.samplingSeconds;
+    out.latticeSampled = result.latticeSampled;
     return out;
 }
 

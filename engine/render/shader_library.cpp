@@ -23,6 +23,8 @@ std::vector<GlslConstant> renderGlslConstants() {
         {"MARCH_STATISTICS_BINDING", unit(kMarchStatisticsBinding)},
         {"SDF_CELL_BINDING", unit(kSdfCellBinding)},
         {"JOINT_MATRIX_BINDING", unit(kJointMatrixBinding)},
+        {"FIELD_SAMPLE_START_BINDING", unit(kFieldSampleStartBinding)},
+        {"FIELD_SAMPLE_DISTANCE_BINDING", unit(kFieldSampleDistanceBinding)},
         {"FRAME_BINDING", unit(kFrameBinding)},
         {"SDF_PROGRAM_UNIFORM_BINDING", unit(kSdfProgramUniformBinding)},
         {"SKY_IMAGE_UNIT", unit(kSkyImageUnit)},

@@ -530,6 +530,16 @@ with tempfile.TemporaryDirectory() as tmp:
           len(counts) == 2 and counts[0] < counts[1], counts)
     expect("export bad tolerance", ["export", pawn, "-o", glb, "--tolerance", "-1"], 2,
            stderr_has=["--tolerance", "voxels >= 0"])
+    # The compute-shader sampler: the same mesh as the CPU's (the pawn's counts within 1%), and
+    # the summary says which sampled the grid.
+    gpu = expect("export pawn sampled on the GPU", ["export", pawn, "-o", glb, "--resolution", "32",
+                 "--sampler", "gpu"], 0, stdout_has=["triangles", "on the GPU"])
+    check("export pawn: the CPU sampled by default", "on the CPU" in r.stdout, r.stdout.strip())
+    gpu_count = re.search(r"(\d+) triangles", gpu.stdout)
+    check("export pawn: the GPU's mesh is the CPU's", gpu_count and counts and
+          abs(int(gpu_count.group(1)) - counts[0]) <= 0.01 * counts[0], (gpu.stdout, counts))
+    expect("export bad sampler", ["export", pawn, "-o", glb, "--sampler", "tpu"], 2,
+           stderr_has=["--sampler", "cpu or gpu"])
     expect("export a node to stl", ["export", os.path.join(SAMPLES, "scenes", "csg.json"), "--node",
            "/sdf/children/1", "-o", os.path.join(exports, "cut.stl"), "--voxel", "0.05"], 0,
            stdout_has=["from /sdf/children/1"])

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 
@@ -21,11 +22,20 @@ namespace rmsc {
 
 inline constexpr int kDcBlock = 8;
 
+// Distances on lattices of points at once (a GPU's compute shader, render/gpu_field_sampler.hpp):
+// for each start s, side^3 values at origin + spacing * (s + (x, y, z)), x fastest, then y, then
+// z, go to out (start after start). False when it failed.
+using SdfLattice = std::function<bool(glm::vec3 origin, float spacing, const glm::ivec3* starts,
+                                      std::size_t count, int side, float* out)>;
+
 // What is contoured: a distance (< 0 inside) and, at the vertices, the blended base colour and
 // the dominant material.
 struct SdfField {
     std::function<float(glm::vec3)> distance;
     std::function<void(glm::vec3, std::uint32_t& material, glm::vec3& color)> surface;
+    // Optional: the passes that sample whole blocks (their centres, their corners) use it; where
+    // it fails they call `distance`.
+    SdfLattice lattice;
 };
 
 // Cell (i, j, k) spans origin + voxel * [(i, j, k), (i + 1, j + 1, k + 1)]. The field must be
@@ -63,6 +73,8 @@ struct DcResult {
     std::int64_t fannedQuads = 0;       // quads made fans so they do not intersect others
     std::int64_t verticesMovedIn = 0;   // of fans that did, moved back into their cells
     std::int64_t selfIntersections = 0; // pairs of the uniform mesh's left intersecting
+    double samplingSeconds = 0.0; // the passes that sample the blocks (the centres, the corners)
+    bool latticeSampled = false;  // SdfField::lattice sampled them
 };
 
 DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& options = {});

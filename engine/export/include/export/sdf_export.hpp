@@ -10,6 +10,7 @@
 #include "export/export_mesh.hpp"
 #include "scene/scene.hpp"
 #include "sdf/bounds.hpp"
+#include "sdf/program.hpp"
 
 #include <atomic>
 #include <functional>
@@ -33,6 +34,9 @@ struct ExportSettings {
     std::optional<Aabb> bounds;    // world box: clips the content (needed for unbounded content)
     float tolerance = kExportDefaultTolerance; // the adaptive octree's, in voxels (0: off)
     int threads = 0;                           // 0: every core
+    // Optional: a lattice sampler for the compiled program (the GPU's, render/
+    // gpu_field_sampler.hpp), which then samples the blocks; an empty one: the CPU does.
+    std::function<SdfLattice(const SdfProgram&)> latticeSampler;
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;
 };
@@ -53,6 +57,8 @@ struct SdfExport {
     std::int64_t fannedQuads = 0;         // made fans so they do not intersect others
     std::int64_t verticesMovedIn = 0;     // of fans, moved towards their cells for the same
     std::int64_t untangledLeft = 0;       // intersecting pairs the untangling left
+    double samplingSeconds = 0.0;         // the block passes (DcResult::samplingSeconds)
+    bool latticeSampled = false;          // by settings.latticeSampler's sampler
     bool cancelled = false;               // stopped by settings.cancel: nothing else is set
 };
 
@@ -76,7 +82,8 @@ struct ExportField {
     bool clipped = false;
     std::string name, pointer;
     std::vector<Material> materials;       // every material the field may name (scene's + default)
-    std::shared_ptr<const void> keepAlive; // the compiled program the functions use
+    const SdfProgram* program = nullptr;   // the compiled node the functions evaluate
+    std::shared_ptr<const void> keepAlive; // which keeps it
 };
 std::optional<ExportField> exportField(const Scene& scene, const std::string& node,
                                        const std::optional<Aabb>& clip, Diagnostics& diagnostics);

@@ -20,10 +20,12 @@ enum SsboBinding : unsigned {
     kMaterialBinding = 1,
     kLightBinding = 2,
     kShadowViewBinding = 3,
-    kSdfDataBinding = 4,         // SdfProgram::data (shaders/common/sdf_scene.glsl)
-    kMarchStatisticsBinding = 5, // fragments that marched (shaders/common/march_statistics.glsl)
-    kSdfCellBinding = 6,         // the cell table and programs (shaders/common/sdf_cells.glsl)
-    kJointMatrixBinding = 7,     // a mesh's joint matrices (shaders/common/skinning.glsl)
+    kSdfDataBinding = 4,          // SdfProgram::data (shaders/common/sdf_scene.glsl)
+    kMarchStatisticsBinding = 5,  // fragments that marched (shaders/common/march_statistics.glsl)
+    kSdfCellBinding = 6,          // the cell table and programs (shaders/common/sdf_cells.glsl)
+    kJointMatrixBinding = 7,      // a mesh's joint matrices (shaders/common/skinning.glsl)
+    kFieldSampleStartBinding = 8, // lattice starts (shaders/passes/field_sample.comp)
+    kFieldSampleDistanceBinding = 9, // and the distances it writes
 };
 
 // Uniform block binding points: the frame (shaders/common/frame.glsl) and the program buffer's
