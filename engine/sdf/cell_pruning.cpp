@@ -941,6 +941,20 @@ void appendOutsideList(SdfCellGrid& grid, std::size_t instructions, std::uint32_
 
 } // namespace
 
+std::optional<SdfFieldFloor> sdfProgramFloor(const std::vector<GpuSdfInstruction>& code) {
+    ProgramTree tree;
+    if (code.empty() || !readTree(code, std::uint32_t(code.size()), tree) || tree.nodes.empty())
+        return std::nullopt;
+    for (const GpuSdfInstruction& in : code)
+        if (SdfOpcode(in.opcode) == SdfOpcode::BoundSkip ||
+            SdfOpcode(in.opcode) == SdfOpcode::SeedBest ||
+            SdfOpcode(in.opcode) == SdfOpcode::Accumulate)
+            return std::nullopt;
+    const NodeFloor root = nodeFloors(code, tree).back();
+    if (!root.valid || root.box.empty()) return std::nullopt;
+    return SdfFieldFloor{root.box, root.drop};
+}
+
 Aabb sdfContentBox(const SdfNode& root) {
     Aabb box;
     collectContent(root, glm::mat4(1.0f), box);

@@ -1,9 +1,12 @@
 // The bounding-volume hierarchy of the SDF compiler: the plain unions at the top of the planned
-// tree (sdf_plan.hpp) emitted as a hierarchy of their exact parts' boxes (BoundSkip, SeedBest,
-// Accumulate), so a point far from a part skips it and the value stays what it would be without.
+// tree (sdf_plan.hpp) emitted as a hierarchy of their exact parts' boxes, and of the boxes of
+// their smoothly united parts' floors (BoundSkip, SeedBest, Accumulate), so a point far from a
+// part skips it and the value stays what it would be without.
 #include "sdf_emit.hpp"
 
 #include "sdf/bounds.hpp"
+#include "sdf/cell_pruning.hpp"
+#include "sdf/operations.hpp"
 #include "sdf/primitives.hpp"
 
 #include <algorithm>
@@ -13,8 +16,10 @@ namespace rmsc::compiler {
 namespace {
 
 // Fewer parts than this at the top are evaluated as they are: box tests would cost more than
-// they save.
+// they save, unless one of them is large (a tree of thousands of smoothly united spheres over a
+// plane: two parts beside the plane, each skipped by the points far from it).
 constexpr std::size_t kMinBoundedParts = 4;
+constexpr std::size_t kLargePartInstructions = 16;
 
 // A part of the top union: a subtree whose value is united into the program's running best.
 struct UnionPart {
@@ -37,6 +42,34 @@ bool isExactPart(const PlannedNode& planned) {
     for (const PlannedNode& child : planned.children)
         if (!isExactPart(child)) return false;
     return true;
+}
+
+// A union of exact shapes whose seams may be smooth, chamfered or rounded: its value is at most
+// the minimum of its shapes' (each union operation's curve dips below the minimum, never
+// above), and at least distance(y, box) - drop outside the box of its floor (sdfProgramFloor),
+// where its surface lies. So a box test against that box grown by the drop in every direction
+// (a cube of half-size drop holds the ball of radius drop: the grown box is no farther than
+// distance - drop) skips it exactly, and the farthest point of that box bounds its value from
+// above (SeedBest), as for an exact part.
+bool isFlooredUnionPart(const PlannedNode& planned) {
+    const SdfNode& node = *planned.node;
+    if (!node.modifiers.empty() || planned.cut) return false;
+    if (!node.isGroup)
+        return (node.profile || primitiveSpec(node.primitive).exact) &&
+               isUniformScale(planned.world);
+    if (operationSpec(node.op).combination != SdfOpCombination::Union) return false;
+    for (const PlannedNode& child : planned.children)
+        if (!isFlooredUnionPart(child)) return false;
+    return true;
+}
+
+// The box a floored union part is tested against (see isFlooredUnionPart); empty without one.
+Aabb flooredPartBox(const PlannedNode& planned) {
+    std::vector<GpuSdfInstruction> body;
+    emit(planned, body);
+    const std::optional<SdfFieldFloor> floor = sdfProgramFloor(body);
+    if (!floor) return {};
+    return {floor->box.min - glm::vec3(floor->drop), floor->box.max + glm::vec3(floor->drop)};
 }
 
 // A group whose children are simply united: every child's value ends up in the minimum.
@@ -62,8 +95,12 @@ void collectParts(const PlannedNode& planned, std::vector<UnionPart>& parts) {
     const float fieldScale = float(planned.spaceScale * smallestScaleFactor(planned.parentWorld));
     const SdfBounds bounds = sdfNodeLocalBounds(*planned.node, fieldScale);
     UnionPart part{&planned, {}};
-    if (bounds.bounded && !bounds.box.empty() && isExactPart(planned))
-        part.box = transformAabb(bounds.box, glm::mat4(planned.world));
+    if (bounds.bounded && !bounds.box.empty()) {
+        if (isExactPart(planned))
+            part.box = transformAabb(bounds.box, glm::mat4(planned.world));
+        else if (planned.spaceScale == 1.0 && isFlooredUnionPart(planned))
+            part.box = flooredPartBox(planned);
+    }
     parts.push_back(part);
 }
 
@@ -143,7 +180,13 @@ void emitProgram(const PlannedNode& root, bool useBounds, std::vector<GpuSdfInst
     if (useBounds) collectParts(root, parts);
     const auto boxed = std::count_if(parts.begin(), parts.end(),
                                      [](const UnionPart& part) { return !part.box.empty(); });
-    if (std::size_t(boxed) < kMinBoundedParts) {
+    const bool large = std::any_of(parts.begin(), parts.end(), [](const UnionPart& part) {
+        if (part.box.empty()) return false;
+        std::vector<GpuSdfInstruction> body;
+        emit(*part.node, body);
+        return body.size() >= kLargePartInstructions;
+    });
+    if (std::size_t(boxed) < kMinBoundedParts && !large) {
         emit(root, out);
         return;
     }

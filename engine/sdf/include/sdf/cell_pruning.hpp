@@ -36,6 +36,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -101,6 +102,16 @@ struct SdfCellGrid {
     std::vector<GpuSdfInstruction> code; // program.instructions + the added ones
     SdfCellStats stats;
 };
+
+// A lower bound of a whole program's field from the boxes of its shapes (the floors cell
+// pruning drops subtrees by): at every point y outside `box` the field is at least
+// distance(y, box) - drop. nullopt when the program has none (a shape without an exact
+// formula or under a non-uniform scale, a point modifier, a bounding hierarchy).
+struct SdfFieldFloor {
+    Aabb box;
+    float drop = 0.0f;
+};
+std::optional<SdfFieldFloor> sdfProgramFloor(const std::vector<GpuSdfInstruction>& code);
 
 // The content box of a tree: the union of the world boxes of its bounded parts (unbounded
 // groups are looked into; the rest of an unbounded part is left out). Empty when nothing is
