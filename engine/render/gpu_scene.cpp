@@ -158,8 +158,15 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
     if (pruned) {
         GpuSdfCellHeader header;
         header.originSize = glm::vec4(grid.origin, grid.size);
-        header.info =
-            glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength, 0u);
+        // Every surface inside the grid's cube (a scene without planes or infinite
+        // repetitions): marches end where their rays leave it (common/sdf_cells.glsl).
+        const SdfBounds whole =
+            prepared.scene.sdf ? sdfNodeBounds(*prepared.scene.sdf) : SdfBounds{false, {}, ""};
+        const bool inside = whole.bounded && !whole.box.empty() &&
+                            glm::all(glm::greaterThanEqual(whole.box.min, grid.origin)) &&
+                            glm::all(glm::lessThanEqual(whole.box.max, grid.origin + grid.size));
+        header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
+                                 inside ? 1u : 0u);
         std::vector<unsigned char> bytes(sizeof header + grid.words.size() * sizeof(std::uint32_t));
         std::memcpy(bytes.data(), &header, sizeof header);
         std::memcpy(bytes.data() + sizeof header, grid.words.data(),

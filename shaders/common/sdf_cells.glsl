@@ -11,9 +11,26 @@
 
 layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
     vec4 sdfCellOrigin; // xyz = the grid cube's corner, w = its edge
-    uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the whole program's list
+    uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the whole program's list, w = 1 when
+                        // every surface lies inside the grid's cube
     uint sdfCellWords[];
 };
+
+// How far along the ray ro + t rd a surface can be: where the ray leaves the grid's cube when
+// every surface lies inside it (nothing is outside to meet: 0 when the ray misses the cube), else
+// tMax. The march stops there instead of running the whole program outside the grid until
+// tMax (the slab test: Kay and Kajiya, "Ray tracing complex scenes", SIGGRAPH 1986).
+#define SDF_HAS_RAY_END 1
+float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
+    if (sdfCellInfo.x == 0u || sdfCellInfo.w == 0u) return tMax;
+    vec3 d = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
+    vec3 t0 = (sdfCellOrigin.xyz - ro) / d;
+    vec3 t1 = (sdfCellOrigin.xyz + vec3(sdfCellOrigin.w) - ro) / d;
+    vec3 near = min(t0, t1), far = max(t0, t1);
+    float enter = max(max(near.x, near.y), near.z);
+    float leave = min(min(far.x, far.y), far.z);
+    return leave < max(enter, 0.0) ? 0.0 : min(tMax, leave);
+}
 
 #define SDF_PROGRAM_AT(n) sdfCellWords[n]
 

@@ -6,6 +6,13 @@
 #include "common/sdf_functions.glsl"
 #include "generated/sdf_map.glsl"
 
+#ifndef SDF_HAS_RAY_END
+// Maps that hold no grid (common/sdf_cells.glsl has its own): a surface may be anywhere.
+float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
+    return tMax;
+}
+#endif
+
 // A zero the shader compiler cannot see through (the frame's step budget is at least 1). Loops
 // that start at SDF_ZERO are neither unrolled nor is their body inlined once per iteration, so
 // the scene's map is compiled once per loop instead of once per tap: the "ZERO" idiom from

@@ -52,7 +52,10 @@ void main() {
     float s = frame.cameraPosition.w;
     int steps = 0;
     if (!sdfSceneEmpty()) {
-        for (int i = SDF_ZERO; i < int(frame.march.x) && s < frame.march.y; ++i) {
+        // No farther than where the axis leaves the cells' grid, when nothing is outside it:
+        // stopping early only leaves a nearer start, and the pixels' marches end there too.
+        float sEnd = sdfRayEnd(ro, axis, frame.march.y);
+        for (int i = SDF_ZERO; i < int(frame.march.x) && s < sEnd; ++i) {
             float g = sdfDistance(ro + axis * s) - k * s - epsilon * max(s, 1.0) - r;
             steps = i + 1;
             // The cone touches a surface (or nearly: a quarter of its radius left), so the

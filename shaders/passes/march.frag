@@ -35,7 +35,7 @@ void main() {
     vec3 ro = frustumOrigin(gl_FragCoord.xy); // the eye, or the pixel's point (orthographic)
     float tMin = max(frame.cameraPosition.w / forwardness,
                      texelFetch(uConeStart, pixel / CONE_TILE_SIZE, 0).x);
-    float tMax = min(frame.march.y, rasterViewDepth / forwardness);
+    float tMax = sdfRayEnd(ro, rd, min(frame.march.y, rasterViewDepth / forwardness));
 
     float t;
     int steps = 0;

@@ -39,7 +39,8 @@ enum LightingTextureUnit : unsigned { kSkyImageUnit = 14, kShadowMapUnit = 15 };
 // The header of the cell buffer (shaders/common/sdf_cells.glsl), before SdfCellGrid::words.
 struct GpuSdfCellHeader {
     glm::vec4 originSize{0.0f}; // xyz = the grid cube's corner, w = its edge
-    glm::uvec4 info{0u};        // x = levels, y = the whole program's list offset, z = its length
+    glm::uvec4 info{0u};        // x = levels, y = the whole program's list offset, z = its length,
+                                // w = 1 when every surface lies inside the grid's cube
 };
 static_assert(sizeof(GpuSdfCellHeader) == 32);
 
