@@ -306,7 +306,10 @@ namespace {
 // near a shape than end on it: that measured fewer steps on the benchmark scenes). d is signed
 // and the previous one positive, so a step that ended inside a surface fails too. Hits are
 // only taken at points reached safely. A relaxed step that would pass tMax is taken plain, so
-// no surface before tMax is skipped.
+// no surface before tMax is skipped, and one that would pass tLand (tMax where the ray ends at
+// the farthest distance; below tMin: never) lands on it, so whether a ray grazing a surface at
+// the farthest distance hits does not depend on where its march started (the march pass's
+// SDF_RELAXED_MARCH does the same).
 struct MarchResult {
     bool hit = false;
     float t = 0.0f;
@@ -315,7 +318,7 @@ struct MarchResult {
 
 template <typename DistanceAt>
 MarchResult relaxedMarch(DistanceAt distanceAt, int maxSteps, float epsilon, float relaxation,
-                         float tMin, float tMax) {
+                         float tMin, float tMax, float tLand) {
     float t = tMin;
     float previousT = tMin;
     float previousDistance = 0.0f; // at previousT
@@ -332,7 +335,7 @@ MarchResult relaxedMarch(DistanceAt distanceAt, int maxSteps, float epsilon, flo
         }
         if (d < epsilon * std::max(t, 1.0f)) return {true, t, i + 1};
         if (d > previousDistance) omega = relaxation; // moving away from what stopped it
-        stepLength = t + omega * d > tMax ? d : omega * d;
+        stepLength = t + omega * d <= tMax ? omega * d : t < tLand ? std::min(d, tLand - t) : d;
         previousT = t;
         previousDistance = d;
         t += stepLength;
@@ -347,8 +350,10 @@ MarchResult castRay(const SdfProgram& program, const RenderSettings& settings, g
     const float len = glm::length(direction);
     if (!(len > 0.0f)) return {};
     const glm::vec3 rd = direction / len;
+    // As the march pass: a ray that ends at the farthest distance lands on it.
+    const float tLand = tMax >= settings.maxDistance ? tMax : -1.0f;
     return relaxedMarch([&](float t) { return sdfDistance(program, origin + rd * t); },
-                        settings.maxSteps, settings.surfaceEpsilon, relaxation, tMin, tMax);
+                        settings.maxSteps, settings.surfaceEpsilon, relaxation, tMin, tMax, tLand);
 }
 
 } // namespace
@@ -396,7 +401,7 @@ std::optional<SdfHit> sdfCastRayInFrame(const SdfProgram& program, const glm::ma
     const glm::vec3 d = glm::mat3(worldToFrame) * rd;
     const MarchResult march =
         relaxedMarch([&](float t) { return sdfDistance(program, o + d * t); }, settings.maxSteps,
-                     settings.surfaceEpsilon, relaxation, tMin, tMax);
+                     settings.surfaceEpsilon, relaxation, tMin, tMax, -1.0f);
     if (!march.hit) return std::nullopt;
     return SdfHit{march.t, origin + rd * march.t, march.steps};
 }

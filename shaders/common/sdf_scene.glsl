@@ -44,13 +44,17 @@ vec3 sdfNormal(vec3 p, float h) {
 // than end on it: that measured fewer steps on the benchmark scenes). d is signed and the
 // previous one positive, so a step that ended inside a surface fails too. A hit is a point
 // reached safely where d < epsilon * max(t, 1). A relaxed step that would pass tMax is taken
-// plain. Gives up after maxSteps evaluations or when t passes tMax. An empty program never hits.
-// engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU.
+// plain, and a step that would pass tLand (tMax, where the ray ends at the farthest distance;
+// below tMin: never) lands on it (shorter than the plain step: safe), so whether a ray grazing
+// a surface at the farthest distance hits is decided at that one point, not by where its march
+// happened to start (the cone pass starts a tile's pixels together: the cut-off edge came out
+// in steps of a tile). Gives up after maxSteps evaluations or when t passes tMax. An empty
+// program never hits. engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU.
 //
 // The loop is a macro so that the shell pass (common/shell_scene.glsl, shellMarch) runs the very
 // same steps on its own map: DISTANCE_AT_T is the distance at the ray parameter `t`; the
-// enclosing function has tMin, tMax, maxSteps, epsilon, relaxation and the out values t and
-// steps.
+// enclosing function has tMin, tMax, tLand, maxSteps, epsilon, relaxation and the out values t
+// and steps.
 #define SDF_RELAXED_MARCH(DISTANCE_AT_T) \
     float previousT = tMin; \
     float previousDistance = 0.0; /* at previousT */ \
@@ -68,7 +72,7 @@ vec3 sdfNormal(vec3 p, float h) {
         } \
         if (h < epsilon * max(t, 1.0)) return true; \
         if (h > previousDistance) omega = relaxation; /* moving away from what stopped it */ \
-        stepLength = t + omega * h > tMax ? h : omega * h; \
+        stepLength = t + omega * h <= tMax ? omega * h : t < tLand ? min(h, tLand - t) : h; \
         previousT = t; \
         previousDistance = h; \
         t += stepLength; \
@@ -80,5 +84,6 @@ bool sdfMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float epsi
     t = tMin;
     steps = 0;
     if (sdfSceneEmpty()) return false;
+    float tLand = tMax >= frame.march.y ? tMax : -1.0; // the farthest distance ends the ray
     SDF_RELAXED_MARCH(sdfDistance(ro + rd * t))
 }

@@ -62,6 +62,7 @@ bool shellMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float ep
     if (shellSceneEmpty()) return false;
     vec3 o = shellObjectPoint(ro);
     vec3 d = mat3(uWorldToObject) * rd;
+    float tLand = -1.0; // the shell's box ends the ray, not the farthest distance
     SDF_RELAXED_MARCH(shellObjectDistance(o + d * t))
 }
 

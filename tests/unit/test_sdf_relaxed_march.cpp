@@ -192,3 +192,41 @@ TEST(SdfRelaxedMarch, FindsASurfaceJustBeforeTMax) {
     ASSERT_TRUE(hit);
     EXPECT_NEAR(hit->t, 2.0f, 1e-5f);
 }
+
+// Rays that graze a plane where it meets the farthest distance: whether one hits does not
+// depend on where its march starts. The march pass starts a tile's pixels where the cone pass
+// stopped, so a decision that depended on the start drew the plane's cut-off edge in steps of
+// a tile (the scale issue's tree at max_distance 9). The last step lands on the farthest
+// distance, and the ray hits exactly when the plane is within epsilon * t of that point.
+TEST(SdfRelaxedMarch, TheFarthestDistanceDecidesAGrazingRayWhereverItsMarchStarts) {
+    const MarchCase c = compileSceneText("plane", R"({"version": 1,
+        "sdf": {"shape": "plane", "normal": [0, 1, 0], "offset": 0}})");
+    RenderSettings settings;
+    settings.maxDistance = 9.0f;
+    const glm::vec3 origin(0.0f, 0.5f, 0.0f);
+    int decided = 0, hits = 0;
+    // Downward angles whose plane hit lies from 8.5 to 9.5 away: the cut-off band.
+    for (int i = 0; i <= 400; ++i) {
+        const float reach = 8.5f + 0.0025f * float(i); // where the ray meets the plane
+        const glm::vec3 direction =
+            glm::normalize(glm::vec3(0.0f, -0.5f, std::sqrt(reach * reach - 0.25f)));
+        const std::optional<SdfHit> first =
+            sdfCastRay(c.program, settings, origin, direction, 0.0f, settings.maxDistance);
+        for (const float start : {0.37f, 1.1f, 2.9f, 4.4f, 6.05f}) {
+            const std::optional<SdfHit> other =
+                sdfCastRay(c.program, settings, origin, direction, start, settings.maxDistance);
+            ASSERT_EQ(first.has_value(), other.has_value())
+                << "the ray meeting the plane " << reach << " away, marched from " << start;
+        }
+        ++decided;
+        if (!first) continue;
+        ++hits;
+        // A hit is within the farthest distance, and on the plane to within epsilon * t.
+        EXPECT_LE(first->t, settings.maxDistance);
+        EXPECT_LT(std::abs(first->position.y), settings.surfaceEpsilon * first->t);
+    }
+    EXPECT_EQ(decided, 401);
+    // Those meeting the plane before 9 hit; those far past it do not.
+    EXPECT_GT(hits, 200);
+    EXPECT_LT(hits, 401);
+}
