@@ -324,8 +324,9 @@ double measureMarch(const Renderer& renderer, const FrameTargets& targets, Strat
 }
 
 // Moves the middle shape of the scene's program by a tenth of its distance scale and prunes the
-// grid again from the kept state (sdf/cell_pruning.hpp, repruneSdfCells), then uploads the
-// cell buffer as the viewer would: the time a one-shape edit costs, and the cells it pruned.
+// grid again from the kept state (sdf/cell_pruning.hpp, repruneSdfCells), then writes what
+// changed into the cell buffer of the grid before the edit (render/gpu_scene.hpp,
+// updateSdfCells): the time a one-shape edit costs, and the cells it pruned.
 struct Reprune {
     double pruneMs = 0.0;
     double uploadMs = 0.0;
@@ -336,6 +337,8 @@ Reprune repruneAfterOneShapeEdit(const PreparedScene& prepared) {
     SdfCellStatePtr state;
     SdfCellGrid grid = buildSdfCells(prepared.sdf, content, {}, &state);
     if (!state) return {};
+    GpuScene uploaded = uploadScene(prepared, SdfStrategy::Cells, &grid);
+    glFinish();
     SdfProgram program = prepared.sdf;
     std::vector<std::size_t> shapes;
     for (std::size_t i = 0; i < program.instructions.size(); ++i)
@@ -349,8 +352,7 @@ Reprune repruneAfterOneShapeEdit(const PreparedScene& prepared) {
     result.pruneMs = millisecondsSince(start);
     result.cells = grid.stats.prunedCells;
     const auto uploadStart = std::chrono::steady_clock::now();
-    const gl::Buffer buffer = gl::createBufferWithData(
-        GLsizeiptr(grid.words.size() * sizeof(std::uint32_t)), grid.words.data());
+    updateSdfCells(uploaded, grid);
     glFinish();
     result.uploadMs = millisecondsSince(uploadStart);
     return result;

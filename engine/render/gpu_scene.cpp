@@ -26,7 +26,46 @@ gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& i
     return gl::createBufferWithData(GLsizeiptr(bytes.size()), bytes.data());
 }
 
+// The cells buffer: the header, the grid's words, then room for a quarter more words (an edit's
+// new lists go after the old ones: updateSdfCells writes them in place).
+gl::Buffer createCellBuffer(const GpuSdfCellHeader& header, const SdfCellGrid& grid) {
+    const std::size_t wordBytes = grid.words.size() * sizeof(std::uint32_t);
+    gl::Buffer buffer = gl::createBufferWithData(
+        GLsizeiptr(sizeof header + wordBytes + wordBytes / 4 + sizeof(std::uint32_t)), nullptr);
+    glNamedBufferSubData(buffer.id(), 0, sizeof header, &header);
+    glNamedBufferSubData(buffer.id(), sizeof header, GLsizeiptr(wordBytes), grid.words.data());
+    return buffer;
+}
+
+// The size of `buffer` (0 for none).
+std::size_t bufferBytes(const gl::Buffer& buffer) {
+    GLint64 bytes = 0;
+    if (buffer.id() != 0) glGetNamedBufferParameteri64v(buffer.id(), GL_BUFFER_SIZE, &bytes);
+    return std::size_t(bytes);
+}
+
 } // namespace
+
+void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid) {
+    GpuSdfCellHeader& header = gpu.sdfCellHeader;
+    header.originSize = glm::vec4(grid.origin, grid.size);
+    header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
+                             header.info.w);
+    gpu.sdfCellStats = grid.stats;
+    gpu.sdfCellLevels = grid.levels;
+    const std::size_t capacity = bufferBytes(gpu.sdfCells);
+    if (sizeof header + grid.words.size() * sizeof(std::uint32_t) > capacity) {
+        gpu.sdfCells = createCellBuffer(header, grid);
+        gpu.sdfCellStats.bytes = bufferBytes(gpu.sdfCells);
+        return;
+    }
+    gpu.sdfCellStats.bytes = capacity;
+    glNamedBufferSubData(gpu.sdfCells.id(), 0, sizeof header, &header);
+    for (const SdfWordRange& range : grid.changedWords)
+        glNamedBufferSubData(
+            gpu.sdfCells.id(), GLintptr(sizeof header + range.first * sizeof(std::uint32_t)),
+            GLsizeiptr(range.count * sizeof(std::uint32_t)), grid.words.data() + range.first);
+}
 
 void GpuScene::bindBuffers() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfProgramBinding, sdfProgram.id());
@@ -167,12 +206,10 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
                             glm::all(glm::lessThanEqual(whole.box.max, grid.origin + grid.size));
         header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
                                  inside ? 1u : 0u);
-        std::vector<unsigned char> bytes(sizeof header + grid.words.size() * sizeof(std::uint32_t));
-        std::memcpy(bytes.data(), &header, sizeof header);
-        std::memcpy(bytes.data() + sizeof header, grid.words.data(),
-                    grid.words.size() * sizeof(std::uint32_t));
-        gpu.sdfCells = gl::createBufferWithData(GLsizeiptr(bytes.size()), bytes.data());
+        gpu.sdfCellHeader = header;
+        gpu.sdfCells = createCellBuffer(header, grid);
         gpu.sdfCellStats = grid.stats;
+        gpu.sdfCellStats.bytes = bufferBytes(gpu.sdfCells);
         gpu.sdfCellLevels = grid.levels;
     }
     gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());

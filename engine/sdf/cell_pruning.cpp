@@ -1004,6 +1004,20 @@ struct SdfCellState {
     // Keep the refined cells' trees for repruneSdfCells; without, each goes once its block is
     // pruned (memory).
     bool keepTrees = true;
+
+    // What the last packGrid wrote, so that the next one writes only what changed: the grid it
+    // wrote (SdfCellGrid::packStamp), where its lists start (after the entries and room for an
+    // eighth more blocks) and how many list words it held, each block's statistics, and which
+    // blocks' entries changed since.
+    struct BlockStats {
+        int leafCells = 0, maxLength = 0;
+        long length = 0, leaves = 0;
+    };
+    std::uint64_t packStamp = 0;
+    std::size_t packedBase = 0, packedLists = 0;
+    std::vector<BlockStats> blockStats;
+    std::vector<char> blockChanged;
+    bool listsMoved = true; // the lists were stored again (compactLists): every entry changed
 };
 
 void SdfCellStateDeleter::operator()(SdfCellState* state) const {
@@ -1014,6 +1028,11 @@ namespace {
 
 float cellEdge(const SdfCellState& s, int level) {
     return s.size / float(1 << (2 * level));
+}
+
+void markBlockChanged(SdfCellState& s, std::uint32_t b) {
+    if (s.blockChanged.size() <= b) s.blockChanged.resize(s.blocks.size(), 1);
+    s.blockChanged[b] = 1;
 }
 
 std::uint32_t allocateBlock(SdfCellState& s, int level, glm::ivec3 first, PrunedTree parent) {
@@ -1030,6 +1049,7 @@ std::uint32_t allocateBlock(SdfCellState& s, int level, glm::ivec3 first, Pruned
     }
     s.blocks[b] = {level, first, std::move(parent), true};
     s.liveCells += 64;
+    markBlockChanged(s, b);
     return b;
 }
 
@@ -1037,6 +1057,7 @@ void freeBlock(SdfCellState& s, std::uint32_t b) {
     for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k)
         if (s.entries[2 * k] & kSdfCellRefined) freeBlock(s, s.entries[2 * k] & ~kSdfCellRefined);
     s.blocks[b].live = false;
+    markBlockChanged(s, b);
     PrunedTree().swap(s.blocks[b].parent);
     s.freeBlocks.push_back(b);
     s.liveCells -= 64;
@@ -1061,6 +1082,7 @@ void setLeafCell(SdfCellState& s, std::uint32_t k, const CellResult& r) {
     s.entries[2 * k] = storeList(s, r.list);
     s.entries[2 * k + 1] = std::uint32_t(r.list.size());
     s.cellLeaves[k] = std::uint32_t(r.leaves);
+    markBlockChanged(s, k / 64);
 }
 
 // Edits leave lists no cell uses; once they are as many as the rest, the lists are stored again.
@@ -1077,6 +1099,7 @@ void compactLists(SdfCellState& s) {
                     s.entries[2 * k] = storeList(
                         s, std::span(old).subspan(s.entries[2 * k], s.entries[2 * k + 1]));
     s.listsAtCompaction = s.lists.size();
+    s.listsMoved = true;
 }
 
 bool holdsChanged(const PrunedTree& tree, const std::vector<char>& changed) {
@@ -1312,6 +1335,7 @@ void pruneBlocks(SdfCellState& s, std::vector<PendingBlock> pending,
                     allocateBlock(s, s.blocks[b].level + 1, cell * 4, std::move(results[t].pruned));
                 s.entries[2 * k] = kSdfCellRefined | child;
                 s.entries[2 * k + 1] = 0;
+                markBlockChanged(s, b);
                 children.push_back({child, true, false});
             }
             if (!s.keepTrees)
@@ -1325,45 +1349,90 @@ void pruneBlocks(SdfCellState& s, std::vector<PendingBlock> pending,
 }
 
 // The grid as the GPU reads it: the cell entries, the lists after them (offsets made absolute),
-// the whole program's list last; and its statistics.
-void packGrid(const SdfCellState& s, SdfCellGrid& grid) {
+// the whole program's list last; and its statistics. When `grid` is what the state's last pack
+// wrote and the entries and lists stayed in place (an edit: its new lists go after the old
+// ones), only the changed blocks and the words after the old lists are written, and
+// grid.changedWords says which; otherwise everything is.
+void packGrid(SdfCellState& s, SdfCellGrid& grid) {
+    static std::atomic<std::uint64_t> stamps{0};
     grid.code = s.code;
     grid.stats = {};
+    grid.changedWords.clear();
     if (s.tooDeep) { // a pruned part deeper than the stack (the fold of accumulated parts)
         grid.levels = 0;
         grid.code = s.program.instructions;
         grid.words.clear();
         appendOutsideList(grid, s.program.instructions.size());
+        grid.changedWords.push_back({0, std::uint32_t(grid.words.size())});
+        grid.packStamp = 0;
         return;
     }
+    const bool inPlace = grid.packStamp != 0 && grid.packStamp == s.packStamp && !s.listsMoved &&
+                         grid.levels == s.levels && s.entries.size() <= s.packedBase &&
+                         s.lists.size() >= s.packedLists &&
+                         grid.words.size() >= s.packedBase + s.packedLists;
     grid.levels = s.levels;
     grid.origin = s.origin;
     grid.size = s.size;
-    const std::uint32_t base = std::uint32_t(s.entries.size());
-    grid.words.resize(s.entries.size() + s.lists.size());
-    grid.stats.cellsPerLevel.assign(std::size_t(s.levels), 0);
-    long totalLength = 0, totalLeaves = 0;
-    for (std::uint32_t b = 0; b < s.blocks.size(); ++b) {
+    const std::size_t blockCount = s.blocks.size();
+    const std::uint32_t base =
+        std::uint32_t(inPlace ? s.packedBase : 128 * (blockCount + (blockCount + 7) / 8));
+    s.blockStats.resize(blockCount);
+    s.blockChanged.resize(blockCount, 1);
+    if (!inPlace) grid.words.assign(base, 0u);
+    grid.words.resize(base + s.lists.size());
+    for (std::uint32_t b = 0; b < blockCount; ++b) {
+        if (inPlace && !s.blockChanged[b]) continue;
+        s.blockChanged[b] = 0;
+        if (inPlace) {
+            std::vector<SdfWordRange>& changed = grid.changedWords;
+            if (!changed.empty() && changed.back().first + changed.back().count == 128 * b)
+                changed.back().count += 128;
+            else
+                changed.push_back({128 * b, 128});
+        }
+        SdfCellState::BlockStats& stats = s.blockStats[b];
+        stats = {};
         if (!s.blocks[b].live) {
             std::fill_n(grid.words.begin() + 128 * b, 128, 0u);
             continue;
         }
-        grid.stats.cellsPerLevel[std::size_t(s.blocks[b].level - 1)] += 64;
         for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k) {
             const std::uint32_t e = s.entries[2 * k], length = s.entries[2 * k + 1];
             grid.words[2 * k] = e & kSdfCellRefined ? e : e + base;
             grid.words[2 * k + 1] = length;
             if (e & kSdfCellRefined) continue;
-            ++grid.stats.leafCells;
-            totalLength += long(length);
-            totalLeaves += long(s.cellLeaves[k]);
-            grid.stats.maxLength = std::max(grid.stats.maxLength, int(length));
+            ++stats.leafCells;
+            stats.length += long(length);
+            stats.leaves += long(s.cellLeaves[k]);
+            stats.maxLength = std::max(stats.maxLength, int(length));
         }
+    }
+    const std::size_t listsFrom = inPlace ? s.packedLists : 0;
+    std::copy(s.lists.begin() + std::ptrdiff_t(listsFrom), s.lists.end(),
+              grid.words.begin() + base + std::ptrdiff_t(listsFrom));
+    appendOutsideList(grid, s.outsideLength, s.outsideFirst);
+    const std::uint32_t tail = inPlace ? base + std::uint32_t(listsFrom) : 0;
+    if (grid.words.size() > tail)
+        grid.changedWords.push_back({tail, std::uint32_t(grid.words.size()) - tail});
+    s.packedBase = base;
+    s.packedLists = s.lists.size();
+    s.listsMoved = false;
+    s.packStamp = grid.packStamp = ++stamps;
+
+    grid.stats.cellsPerLevel.assign(std::size_t(s.levels), 0);
+    long totalLength = 0, totalLeaves = 0;
+    for (std::uint32_t b = 0; b < blockCount; ++b) {
+        if (!s.blocks[b].live) continue;
+        grid.stats.cellsPerLevel[std::size_t(s.blocks[b].level - 1)] += 64;
+        const SdfCellState::BlockStats& stats = s.blockStats[b];
+        grid.stats.leafCells += stats.leafCells;
+        totalLength += stats.length;
+        totalLeaves += stats.leaves;
+        grid.stats.maxLength = std::max(grid.stats.maxLength, stats.maxLength);
     }
     while (!grid.stats.cellsPerLevel.empty() && grid.stats.cellsPerLevel.back() == 0)
         grid.stats.cellsPerLevel.pop_back();
-    std::copy(s.lists.begin(), s.lists.end(), grid.words.begin() + base);
-    appendOutsideList(grid, s.outsideLength, s.outsideFirst);
     grid.stats.uniquePrograms = s.uniquePrograms;
     grid.stats.prunedCells = s.prunedCells;
     grid.stats.meanLength = grid.stats.leafCells ? double(totalLength) / grid.stats.leafCells : 0.0;

@@ -232,6 +232,19 @@ void expectSameLists(const SdfCellGrid& a, const SdfCellGrid& b, std::mt19937& r
         ASSERT_EQ(std::memcmp(&a.code[i], &b.code[i], sizeof a.code[i]), 0) << what << " " << i;
 }
 
+// The words before a re-prune with the ranges it says it changed copied in are the words after
+// it (what a GPU copy of the grid is updated by: render/gpu_scene.hpp, updateSdfCells).
+void expectChangedWordsComplete(const std::vector<std::uint32_t>& before, const SdfCellGrid& after,
+                                const std::string& what) {
+    std::vector<std::uint32_t> patched = before;
+    patched.resize(after.words.size());
+    for (const SdfWordRange& range : after.changedWords) {
+        ASSERT_LE(std::size_t(range.first) + range.count, after.words.size()) << what;
+        std::copy_n(after.words.begin() + range.first, range.count, patched.begin() + range.first);
+    }
+    EXPECT_TRUE(patched == after.words) << what;
+}
+
 // An edit of numbers (a shape moved, resized or retyped, an operation's smoothness) pruned
 // again from the kept state gives the cells a full build of the edited program gives, and they
 // agree with the whole edited program.
@@ -280,11 +293,16 @@ TEST(CellPruning, AnEditPrunedAgainEqualsAFullBuild) {
                 else
                     in.worldToLocal[0].w += 0.5f;
             }
+            const std::vector<std::uint32_t> old = grid.words;
             ASSERT_TRUE(repruneSdfCells(*state, edited.program, grid)) << sdf;
+            expectChangedWordsComplete(old, grid, sdf);
             const SdfCellGrid full = buildSdfCells(edited.program, box, options);
             ASSERT_EQ(full.levels, grid.levels);
             expectSameLists(grid, full, rng, sdf);
             EXPECT_EQ(grid.stats.leafCells, full.stats.leafCells) << sdf;
+            EXPECT_EQ(grid.stats.maxLength, full.stats.maxLength) << sdf;
+            EXPECT_DOUBLE_EQ(grid.stats.meanLeaves, full.stats.meanLeaves) << sdf;
+            EXPECT_EQ(grid.stats.cellsPerLevel, full.stats.cellsPerLevel) << sdf;
             expectCellsAgree(edited, grid, rng, 300, sdf);
             if (HasFailure()) return;
             ++edits;
@@ -309,7 +327,14 @@ Repruned expectRepruneEqualsAFullBuild(const Compiled& before, const Compiled& a
     EXPECT_TRUE(r.state) << what;
     if (!r.state) return r;
     r.fullCells = r.grid.stats.prunedCells;
+    const std::vector<std::uint32_t> old = r.grid.words;
     EXPECT_TRUE(repruneSdfCells(*r.state, after.program, r.grid)) << what;
+    expectChangedWordsComplete(old, r.grid, what);
+    // Only a small part of the words is written again.
+    std::size_t written = 0;
+    for (const SdfWordRange& range : r.grid.changedWords)
+        written += range.count;
+    EXPECT_LT(written * 4, r.grid.words.size()) << what;
     EXPECT_GT(r.grid.stats.prunedCells, 0u) << what;
     std::mt19937 rng(seed);
     expectSameLists(r.grid, buildSdfCells(after.program, box), rng, what);

@@ -48,7 +48,9 @@ struct GpuScene {
     gl::Buffer sdfData;              // SdfProgram::data (vec4[], at least one entry)
     // The Cells strategy's cell table and programs (GpuSdfCellHeader + SdfCellGrid::words),
     // none for the other strategies, and what building it measured.
+    // Its header is kept for updateSdfCells; the buffer has room for a quarter more words.
     gl::Buffer sdfCells;
+    GpuSdfCellHeader sdfCellHeader;
     SdfCellStats sdfCellStats;
     int sdfCellLevels = 0;
     gl::Buffer materialBuffer; // GpuMaterial[]
@@ -85,5 +87,10 @@ void setSceneLights(GpuScene& gpu, const PreparedScene& prepared, const std::vec
 // pruned for prepared.sdf (the viewer's, pruned again after an edit: sdf/cell_pruning.hpp).
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfStrategy::Baked,
                      const SdfCellGrid* cells = nullptr);
+
+// Writes `grid`, pruned again (repruneSdfCells) from the grid `gpu.sdfCells` holds, into that
+// buffer: the header and only the words the re-prune changed (SdfCellGrid::changedWords) when
+// they fit, else a new buffer with all of them. The program buffer is the caller's.
+void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid);
 
 } // namespace rmsc

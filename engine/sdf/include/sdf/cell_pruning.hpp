@@ -81,7 +81,8 @@ struct SdfCellStats {
     std::size_t uniquePrograms = 0; // distinct programs after sharing equal ones
     std::size_t prunedCells = 0;    // cells pruned by the build (or the re-prune)
     double buildMs = 0.0;           // wall time of buildSdfCells (or repruneSdfCells)
-    std::size_t bytes = 0;          // GPU bytes of the cell table and index lists
+    std::size_t bytes = 0;          // bytes of the cell table and index lists (on the GPU: their
+                                    // buffer, render/gpu_scene.hpp)
 };
 
 // The cells and their programs, laid out as the GPU reads them (sdf_cells.glsl): `words` holds
@@ -92,6 +93,10 @@ struct SdfCellStats {
 // program's, when one is given).
 constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
 
+struct SdfWordRange {
+    std::uint32_t first = 0, count = 0;
+};
+
 struct SdfCellGrid {
     int levels = 0;         // 0: no grid (everything runs the whole program)
     glm::vec3 origin{0.0f}; // the grid is the cube [origin, origin + size]
@@ -101,6 +106,11 @@ struct SdfCellGrid {
     std::uint32_t outsideLength = 0;
     std::vector<GpuSdfInstruction> code; // program.instructions + the added ones
     SdfCellStats stats;
+    // The words the last build or re-prune wrote, in order: all of them after a build; after a
+    // re-prune into the grid it last wrote, the blocks of cells that changed and the lists from
+    // the first new one to the end (so a GPU copy of the old words needs only these).
+    std::vector<SdfWordRange> changedWords;
+    std::uint64_t packStamp = 0; // which pack wrote the words (0: none)
 };
 
 // A lower bound of a whole program's field from the boxes of its shapes (the floors cell
