@@ -78,11 +78,7 @@ int Viewer::run() {
         drawUi();
         commitFinishedEdits();
         pollFiles();
-        const auto viewStart = std::chrono::steady_clock::now();
         updateView(actions.waitShaders, !actions.windowShots.empty());
-        viewMilliseconds_ =
-            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - viewStart)
-                .count();
 
         ImGui::Render();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -268,11 +264,12 @@ void Viewer::updateView(bool waitForBuilds, bool refineAll) {
     int ww = 0, wh = 0, fw = 0, fh = 0;
     window_->windowSize(ww, wh);
     window_->framebufferSize(fw, fh);
-    // What the frame leaves for rendering the view: the target less what the rest of the last
-    // frame took (the panels, the display, the swap), at least a quarter of the target.
+    // What the frame leaves for rendering the view: the target less what the rest of the
+    // frames takes (restMilliseconds_), at least a quarter of the target.
     const float target = view_.adaptive.targetMilliseconds;
-    const float rest = std::max(0.0f, frameMilliseconds_ - viewMilliseconds_);
-    const float budget = std::clamp(target - rest, 0.25f * target, target);
+    const float rest = std::max(0.0f, frameMilliseconds_ - gpu_.frameRenderMilliseconds());
+    restMilliseconds_ = std::max(rest, 0.9f * restMilliseconds_);
+    const float budget = std::clamp(target - restMilliseconds_, 0.25f * target, target);
     gpu_.render(viewInput(), viewportPixels(layout_.viewport, ww, wh, fw, fh), view_.adaptive,
                 budget, refineAll);
 }

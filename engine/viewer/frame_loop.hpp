@@ -81,7 +81,9 @@ class Viewer {
     bool scriptWaitsForExport_ = false; // the wait is for the export, not the refining
     int frameNumber_ = 0;
     float frameMilliseconds_ = 0.0f;
-    float viewMilliseconds_ = 0.0f; // of the last frame spent in updateView
+    // What frames spend besides rendering the scene (the panels, the display, the swap): the
+    // last frame's, or a higher one seen lately (it falls by a tenth a frame).
+    float restMilliseconds_ = 0.0f;
     FrameStats stats_;
     std::chrono::steady_clock::time_point start_;
     double lastPoll_ = 0.0; // when the files were last looked at

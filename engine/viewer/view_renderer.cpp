@@ -116,6 +116,7 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    frameRenderMilliseconds_ = 0.0f;
     if (!renderer_ || !display_ || !gpuScene_) return;
 
     const int vw = viewport.width, vh = viewport.height;
@@ -140,6 +141,7 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
             ++refinements_;
             costMilliseconds_ = lastRenderMilliseconds_;
             costScale_ = 1.0f;
+            frameRenderMilliseconds_ = lastRenderMilliseconds_;
         } else {
             const int tw = std::max(1, int(std::lround(float(vw) * scale)));
             const int th = std::max(1, int(std::lround(float(vh) * scale)));
@@ -153,6 +155,7 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
             costMilliseconds_ = lastRenderMilliseconds_;
             costScale_ = scale;
             refinement_.restart(vh, lastRenderMilliseconds_ / (scale * scale));
+            frameRenderMilliseconds_ = lastRenderMilliseconds_;
         }
     } else if (!refinement_.done()) {
         const editor::RefineBand band = refinement_.nextBand(budgetMilliseconds, refineAll);
@@ -165,8 +168,7 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
         glFinish();
         lastRenderMilliseconds_ = millisecondsSince(t0);
         refinement_.rendered(band, lastRenderMilliseconds_);
-        costMilliseconds_ = refinement_.fullMilliseconds();
-        costScale_ = 1.0f;
+        frameRenderMilliseconds_ = lastRenderMilliseconds_;
         if (refinement_.done()) ++refinements_;
     }
 

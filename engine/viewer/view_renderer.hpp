@@ -90,6 +90,9 @@ class ViewRenderer {
     // it every time.
     void render(const ViewInput& view, const ViewportPixels& viewport,
                 editor::AdaptiveScale& adaptive, float budgetMilliseconds, bool refineAll);
+    // What the last render() spent rendering the scene (a quick render or a band; 0 when it
+    // only showed the last image): the rest of its frame is what the next frame's budget leaves.
+    float frameRenderMilliseconds() const { return frameRenderMilliseconds_; }
     // The view at `width` x `height` pixels and full resolution: the last render when it is
     // that, or a new render. nullopt with `error` when nothing is rendered yet.
     std::optional<Pixels<std::uint8_t>> capture(const ViewInput& view, int width, int height,
@@ -144,7 +147,10 @@ class ViewRenderer {
     editor::Refinement refinement_;
     float previewScale_ = 1.0f;
     float lastRenderMilliseconds_ = 0.0f;
-    // The latest cost measured: a render at costScale_ takes costMilliseconds_.
+    float frameRenderMilliseconds_ = 0.0f;
+    // The last quick (or whole) render's cost: at costScale_ it took costMilliseconds_. Only
+    // those size the next quick render: the bands' cost per row leaves out what a render costs
+    // whatever its size (the shadow maps, the passes' set-up).
     float costMilliseconds_ = 0.0f, costScale_ = 1.0f;
     int changes_ = 0, refinements_ = 0;
     Camera lastRenderedCamera_;

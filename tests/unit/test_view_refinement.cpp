@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace rmsc::editor;
 
 TEST(AdaptiveScale, FitsTheBudgetAtOnceAndGrowsBackSlowly) {
@@ -59,10 +61,10 @@ TEST(Refinement, LearnsTheCostAndRestartsOnAChange) {
     Refinement r;
     r.restart(400, 40.0f); // thought to cost 0.1 ms a row
     RefineBand band = r.nextBand(10.0f);
-    EXPECT_EQ(band.end, 96);     // 100 rows fit, cut to whole tiles
-    r.rendered(band, 96 * 0.4f); // four times dearer
+    EXPECT_EQ(band.end, 80);     // 85 rows fit the share of the budget a band is planned for
+    r.rendered(band, 80 * 0.4f); // four times dearer
     band = r.nextBand(10.0f);
-    EXPECT_LT(band.end - band.begin, 96); // smaller bands from now on
+    EXPECT_LT(band.end - band.begin, 80); // smaller bands from now on
     r.restart(400, 0.0f);                 // a change mid-refinement
     EXPECT_EQ(r.shownRows(), 0);
     EXPECT_EQ(r.nextBand(10.0f).begin, 0);
@@ -76,4 +78,44 @@ TEST(Refinement, LearnsTheCostAndRestartsOnAChange) {
     r.finish(300, 9.0f);
     EXPECT_TRUE(r.done());
     EXPECT_EQ(r.shownRows(), 300);
+}
+
+// Rows that do not cost alike: a dear band across the middle (a horizon, twenty times the cost
+// of the other rows here). The first refinement, which knows only the mean cost, goes far over
+// the budget where its band reaches the dear rows; each band's cost is then shared among its
+// tile rows in proportion to what they cost before, so repeated refinements of the same view (a
+// camera held still between small moves) learn where the cost lies, and from the fourth on no
+// band goes over. Sizing by the mean cost per row alone goes over in every one.
+TEST(Refinement, LaterRefinementsSizeTheirBandsByEachRowsCost) {
+    const int height = 400;
+    const auto rowCost = [](int row) { return row >= 200 && row < 264 ? 1.0f : 0.05f; };
+    const auto bandCost = [&](const RefineBand& band) {
+        float ms = 0.0f;
+        for (int row = band.begin; row < band.end; ++row)
+            ms += rowCost(row);
+        return ms;
+    };
+    float whole = 0.0f;
+    for (int row = 0; row < height; ++row)
+        whole += rowCost(row);
+    const float budget = 12.0f;
+    Refinement r;
+    for (int pass = 0; pass < 6; ++pass) {
+        r.restart(height, whole);
+        int bands = 0;
+        float worst = 0.0f;
+        while (!r.done() && bands < 1000) {
+            const RefineBand band = r.nextBand(budget);
+            const float ms = bandCost(band);
+            worst = std::max(worst, ms);
+            r.rendered(band, ms);
+            ++bands;
+        }
+        ASSERT_TRUE(r.done());
+        SCOPED_TRACE(pass);
+        if (pass == 0) EXPECT_GT(worst, 3.0f * budget); // the mean cost per row
+        if (pass >= 3) EXPECT_LE(worst, budget);
+        // 81 ms of rows, bands planned for 85% of 12 ms: 8 at the fewest; twice that at most.
+        EXPECT_LE(bands, 16);
+    }
 }
