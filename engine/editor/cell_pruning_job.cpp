@@ -1,7 +1,10 @@
 // The worker that prunes the edited scene's cells (see cell_pruning_job.hpp).
 #include "editor/cell_pruning_job.hpp"
 
+#include "core/thread_priority.hpp"
+
 #include <chrono>
+#include <thread>
 #include <utility>
 
 namespace rmsc::editor {
@@ -63,8 +66,17 @@ void CellPruningJob::run() {
              glm::any(
                  glm::greaterThan(content.max, result.grid.origin + glm::vec3(result.grid.size)))))
             result.again = false; // moved out of the cube: a new one
-        if (!result.again)
-            result.grid = buildSdfCells(request.program, content, {}, &state_, &request.outside);
+        if (!result.again) {
+            // A full build takes seconds: it runs on a thread of its own at a lower priority
+            // (its threads inherit it), so the frames come first; a re-prune after an edit, tens
+            // of milliseconds, runs here at the UI's.
+            std::thread build([&] {
+                lowerThisThreadsPriority();
+                result.grid =
+                    buildSdfCells(request.program, content, {}, &state_, &request.outside);
+            });
+            build.join();
+        }
         result.milliseconds =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();

@@ -2,6 +2,8 @@
 // at a time.
 #include "render/shader_warmer.hpp"
 
+#include "core/thread_priority.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <exception>
@@ -94,6 +96,7 @@ double ShaderWarmer::buildMs(const std::string& sdfMap) const {
 }
 
 void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
+    lowerThisThreadsPriority();
     std::string error;
     const std::function<void()> release = bindContext(error);
     std::optional<Renderer> renderer;
