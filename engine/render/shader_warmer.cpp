@@ -134,7 +134,12 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
         const auto start = std::chrono::steady_clock::now();
         std::string failure;
         try {
-            GpuScene gpu = uploadScene(*scene, SdfStrategy::Buffer);
+            // A map's shaders do not depend on the scene's cells: a grid of none, whose points
+            // run an empty list, warms them without pruning the scene (seconds for thousands
+            // of shapes, which the viewer's own pruning does meanwhile).
+            SdfCellGrid noCells;
+            noCells.code = scene->sdf.instructions;
+            GpuScene gpu = uploadScene(*scene, SdfStrategy::Buffer, &noCells);
             gpu.sdfMap = sdfMap;
             renderer->render(gpu, scene->scene.camera, scene->scene.render, *targets);
             glFinish(); // the draws, where the driver finishes the programs
