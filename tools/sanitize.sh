@@ -26,6 +26,10 @@ ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -L unit
 # before the uninstrumented python3 starts) and cli.embed (it installs this build's
 # instrumented librmsc.a and links an uninstrumented program against it); e2e.viewer_timing
 # (UI frame times, figures only, which mean nothing under the sanitizers); e2e.viewer_burst (3.6
-# minutes without the sanitizers; the input queue it drives runs here in its unit tests).
+# minutes without the sanitizers; the input queue it drives runs here in its unit tests); and
+# the three GPU agreement tests on the largest cell grids (3 minutes of the two cores here, their
+# time the CPU's pruning and ray casts, which the CellPruning unit tests run under the
+# sanitizers on random trees; the other cells agreement tests stay).
 ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" \
-  ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -LE unit -E '^(gpu\.python|cli\.embed|e2e\.viewer_timing|e2e\.viewer_burst)$'
+  ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -LE unit \
+    -E '^(gpu\.python|cli\.embed|e2e\.viewer_timing|e2e\.viewer_burst|gpu\.CpuGpuAgreement\.(CellsOnTheLargestSmoothTree|CellsOnTheLargestSmoothTreeAlongTheHorizon|CellsOnABoundedSceneEndRaysAtTheGrid))$'
