@@ -58,13 +58,13 @@ void CellPruningJob::run() {
         CellPruningResult result;
         result.revision = request.revision;
         result.frame = request.frame;
-        result.again =
-            state_ && repruneSdfCells(*state_, request.program, result.grid, &request.outside);
+        // Pruned again into the grid kept from the last result, so the result says which of
+        // its words changed since (SdfCellGrid::changedWords, changedSince).
+        result.again = state_ && repruneSdfCells(*state_, request.program, grid_, &request.outside);
         const Aabb& content = request.content;
         if (result.again && !content.empty() &&
-            (glm::any(glm::lessThan(content.min, result.grid.origin)) ||
-             glm::any(
-                 glm::greaterThan(content.max, result.grid.origin + glm::vec3(result.grid.size)))))
+            (glm::any(glm::lessThan(content.min, grid_.origin)) ||
+             glm::any(glm::greaterThan(content.max, grid_.origin + glm::vec3(grid_.size)))))
             result.again = false; // moved out of the cube: a new one
         if (!result.again) {
             // A full build takes seconds: it runs on a thread of its own at a lower priority
@@ -72,11 +72,11 @@ void CellPruningJob::run() {
             // of milliseconds, runs here at the UI's.
             std::thread build([&] {
                 lowerThisThreadsPriority();
-                result.grid =
-                    buildSdfCells(request.program, content, {}, &state_, &request.outside);
+                grid_ = buildSdfCells(request.program, content, {}, &state_, &request.outside);
             });
             build.join();
         }
+        result.grid = grid_;
         result.milliseconds =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();

@@ -54,6 +54,8 @@ void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid) {
     gpu.sdfCellStats = grid.stats;
     gpu.sdfCellLevels = grid.levels;
     const std::size_t capacity = bufferBytes(gpu.sdfCells);
+    const bool fromHeld = grid.changedSince != 0 && grid.changedSince == gpu.sdfCellStamp;
+    gpu.sdfCellStamp = grid.packStamp;
     if (sizeof header + grid.words.size() * sizeof(std::uint32_t) > capacity) {
         gpu.sdfCells = createCellBuffer(header, grid);
         gpu.sdfCellStats.bytes = bufferBytes(gpu.sdfCells);
@@ -61,10 +63,45 @@ void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid) {
     }
     gpu.sdfCellStats.bytes = capacity;
     glNamedBufferSubData(gpu.sdfCells.id(), 0, sizeof header, &header);
-    for (const SdfWordRange& range : grid.changedWords)
+    const std::vector<SdfWordRange> all{{0, std::uint32_t(grid.words.size())}};
+    for (const SdfWordRange& range : fromHeld ? grid.changedWords : all)
         glNamedBufferSubData(
             gpu.sdfCells.id(), GLintptr(sizeof header + range.first * sizeof(std::uint32_t)),
             GLsizeiptr(range.count * sizeof(std::uint32_t)), grid.words.data() + range.first);
+}
+
+bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellGrid& grid) {
+    const Scene& scene = prepared.scene;
+    const std::size_t dataCount = std::max<std::size_t>(prepared.sdf.data.size(), 1);
+    if (gpu.sdfCells.id() == 0 || !prepared.assets.empty() || !prepared.shells.empty() ||
+        !prepared.textures.empty() || !gpu.meshes.empty() || !gpu.shells.empty() ||
+        !gpu.materialTextures.empty() || scene.environment.sky == SkyType::Image ||
+        gpu.environment.sky == SkyType::Image || grid.code.size() != gpu.sdfCodeCount ||
+        dataCount != gpu.sdfDataCount || prepared.materials.size() != gpu.materials.size() ||
+        prepared.sdf.instructions.size() != std::size_t(gpu.sdfInstructionCount))
+        return false;
+    GpuSdfHeader sdfHeader;
+    sdfHeader.instructionCount = std::uint32_t(prepared.sdf.instructions.size());
+    sdfHeader.stackDepth = std::uint32_t(prepared.sdf.stackDepth);
+    sdfHeader.pointStackDepth = std::uint32_t(prepared.sdf.pointStackDepth);
+    sdfHeader.dataCount = std::uint32_t(dataCount);
+    glNamedBufferSubData(gpu.sdfProgram.id(), 0, sizeof sdfHeader, &sdfHeader);
+    glNamedBufferSubData(gpu.sdfProgram.id(), sizeof sdfHeader,
+                         GLsizeiptr(grid.code.size() * sizeof(GpuSdfInstruction)),
+                         grid.code.data());
+    if (!prepared.sdf.data.empty())
+        glNamedBufferSubData(gpu.sdfData.id(), 0,
+                             GLsizeiptr(prepared.sdf.data.size() * sizeof(glm::vec4)),
+                             prepared.sdf.data.data());
+    const std::vector<GpuMaterial> materials = packMaterials(prepared.materials);
+    glNamedBufferSubData(gpu.materialBuffer.id(), 0,
+                         GLsizeiptr(materials.size() * sizeof(GpuMaterial)), materials.data());
+    gpu.materials = prepared.materials;
+    setSceneLights(gpu, prepared, prepared.lights.empty() ? scene.lights : prepared.lights);
+    gpu.environment = scene.environment;
+    gpu.sdf = prepared.sdf;
+    updateSdfCells(gpu, grid);
+    return true;
 }
 
 void GpuScene::bindBuffers() const {
@@ -208,11 +245,14 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
                                  inside ? 1u : 0u);
         gpu.sdfCellHeader = header;
         gpu.sdfCells = createCellBuffer(header, grid);
+        gpu.sdfCellStamp = grid.packStamp;
         gpu.sdfCellStats = grid.stats;
         gpu.sdfCellStats.bytes = bufferBytes(gpu.sdfCells);
         gpu.sdfCellLevels = grid.levels;
     }
     gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());
+    gpu.sdfCodeCount = instructions.size();
+    gpu.sdfDataCount = sdfData.size();
     gpu.sdf = prepared.sdf;
 
     const std::vector<GpuMaterial> materials = packMaterials(prepared.materials);

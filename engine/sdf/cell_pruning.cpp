@@ -1364,7 +1364,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         grid.words.clear();
         appendOutsideList(grid, s.program.instructions.size());
         grid.changedWords.push_back({0, std::uint32_t(grid.words.size())});
-        grid.packStamp = 0;
+        grid.packStamp = grid.changedSince = 0;
         return;
     }
     const bool inPlace = grid.packStamp != 0 && grid.packStamp == s.packStamp && !s.listsMoved &&
@@ -1418,6 +1418,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     s.packedBase = base;
     s.packedLists = s.lists.size();
     s.listsMoved = false;
+    grid.changedSince = inPlace ? grid.packStamp : 0;
     s.packStamp = grid.packStamp = ++stamps;
 
     grid.stats.cellsPerLevel.assign(std::size_t(s.levels), 0);

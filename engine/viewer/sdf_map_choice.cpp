@@ -54,6 +54,14 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     const bool cells = maps.kind == editor::EditingMapKind::Cells;
     const bool bounded = maps.kind == editor::EditingMapKind::Interpreter;
     if (sameMap && !sceneChanged_) return;
+    // An edit of numbers drawn with the cells map: its buffers written in place, and of the
+    // cells only what the re-prune changed (a large scene's upload is what such an edit costs).
+    if (sameMap && cells && drawnCells_ && updateSdfScene(*gpuScene_, *prepared_, *cellGrid_)) {
+        sceneChanged_ = false;
+        sceneError.clear();
+        lastRenderedRevision_ = 0;
+        return;
+    }
     std::optional<GpuScene> fresh; // a new upload: a newer scene, or the other program
     if (sceneChanged_ || bounded != drawnBounded_ || cells != drawnCells_) {
         if (bounded) std::swap(prepared_->sdf, boundedSdf_);

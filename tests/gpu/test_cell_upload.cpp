@@ -4,6 +4,7 @@
 #include "gpu_test_support.hpp"
 
 #include "render/gpu_scene.hpp"
+#include "render/readback.hpp"
 #include "sdf/cell_pruning.hpp"
 
 #include <gtest/gtest.h>
@@ -64,10 +65,62 @@ TEST(CellUpload, AnEditWritesOnlyWhatChangedIntoTheSameBuffer) {
             << "move " << move;
     }
 
+    // Two re-prunes, the first never written: the second's changes count from the first, not
+    // from what the buffer holds, so it is written whole (SdfCellGrid::changedSince).
+    for (std::size_t move = 0; move < 2; ++move) {
+        GpuSdfInstruction& moved = edited.instructions[shapes[shapes.size() / 8 + move]];
+        moved.worldToLocal[1].w += 0.4f * moved.misc.x;
+        ASSERT_TRUE(repruneSdfCells(*state, edited, grid));
+    }
+    updateSdfCells(gpu, grid);
+    EXPECT_TRUE(readCells(gpu, grid.words.size()) == expectedCells(gpu.sdfCellHeader, grid));
+
     // A grid larger than the buffer's room: a new buffer with all of it.
     SdfCellGrid larger = grid;
     larger.words.resize(grid.words.size() * 2, 7u);
     larger.changedWords = {{0, std::uint32_t(larger.words.size())}};
     updateSdfCells(gpu, larger);
     EXPECT_TRUE(readCells(gpu, larger.words.size()) == expectedCells(gpu.sdfCellHeader, larger));
+}
+
+// An edit of numbers drawn with the cells map, written into the uploaded scene in place
+// (updateSdfScene): the same buffers, and the same picture, colour and ids, as the edited scene
+// uploaded anew; a scene of another shape is refused.
+TEST(CellUpload, AnEditOfNumbersIsWrittenIntoTheSceneInPlace) {
+    const PreparedScene prepared = openRepositoryScene("samples/bench/grid_1000.json");
+    Renderer& renderer = sharedRenderer();
+    SdfCellStatePtr state;
+    SdfCellGrid grid = buildSdfCells(prepared.sdf, sdfContentBox(*prepared.scene.sdf), {}, &state);
+    ASSERT_TRUE(state);
+    GpuScene gpu = uploadScene(prepared, SdfStrategy::Cells, &grid);
+    const auto draw = [&](const GpuScene& scene, const PreparedScene& of) {
+        FrameTargets targets = createFrameTargets(96, 64);
+        renderer.render(scene, of.scene.camera, of.scene.render, targets);
+        return std::make_pair(readDisplayColor(targets), readObjectIds(targets));
+    };
+    const auto before = draw(gpu, prepared);
+
+    // Every shape moved and its material recoloured.
+    PreparedScene edited = prepared;
+    for (GpuSdfInstruction& in : edited.sdf.instructions)
+        if (SdfOpcode(in.opcode) == SdfOpcode::Shape) in.worldToLocal[0].w += 0.25f * in.misc.x;
+    ASSERT_FALSE(edited.materials.empty());
+    for (Material& m : edited.materials)
+        m.baseColor = glm::vec3(0.9f, 0.2f, 0.1f);
+    ASSERT_TRUE(repruneSdfCells(*state, edited.sdf, grid));
+    const GLuint program = gpu.sdfProgram.id(), cells = gpu.sdfCells.id();
+    ASSERT_TRUE(updateSdfScene(gpu, edited, grid));
+    EXPECT_EQ(gpu.sdfProgram.id(), program);
+    EXPECT_EQ(gpu.sdfCells.id(), cells);
+    const auto inPlace = draw(gpu, edited);
+    const GpuScene fresh = uploadScene(edited, SdfStrategy::Cells, &grid);
+    const auto anew = draw(fresh, edited);
+    EXPECT_TRUE(inPlace.first.data == anew.first.data);
+    EXPECT_TRUE(inPlace.second.data == anew.second.data);
+    EXPECT_FALSE(inPlace.first.data == before.first.data); // the edit shows
+    expectNoGlErrors();
+
+    PreparedScene longer = edited;
+    longer.sdf.instructions.push_back(longer.sdf.instructions.front());
+    EXPECT_FALSE(updateSdfScene(gpu, longer, grid));
 }

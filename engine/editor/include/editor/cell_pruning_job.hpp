@@ -56,6 +56,7 @@ class CellPruningJob {
     std::condition_variable changed_;
     std::optional<CellPruningRequest> waiting_;
     std::optional<CellPruningResult> finished_;
+    SdfCellGrid grid_; // the worker's: the last result's grid, pruned again after an edit
     bool working_ = false;
     bool stopping_ = false;
     SdfCellStatePtr state_; // the worker's alone

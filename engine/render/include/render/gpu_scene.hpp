@@ -51,6 +51,7 @@ struct GpuScene {
     // Its header is kept for updateSdfCells; the buffer has room for a quarter more words.
     gl::Buffer sdfCells;
     GpuSdfCellHeader sdfCellHeader;
+    std::uint64_t sdfCellStamp = 0; // the pack it holds (SdfCellGrid::packStamp)
     SdfCellStats sdfCellStats;
     int sdfCellLevels = 0;
     gl::Buffer materialBuffer; // GpuMaterial[]
@@ -59,6 +60,8 @@ struct GpuScene {
     // kSdfMaterialTextureFirstUnit + slot by bindBuffers.
     std::vector<gl::Texture> materialTextures;
     int sdfInstructionCount = 0;
+    std::size_t sdfCodeCount = 0; // instructions in sdfProgram (the cells' code under Cells)
+    std::size_t sdfDataCount = 0; // entries in sdfData
     SdfProgram sdf;     // the scene's program (not the shells'), kept for the interpreter's first
                         // guess of the nearest part (sdfNearestLeaf, per frame)
     std::string sdfMap; // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
@@ -88,9 +91,17 @@ void setSceneLights(GpuScene& gpu, const PreparedScene& prepared, const std::vec
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfStrategy::Baked,
                      const SdfCellGrid* cells = nullptr);
 
-// Writes `grid`, pruned again (repruneSdfCells) from the grid `gpu.sdfCells` holds, into that
-// buffer: the header and only the words the re-prune changed (SdfCellGrid::changedWords) when
-// they fit, else a new buffer with all of them. The program buffer is the caller's.
+// Writes `grid` into gpu's cell buffer: when it was pruned again (repruneSdfCells) from the very
+// grid the buffer holds (SdfCellGrid::changedSince is the buffer's pack), only the header and
+// the words the re-prune changed; else all of them; a new buffer when they do not fit. The
+// program buffer is the caller's (updateSdfScene writes both).
 void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid);
+
+// An edit of numbers drawn with the cells map, in place: writes `prepared` into gpu's buffers
+// (the program with the cells' code, the SDF data, the materials, the lights) and `grid` into
+// its cells (updateSdfCells), when gpu was uploaded with cells from a scene of the same shape
+// (as many instructions, data entries and materials) and neither has meshes, shells, material
+// textures or an image sky. False, with nothing written, when it does not qualify: upload anew.
+bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellGrid& grid);
 
 } // namespace rmsc

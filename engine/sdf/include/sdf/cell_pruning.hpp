@@ -110,7 +110,8 @@ struct SdfCellGrid {
     // re-prune into the grid it last wrote, the blocks of cells that changed and the lists from
     // the first new one to the end (so a GPU copy of the old words needs only these).
     std::vector<SdfWordRange> changedWords;
-    std::uint64_t packStamp = 0; // which pack wrote the words (0: none)
+    std::uint64_t packStamp = 0;    // which pack wrote the words (0: none)
+    std::uint64_t changedSince = 0; // the pack changedWords count from (0: all words changed)
 };
 
 // A lower bound of a whole program's field from the boxes of its shapes (the floors cell
