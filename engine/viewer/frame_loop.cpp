@@ -253,7 +253,7 @@ void Viewer::pollFiles() {
 void Viewer::updateView(bool waitForBuilds, bool refineAll) {
     const editor::Document& document = session_.document;
     const auto sceneStart = std::chrono::steady_clock::now();
-    gpu_.updateScene(document.scene(), document.revision(), messages_.sceneError);
+    gpu_.updateScene(document.scene(), document.revision(), messages_.sceneError, waitForBuilds);
     gpu_.chooseSdfMap(document.scene(), document.selection, waitForBuilds, frameNumber_,
                       messages_.sceneError);
     if (!waitForBuilds)

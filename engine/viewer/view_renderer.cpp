@@ -24,7 +24,7 @@ bool sameCamera(const Camera& a, const Camera& b) {
 
 } // namespace
 
-ViewRenderer::ViewRenderer() {
+ViewRenderer::ViewRenderer() : preparing_(editorFileSource()) {
     lastRenderedCamera_.fovYDegrees = -1.0f; // no camera is the same: the first frame renders
 }
 
@@ -69,33 +69,29 @@ void ViewRenderer::startWarmer() {
         shaderFiles_);
 }
 
-void ViewRenderer::updateScene(const Scene& scene, std::uint64_t revision,
-                               std::string& sceneError) {
-    if (revision == uploadedRevision_) return;
-    uploadedRevision_ = revision;
-    static const FileSource files = editorFileSource();
-    Diagnostics diagnostics;
-    // Without the bounding hierarchy: its order follows where things are, and a drag must
-    // never change the program's structure (the maps for editing would need another build).
-    std::optional<PreparedScene> next =
-        prepareScene(scene, files, diagnostics, ShellMode::AsScene, false);
-    if (!next) {
+void ViewRenderer::updateScene(const Scene& scene, std::uint64_t revision, std::string& sceneError,
+                               bool wait) {
+    if (revision != preparingRevision_) {
+        preparingRevision_ = revision;
+        preparing_.request(revision, scene);
+        const bool large = prepared_ && effectiveSdfStrategy(prepared_->sdf, SdfStrategy::Baked) ==
+                                            SdfStrategy::Cells;
+        wait = wait || !large;
+    }
+    if (wait) preparing_.waitUntilIdle();
+    std::optional<editor::ScenePreparingResult> result = preparing_.take();
+    // (An older revision's: the newest is compiled next.)
+    if (!result || result->revision != preparingRevision_) return;
+    uploadedRevision_ = result->revision;
+    if (!result->prepared) {
         sceneError =
-            "The scene does not compile (showing the last one that did):\n" + diagnostics.format();
+            "The scene does not compile (showing the last one that did):\n" + result->error;
         return;
     }
-    // The interpreter's program: with the hierarchy, the interpreter skips parts by their boxes,
-    // and its text stays the same whatever the order.
-    boundedSdf_ = {};
-    if (scene.sdf && !next->sdf.instructions.empty())
-        if (std::optional<CompiledSdfScene> compiled =
-                compileSdfScene(*scene.sdf, std::uint32_t(scene.materials.size()),
-                                scene.file.string(), diagnostics, {.bounds = true}))
-            boundedSdf_ = std::move(compiled->main);
-    if (boundedSdf_.instructions.empty()) boundedSdf_ = next->sdf;
+    boundedSdf_ = std::move(result->bounded);
     // Drawn as soon as chooseSdfMap finds a map for it ready, which after a structural edit may
     // take a background build: the picture on screen stays until then.
-    prepared_ = std::move(next);
+    prepared_ = std::move(result->prepared);
     sceneChanged_ = true;
 }
 

@@ -14,6 +14,7 @@
 #include "editor/editing_map.hpp"
 #include "editor/refinement.hpp"
 #include "editor/scene_edits.hpp"
+#include "editor/scene_preparing_job.hpp"
 #include "editor/selection.hpp"
 #include "panel_layout.hpp"
 #include "render/light_gizmo_pass.hpp"
@@ -71,10 +72,13 @@ class ViewRenderer {
     bool useShaders(ShaderFiles files, std::string& error);
     bool hasShaders() const { return renderer_.has_value(); }
 
-    // Compiles `scene` when `revision` is one it has not seen; the result is drawn once
-    // chooseSdfMap finds a map for it ready. A scene that does not compile sets `sceneError`
-    // and the last one that did stays.
-    void updateScene(const Scene& scene, std::uint64_t revision, std::string& sceneError);
+    // Compiles `scene` when `revision` is one it has not seen, on preparing_'s worker: it waits
+    // for the result unless the scene drawn is large (drawn with the cells map: its compile
+    // takes tens of milliseconds) and `wait` is false, in which case a later call takes it.
+    // The newest result is drawn once chooseSdfMap finds a map for it ready. A scene that does
+    // not compile sets `sceneError` and the last one that did stays.
+    void updateScene(const Scene& scene, std::uint64_t revision, std::string& sceneError,
+                     bool wait);
     // Draws with the best SDF map that is ready for the uploaded scene and `selection` (whose
     // subtree stays live), asking the warmer for better ones; `waitForBuilds` waits for them
     // (replay scripts). Logs each switch with `frameNumber`. Sets `sceneError` when the chosen
@@ -118,6 +122,8 @@ class ViewRenderer {
     std::optional<GpuScene> gpuScene_; // what is drawn
     bool shadowMapsDrawn_ = false;     // renderer_'s shadow maps hold gpuScene_'s (its content
                                        // changes only with a new revision, which renders whole)
+    editor::ScenePreparingJob preparing_;
+    std::uint64_t preparingRevision_ = 0;   // the revision last asked for
     std::optional<PreparedScene> prepared_; // last scene that compiled (the newest), its SDF
                                             // without the bounding hierarchy (generated code's)
     SdfProgram boundedSdf_;                 // the same SDF with it, what the interpreter runs

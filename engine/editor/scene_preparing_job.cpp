@@ -1,0 +1,95 @@
+// The worker that compiles the edited scene (see scene_preparing_job.hpp).
+#include "editor/scene_preparing_job.hpp"
+
+#include "core/diagnostics.hpp"
+#include "sdf/compiler.hpp"
+
+#include <chrono>
+#include <exception>
+#include <utility>
+
+namespace rmsc::editor {
+
+ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revision,
+                                        const FileSource& files) {
+    const auto start = std::chrono::steady_clock::now();
+    ScenePreparingResult result;
+    result.revision = revision;
+    Diagnostics diagnostics;
+    result.prepared = prepareScene(scene, files, diagnostics, ShellMode::AsScene, false);
+    if (!result.prepared) {
+        result.error = diagnostics.format();
+        return result;
+    }
+    // The interpreter's program: with the hierarchy, the interpreter skips parts by their
+    // boxes, and its text stays the same whatever the order.
+    if (scene.sdf && !result.prepared->sdf.instructions.empty())
+        if (std::optional<CompiledSdfScene> compiled =
+                compileSdfScene(*scene.sdf, std::uint32_t(scene.materials.size()),
+                                scene.file.string(), diagnostics, {.bounds = true}))
+            result.bounded = std::move(compiled->main);
+    if (result.bounded.instructions.empty()) result.bounded = result.prepared->sdf;
+    result.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+ScenePreparingJob::ScenePreparingJob(FileSource files)
+    : files_(std::move(files)), thread_([this] { run(); }) {}
+
+ScenePreparingJob::~ScenePreparingJob() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+}
+
+void ScenePreparingJob::request(std::uint64_t revision, Scene scene) {
+    {
+        std::lock_guard lock(mutex_);
+        waiting_.emplace(revision, std::move(scene));
+    }
+    changed_.notify_all();
+}
+
+std::optional<ScenePreparingResult> ScenePreparingJob::take() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(finished_, std::nullopt);
+}
+
+void ScenePreparingJob::waitUntilIdle() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [this] { return !waiting_ && !working_; });
+}
+
+void ScenePreparingJob::run() {
+    for (;;) {
+        std::pair<std::uint64_t, Scene> request;
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [this] { return stopping_ || waiting_; });
+            if (stopping_) return;
+            request = std::move(*waiting_);
+            waiting_.reset();
+            working_ = true;
+        }
+        ScenePreparingResult result;
+        try {
+            result = prepareEditedScene(request.second, request.first, files_);
+        } catch (const std::exception& e) { // out of memory: the scene is not drawn
+            result = {};
+            result.revision = request.first;
+            result.error = std::string("the scene could not be compiled: ") + e.what();
+        }
+        {
+            std::lock_guard lock(mutex_);
+            finished_ = std::move(result);
+            working_ = false;
+        }
+        changed_.notify_all();
+    }
+}
+
+} // namespace rmsc::editor

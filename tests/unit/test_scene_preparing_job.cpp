@@ -1,0 +1,70 @@
+// The edited scene compiled on a worker (editor/scene_preparing_job.hpp): a result per
+// revision with the scene's program and its bounded twin, the newest request winning, and a
+// scene that does not compile reported with the reader's message.
+#include "editor/scene_preparing_job.hpp"
+
+#include "core/diagnostics.hpp"
+#include "scene/scene_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace rmsc;
+
+namespace {
+
+Scene sceneOf(const std::string& children) {
+    Diagnostics diagnostics;
+    const std::optional<Scene> scene = parseScene(
+        R"({"version": 1, "sdf": {"children": [)" + children + "]}}", "edited.json", diagnostics);
+    EXPECT_TRUE(scene) << diagnostics.format();
+    return scene ? *scene : Scene{};
+}
+
+std::string spheres(int count) {
+    std::string out;
+    for (int i = 0; i < count; ++i)
+        out += (i ? ", " : "") +
+               std::string(R"({"shape": "sphere", "radius": 0.2, "position": [)") +
+               std::to_string(i) + ", 0, 0]}";
+    return out;
+}
+
+} // namespace
+
+TEST(ScenePreparingJob, PreparesTheNewestRevisionWithItsBoundedProgram) {
+    editor::ScenePreparingJob job(diskFileSource());
+    job.request(1, sceneOf(spheres(3)));
+    job.request(2, sceneOf(spheres(40))); // before or while 1 is prepared: 2 is what is left
+    job.waitUntilIdle();
+    std::optional<editor::ScenePreparingResult> result = job.take();
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->revision, 2u);
+    ASSERT_TRUE(result->prepared) << result->error;
+    // 40 shapes, and with the hierarchy its box tests besides.
+    EXPECT_GE(result->prepared->sdf.instructions.size(), 40u);
+    EXPECT_GT(result->bounded.instructions.size(), result->prepared->sdf.instructions.size());
+    EXPECT_FALSE(job.take()); // taken once
+    // The same as compiling it here.
+    const editor::ScenePreparingResult here =
+        editor::prepareEditedScene(sceneOf(spheres(40)), 2, diskFileSource());
+    ASSERT_TRUE(here.prepared);
+    EXPECT_EQ(here.prepared->sdf.instructions.size(), result->prepared->sdf.instructions.size());
+    EXPECT_EQ(here.bounded.instructions.size(), result->bounded.instructions.size());
+}
+
+TEST(ScenePreparingJob, ASceneThatDoesNotCompileIsReported) {
+    editor::ScenePreparingJob job(diskFileSource());
+    Diagnostics diagnostics;
+    std::optional<Scene> scene = parseScene(
+        R"({"version": 1, "meshes": [{"file": "no-such-mesh.glb"}]})", "edited.json", diagnostics);
+    ASSERT_TRUE(scene) << diagnostics.format();
+    job.request(7, *scene);
+    job.waitUntilIdle();
+    const std::optional<editor::ScenePreparingResult> result = job.take();
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->revision, 7u);
+    EXPECT_FALSE(result->prepared);
+    EXPECT_NE(result->error.find("no-such-mesh.glb"), std::string::npos) << result->error;
+}
