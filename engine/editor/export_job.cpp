@@ -2,7 +2,6 @@
 // runs exportSdf and writes the file (see export_job.hpp).
 #include "editor/export_job.hpp"
 
-#include "core/thread_priority.hpp"
 
 #include "core/number_text.hpp"
 #include "scene/scene_json.hpp"
@@ -146,7 +145,6 @@ bool ExportJob::start(const Scene& scene, const ExportForm& form, int threads, s
 
 void ExportJob::run(Scene scene, ExportSettings settings, MeshFormat format,
                     std::filesystem::path output) {
-    lowerThisThreadsPriority();
     ExportOutcome outcome;
     outcome.output = output;
     Diagnostics diagnostics;

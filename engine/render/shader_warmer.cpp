@@ -2,7 +2,6 @@
 // at a time.
 #include "render/shader_warmer.hpp"
 
-#include "core/thread_priority.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -96,7 +95,6 @@ double ShaderWarmer::buildMs(const std::string& sdfMap) const {
 }
 
 void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
-    lowerThisThreadsPriority();
     std::string error;
     const std::function<void()> release = bindContext(error);
     std::optional<Renderer> renderer;
