@@ -2,7 +2,6 @@
 // runs exportSdf and writes the file (see export_job.hpp).
 #include "editor/export_job.hpp"
 
-
 #include "core/number_text.hpp"
 #include "scene/scene_json.hpp"
 

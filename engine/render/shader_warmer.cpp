@@ -2,7 +2,6 @@
 // at a time.
 #include "render/shader_warmer.hpp"
 
-
 #include <algorithm>
 #include <chrono>
 #include <exception>
