@@ -9,84 +9,33 @@
 
 namespace rmsc::editor {
 
-CellPruningJob::CellPruningJob() : thread_([this] { run(); }) {}
-
-CellPruningJob::~CellPruningJob() {
-    {
-        std::lock_guard lock(mutex_);
-        stopping_ = true;
+CellPruningResult CellPruningJob::prune(const CellPruningRequest& request) {
+    const auto start = std::chrono::steady_clock::now();
+    CellPruningResult result;
+    result.revision = request.revision;
+    result.frame = request.frame;
+    // Pruned again into the grid kept from the last result, so the result says which of its
+    // words changed since (SdfCellGrid::changedWords, changedSince).
+    result.again = state_ && repruneSdfCells(*state_, request.program, grid_, &request.outside);
+    const Aabb& content = request.content;
+    if (result.again && !content.empty() &&
+        (glm::any(glm::lessThan(content.min, grid_.origin)) ||
+         glm::any(glm::greaterThan(content.max, grid_.origin + glm::vec3(grid_.size)))))
+        result.again = false; // moved out of the cube: a new one
+    if (!result.again) {
+        // A full build takes seconds: it runs on a thread of its own at a lower priority (its
+        // threads inherit it), so the frames come first; a re-prune after an edit, tens of
+        // milliseconds, runs here at the UI's.
+        std::thread build([&] {
+            lowerThisThreadsPriority();
+            grid_ = buildSdfCells(request.program, content, {}, &state_, &request.outside);
+        });
+        build.join();
     }
-    changed_.notify_all();
-    thread_.join();
-}
-
-void CellPruningJob::request(CellPruningRequest request) {
-    {
-        std::lock_guard lock(mutex_);
-        waiting_ = std::move(request);
-    }
-    changed_.notify_all();
-}
-
-std::optional<CellPruningResult> CellPruningJob::take() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(finished_, std::nullopt);
-}
-
-bool CellPruningJob::idle() const {
-    std::lock_guard lock(mutex_);
-    return !waiting_ && !working_;
-}
-
-void CellPruningJob::waitUntilIdle() {
-    std::unique_lock lock(mutex_);
-    changed_.wait(lock, [this] { return !waiting_ && !working_; });
-}
-
-void CellPruningJob::run() {
-    for (;;) {
-        CellPruningRequest request;
-        {
-            std::unique_lock lock(mutex_);
-            changed_.wait(lock, [this] { return stopping_ || waiting_; });
-            if (stopping_) return;
-            request = std::move(*waiting_);
-            waiting_.reset();
-            working_ = true;
-        }
-        const auto start = std::chrono::steady_clock::now();
-        CellPruningResult result;
-        result.revision = request.revision;
-        result.frame = request.frame;
-        // Pruned again into the grid kept from the last result, so the result says which of
-        // its words changed since (SdfCellGrid::changedWords, changedSince).
-        result.again = state_ && repruneSdfCells(*state_, request.program, grid_, &request.outside);
-        const Aabb& content = request.content;
-        if (result.again && !content.empty() &&
-            (glm::any(glm::lessThan(content.min, grid_.origin)) ||
-             glm::any(glm::greaterThan(content.max, grid_.origin + glm::vec3(grid_.size)))))
-            result.again = false; // moved out of the cube: a new one
-        if (!result.again) {
-            // A full build takes seconds: it runs on a thread of its own at a lower priority
-            // (its threads inherit it), so the frames come first; a re-prune after an edit, tens
-            // of milliseconds, runs here at the UI's.
-            std::thread build([&] {
-                lowerThisThreadsPriority();
-                grid_ = buildSdfCells(request.program, content, {}, &state_, &request.outside);
-            });
-            build.join();
-        }
-        result.grid = grid_;
-        result.milliseconds =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-        {
-            std::lock_guard lock(mutex_);
-            finished_ = std::move(result);
-            working_ = false;
-        }
-        changed_.notify_all();
-    }
+    result.grid = grid_;
+    result.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
 }
 
 } // namespace rmsc::editor

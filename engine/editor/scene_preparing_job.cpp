@@ -34,61 +34,14 @@ ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revisi
     return result;
 }
 
-ScenePreparingJob::ScenePreparingJob(FileSource files)
-    : files_(std::move(files)), thread_([this] { run(); }) {}
-
-ScenePreparingJob::~ScenePreparingJob() {
-    {
-        std::lock_guard lock(mutex_);
-        stopping_ = true;
-    }
-    changed_.notify_all();
-    thread_.join();
-}
-
-void ScenePreparingJob::request(std::uint64_t revision, Scene scene) {
-    {
-        std::lock_guard lock(mutex_);
-        waiting_.emplace(revision, std::move(scene));
-    }
-    changed_.notify_all();
-}
-
-std::optional<ScenePreparingResult> ScenePreparingJob::take() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(finished_, std::nullopt);
-}
-
-void ScenePreparingJob::waitUntilIdle() {
-    std::unique_lock lock(mutex_);
-    changed_.wait(lock, [this] { return !waiting_ && !working_; });
-}
-
-void ScenePreparingJob::run() {
-    for (;;) {
-        std::pair<std::uint64_t, Scene> request;
-        {
-            std::unique_lock lock(mutex_);
-            changed_.wait(lock, [this] { return stopping_ || waiting_; });
-            if (stopping_) return;
-            request = std::move(*waiting_);
-            waiting_.reset();
-            working_ = true;
-        }
+ScenePreparingResult ScenePreparingJob::prepare(const Request& request) const {
+    try {
+        return prepareEditedScene(request.second, request.first, files_);
+    } catch (const std::exception& e) { // out of memory: the scene is not drawn
         ScenePreparingResult result;
-        try {
-            result = prepareEditedScene(request.second, request.first, files_);
-        } catch (const std::exception& e) { // out of memory: the scene is not drawn
-            result = {};
-            result.revision = request.first;
-            result.error = std::string("the scene could not be compiled: ") + e.what();
-        }
-        {
-            std::lock_guard lock(mutex_);
-            finished_ = std::move(result);
-            working_ = false;
-        }
-        changed_.notify_all();
+        result.revision = request.first;
+        result.error = std::string("the scene could not be compiled: ") + e.what();
+        return result;
     }
 }
 

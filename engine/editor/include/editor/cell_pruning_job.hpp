@@ -7,15 +7,14 @@
 // waits: one that arrives while another is pruned replaces the one waiting.
 #pragma once
 
+#include "editor/newest_request_worker.hpp"
 #include "sdf/bounds.hpp"
 #include "sdf/cell_pruning.hpp"
 #include "sdf/program.hpp"
 
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
 #include <optional>
-#include <thread>
+#include <utility>
 
 namespace rmsc::editor {
 
@@ -37,30 +36,25 @@ struct CellPruningResult {
 
 class CellPruningJob {
   public:
-    CellPruningJob();
-    ~CellPruningJob(); // waits for the pruning under way
-    CellPruningJob(const CellPruningJob&) = delete;
-    CellPruningJob& operator=(const CellPruningJob&) = delete;
+    CellPruningJob() = default;
 
-    void request(CellPruningRequest request);
+    void request(CellPruningRequest request) { worker_.request(std::move(request)); }
     // The newest finished result, once (nullopt while none is new).
-    std::optional<CellPruningResult> take();
+    std::optional<CellPruningResult> take() { return worker_.take(); }
     // Nothing waits and nothing is pruned.
-    bool idle() const;
-    void waitUntilIdle();
+    bool idle() const { return worker_.idle(); }
+    void waitUntilIdle() { worker_.waitUntilIdle(); }
 
   private:
-    void run();
+    CellPruningResult prune(const CellPruningRequest& request); // on the worker
 
-    mutable std::mutex mutex_;
-    std::condition_variable changed_;
-    std::optional<CellPruningRequest> waiting_;
-    std::optional<CellPruningResult> finished_;
-    SdfCellGrid grid_; // the worker's: the last result's grid, pruned again after an edit
-    bool working_ = false;
-    bool stopping_ = false;
-    SdfCellStatePtr state_; // the worker's alone
-    std::thread thread_;    // last: starts once the rest is made
+    // The worker's alone: what the last grid was pruned from, and that grid (the last result's,
+    // pruned again after an edit).
+    SdfCellStatePtr state_;
+    SdfCellGrid grid_;
+    // Last: destroyed first, so the pruning under way ends before what it uses.
+    NewestRequestWorker<CellPruningRequest, CellPruningResult> worker_{
+        [this](CellPruningRequest& request) { return prune(request); }};
 };
 
 } // namespace rmsc::editor

@@ -8,16 +8,15 @@
 #pragma once
 
 #include "core/file_source.hpp"
+#include "editor/newest_request_worker.hpp"
 #include "prepare/prepared_scene.hpp"
 #include "scene/scene.hpp"
 #include "sdf/program.hpp"
 
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
+#include <utility>
 
 namespace rmsc::editor {
 
@@ -37,27 +36,23 @@ ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revisi
 
 class ScenePreparingJob {
   public:
-    explicit ScenePreparingJob(FileSource files);
-    ~ScenePreparingJob(); // waits for the compile under way
-    ScenePreparingJob(const ScenePreparingJob&) = delete;
-    ScenePreparingJob& operator=(const ScenePreparingJob&) = delete;
+    explicit ScenePreparingJob(FileSource files) : files_(std::move(files)) {}
 
-    void request(std::uint64_t revision, Scene scene);
+    void request(std::uint64_t revision, Scene scene) {
+        worker_.request({revision, std::move(scene)});
+    }
     // The newest finished result, once (nullopt while none is new).
-    std::optional<ScenePreparingResult> take();
-    void waitUntilIdle();
+    std::optional<ScenePreparingResult> take() { return worker_.take(); }
+    void waitUntilIdle() { worker_.waitUntilIdle(); }
 
   private:
-    void run();
+    using Request = std::pair<std::uint64_t, Scene>;
+    ScenePreparingResult prepare(const Request& request) const; // on the worker
 
     FileSource files_;
-    std::mutex mutex_;
-    std::condition_variable changed_;
-    std::optional<std::pair<std::uint64_t, Scene>> waiting_;
-    std::optional<ScenePreparingResult> finished_;
-    bool working_ = false;
-    bool stopping_ = false;
-    std::thread thread_; // last: starts once the rest is made
+    // Last: destroyed first, so the compile under way ends before what it uses.
+    NewestRequestWorker<Request, ScenePreparingResult> worker_{
+        [this](Request& request) { return prepare(request); }};
 };
 
 } // namespace rmsc::editor
