@@ -4,7 +4,6 @@
 #include "core/diagnostics.hpp"
 #include "sdf/compiler.hpp"
 
-#include <chrono>
 #include <exception>
 #include <utility>
 
@@ -12,7 +11,6 @@ namespace rmsc::editor {
 
 ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revision,
                                         const FileSource& files) {
-    const auto start = std::chrono::steady_clock::now();
     ScenePreparingResult result;
     result.revision = revision;
     Diagnostics diagnostics;
@@ -29,8 +27,6 @@ ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revisi
                                 scene.file.string(), diagnostics, {.bounds = true}))
             result.bounded = std::move(compiled->main);
     if (result.bounded.instructions.empty()) result.bounded = result.prepared->sdf;
-    result.milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

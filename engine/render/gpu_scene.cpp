@@ -37,6 +37,16 @@ gl::Buffer createCellBuffer(const GpuSdfCellHeader& header, const SdfCellGrid& g
     return buffer;
 }
 
+// Every surface of the scene inside the grid's cube (a scene without planes or infinite
+// repetitions): marches end where their rays leave it (common/sdf_cells.glsl).
+bool everySurfaceInside(const PreparedScene& prepared, const SdfCellGrid& grid) {
+    const SdfBounds whole =
+        prepared.scene.sdf ? sdfNodeBounds(*prepared.scene.sdf) : SdfBounds{false, {}, ""};
+    return whole.bounded && !whole.box.empty() &&
+           glm::all(glm::greaterThanEqual(whole.box.min, grid.origin)) &&
+           glm::all(glm::lessThanEqual(whole.box.max, grid.origin + grid.size));
+}
+
 // The size of `buffer` (0 for none).
 std::size_t bufferBytes(const gl::Buffer& buffer) {
     GLint64 bytes = 0;
@@ -100,6 +110,7 @@ bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellG
     setSceneLights(gpu, prepared, prepared.lights.empty() ? scene.lights : prepared.lights);
     gpu.environment = scene.environment;
     gpu.sdf = prepared.sdf;
+    gpu.sdfCellHeader.info.w = everySurfaceInside(prepared, grid) ? 1u : 0u;
     updateSdfCells(gpu, grid);
     return true;
 }
@@ -234,15 +245,8 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
     if (pruned) {
         GpuSdfCellHeader header;
         header.originSize = glm::vec4(grid.origin, grid.size);
-        // Every surface inside the grid's cube (a scene without planes or infinite
-        // repetitions): marches end where their rays leave it (common/sdf_cells.glsl).
-        const SdfBounds whole =
-            prepared.scene.sdf ? sdfNodeBounds(*prepared.scene.sdf) : SdfBounds{false, {}, ""};
-        const bool inside = whole.bounded && !whole.box.empty() &&
-                            glm::all(glm::greaterThanEqual(whole.box.min, grid.origin)) &&
-                            glm::all(glm::lessThanEqual(whole.box.max, grid.origin + grid.size));
         header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
-                                 inside ? 1u : 0u);
+                                 everySurfaceInside(prepared, grid) ? 1u : 0u);
         gpu.sdfCellHeader = header;
         gpu.sdfCells = createCellBuffer(header, grid);
         gpu.sdfCellStamp = grid.packStamp;

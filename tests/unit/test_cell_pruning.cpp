@@ -330,11 +330,12 @@ Repruned expectRepruneEqualsAFullBuild(const Compiled& before, const Compiled& a
     const std::vector<std::uint32_t> old = r.grid.words;
     EXPECT_TRUE(repruneSdfCells(*r.state, after.program, r.grid)) << what;
     expectChangedWordsComplete(old, r.grid, what);
-    // Only a small part of the words is written again.
+    // Only a small part of the words is written again: 8.5% measured on the 400-sphere grid,
+    // 16% on the groups without floors (whose coarse cells hold every group).
     std::size_t written = 0;
     for (const SdfWordRange& range : r.grid.changedWords)
         written += range.count;
-    EXPECT_LT(written * 4, r.grid.words.size()) << what;
+    EXPECT_LT(written * 5, r.grid.words.size()) << what;
     EXPECT_GT(r.grid.stats.prunedCells, 0u) << what;
     std::mt19937 rng(seed);
     expectSameLists(r.grid, buildSdfCells(after.program, box), rng, what);

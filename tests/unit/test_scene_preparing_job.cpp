@@ -42,8 +42,9 @@ TEST(ScenePreparingJob, PreparesTheNewestRevisionWithItsBoundedProgram) {
     ASSERT_TRUE(result);
     EXPECT_EQ(result->revision, 2u);
     ASSERT_TRUE(result->prepared) << result->error;
-    // 40 shapes, and with the hierarchy its box tests besides.
-    EXPECT_GE(result->prepared->sdf.instructions.size(), 40u);
+    // 40 shapes and the 39 unions of them, and with the hierarchy its box tests besides (79
+    // more, measured).
+    EXPECT_EQ(result->prepared->sdf.instructions.size(), 79u);
     EXPECT_GT(result->bounded.instructions.size(), result->prepared->sdf.instructions.size());
     EXPECT_FALSE(job.take()); // taken once
     // The same as compiling it here.

@@ -25,7 +25,6 @@ struct ScenePreparingResult {
     std::optional<PreparedScene> prepared; // its SDF without the bounding hierarchy
     SdfProgram bounded;                    // the same SDF with it (or without, when it has none)
     std::string error;                     // why it did not compile (prepared empty)
-    double milliseconds = 0.0;
 };
 
 // What the job does for one revision (also callable on its own): prepareScene without the

@@ -94,7 +94,8 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfSt
 // Writes `grid` into gpu's cell buffer: when it was pruned again (repruneSdfCells) from the very
 // grid the buffer holds (SdfCellGrid::changedSince is the buffer's pack), only the header and
 // the words the re-prune changed; else all of them; a new buffer when they do not fit. The
-// program buffer is the caller's (updateSdfScene writes both).
+// program buffer and whether every surface lies inside the grid (the header's info.w, a fact of
+// the scene) are the caller's: updateSdfScene writes all three.
 void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid);
 
 // An edit of numbers drawn with the cells map, in place: writes `prepared` into gpu's buffers
