@@ -151,7 +151,8 @@ Case texturedCube(std::string name, std::string pointer, json image,
     Case c = cubeCase(std::move(name), std::move(pointer), [&](Cube& cube) {
         cube.gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
         cube.gltf["textures"] = {{{"source", 0}}};
-        cube.gltf["images"] = {image};
+        // json::array: clang reads `= {image}` as a copy of the image, gcc as an array of it.
+        cube.gltf["images"] = json::array({image});
     });
     c.files.merge(extraFiles);
     return c;
