@@ -246,8 +246,12 @@ float revolvedVesica(vec3 p, const float* a) {
     const float r = 0.5f * l;
     const float w = std::min(a[6], r);
     const float d = 0.5f * (r * r - w * w) / w;
-    const vec3 h = r * q.x < d * (q.y - r) ? vec3(0.0f, r, 0.0f) : vec3(-d, 0.0f, d + w);
-    return glm::length(q - vec2(h.x, h.y)) - h.z;
+    if (r * q.x < d * (q.y - r)) return glm::length(q - vec2(0.0f, r));
+    // length(q + (d, 0)) - (d + w) as a difference of squares over their roots' sum: d grows
+    // as 1 / w, and the plain difference of two numbers near d keeps none of the distance's
+    // digits for a thin or a far vesica.
+    return (glm::dot(q, q) + 2.0f * d * (q.x - w) - w * w) /
+           (glm::length(q + vec2(d, 0.0f)) + d + w);
 }
 
 float rhombus(vec3 p, const float* a) {

@@ -255,8 +255,11 @@ float sdRevolvedVesica(vec3 p, vec3 a, vec3 b, float width) {
     float r = 0.5 * l;
     float w = min(width, r);
     float d = 0.5 * (r * r - w * w) / w;
-    vec3 h = r * q.x < d * (q.y - r) ? vec3(0.0, r, 0.0) : vec3(-d, 0.0, d + w);
-    return length(q - h.xy) - h.z;
+    if (r * q.x < d * (q.y - r)) return length(q - vec2(0.0, r));
+    // length(q + (d, 0)) - (d + w) as a difference of squares over their roots' sum: d grows
+    // as 1 / w, and the plain difference of two numbers near d keeps none of the distance's
+    // digits for a thin or a far vesica.
+    return (dot(q, q) + 2.0 * d * (q.x - w) - w * w) / (length(q + vec2(d, 0.0)) + d + w);
 }
 
 // A rhombus in the xz plane (half diagonals la, lb), half thickness h, sides rounded by ra.
