@@ -5,15 +5,14 @@
 # SECONDS each, starting from the samples, the seed inputs in tests/fuzz/seeds and the
 # regression inputs in tests/fuzz/regressions. Fails when a fuzzer finds a crash, a sanitizer
 # report, a leak, a hang (an input taking over 10 s) or a memory bomb (over 2 GiB resident, or
-# one allocation over 2 GiB); the input that did it is left in build-fuzz/crashes/ (add it to
+# one allocation over 2 GiB); the input that did it is left in build-asan/crashes/ (add it to
 # tests/fuzz/regressions/<fuzzer>/ with the fix).
 # Usage: tools/fuzz.sh [SECONDS, default 60]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
-build=build-fuzz
-CC=clang CXX=clang++ cmake -S . -B "$build" -DRMSC_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$build" -j"$(nproc)" --target fuzz_scene fuzz_gltf fuzz_gltf_accessors
+build=build-asan # shared with tools/sanitize.sh
+tools/sanitized-build.sh fuzz_scene fuzz_gltf fuzz_gltf_accessors
 mkdir -p "$build/crashes"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 total=0

@@ -17,7 +17,7 @@ packages=(
   libimgui-dev                        # Dear ImGui (with GLFW and OpenGL 3 back ends) for the viewer's editor
   xvfb                                # a virtual X display for the viewer's end-to-end test
   libgtest-dev                        # unit and GPU tests
-  clang libclang-rt-14-dev            # libFuzzer harnesses (tools/fuzz.sh): clang and its fuzzer runtime
+  clang libclang-rt-14-dev            # the sanitizer and fuzzer build (tools/sanitized-build.sh): clang, its runtimes
   python3-jsonschema                  # the CLI test checks the samples against docs/scene.schema.json
   pybind11-dev python3-dev            # the Python module (python/): bindings, Python's headers
   python3-numpy                       # the Python module's images are NumPy arrays

@@ -1,20 +1,13 @@
 #!/usr/bin/env bash
-# Builds rmsc with AddressSanitizer and UndefinedBehaviorSanitizer (gcc) in build-asan and runs
-# the unit, GPU (on whatever headless GL is available, llvmpipe in CI) and CLI tests under them.
+# Builds rmsc with AddressSanitizer and UndefinedBehaviorSanitizer (clang, in build-asan, which
+# tools/fuzz.sh shares: tools/sanitized-build.sh) and runs the unit, GPU (on whatever headless GL is available, llvmpipe in CI) and CLI tests under them.
 # Any sanitizer report fails the run: UBSan is built non-recovering, ASan and LeakSanitizer
 # abort on their first report. Usage: tools/sanitize.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=build-asan
-flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
-# The instrumented code runs a few times slower: each tier's time limit (tests/CMakeLists.txt)
-# is multiplied by 4. -O1 -g1 (line tables, enough for the reports' stacks) compiles in about
-# 60% of the time -O2 -g takes with the sanitizers on; the GPU tests' time is Mesa's, not ours.
-# Only the programs the tests below run are built (not the Python module or the fuzzers).
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1 $flags" \
-  -DCMAKE_C_FLAGS="-O1 -g1 $flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DRMSC_TEST_TIMEOUT_FACTOR=4 >/dev/null
-cmake --build "$build" -j"$(nproc)" --target rmsc rmsc_unit_tests rmsc_gpu_tests rmsc_api_tests
+build=build-asan # shared with tools/fuzz.sh
+# Only the programs the tests below run are built (not the Python module).
+tools/sanitized-build.sh rmsc rmsc_unit_tests rmsc_gpu_tests rmsc_api_tests
 # Unit tests run with LeakSanitizer on. Processes that create a GL context (GPU, CLI and viewer
 # tests) end with two 56-byte blocks allocated inside Mesa's driver, which is unloaded before
 # the leak check, so the report names no module or function and cannot be suppressed narrowly:
