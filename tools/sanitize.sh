@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-asan # shared with tools/fuzz.sh
 # Only the programs the tests below run are built (not the Python module).
-tools/sanitized-build.sh rmsc rmsc_unit_tests rmsc_gpu_tests rmsc_api_tests
+tools/sanitized-build.sh rmsc rmsc_unit_tests rmsc_gpu_tests rmsc_api_tests rmsc_prune_measure
 # Unit tests run with LeakSanitizer on. Processes that create a GL context (GPU, CLI and viewer
 # tests) end with two 56-byte blocks allocated inside Mesa's driver, which is unloaded before
 # the leak check, so the report names no module or function and cannot be suppressed narrowly:
