@@ -128,8 +128,8 @@ DcResult dualContour(const SdfField& field, DcGrid grid, const DcOptions& option
         for (std::int64_t i = 0; i < blockCount; ++i)
             starts[std::size_t(i)] = blockCoord(i);
         std::vector<float> centres(static_cast<std::size_t>(blockCount));
-        if (!field.lattice(grid.origin + 0.5f * voxel * float(B), voxel * float(B), starts.data(),
-                           starts.size(), 1, centres.data()))
+        if (!field.lattice(firstCentre, voxel * float(B), starts.data(), starts.size(), 1,
+                           centres.data()))
             return false;
         for (std::int64_t i = 0; i < blockCount; ++i)
             near[std::size_t(i)] = std::abs(centres[std::size_t(i)]) <= reach ? 1 : 0;

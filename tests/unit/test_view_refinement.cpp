@@ -113,8 +113,12 @@ TEST(Refinement, LaterRefinementsSizeTheirBandsByEachRowsCost) {
         }
         ASSERT_TRUE(r.done());
         SCOPED_TRACE(pass);
-        if (pass == 0) EXPECT_GT(worst, 3.0f * budget); // the mean cost per row
-        if (pass >= 3) EXPECT_LE(worst, budget);
+        if (pass == 0) {
+            EXPECT_GT(worst, 3.0f * budget); // the mean cost per row
+        }
+        if (pass >= 3) {
+            EXPECT_LE(worst, budget);
+        }
         // 81 ms of rows, bands planned for 85% of 12 ms: 8 at the fewest; twice that at most.
         EXPECT_LE(bands, 16);
     }
