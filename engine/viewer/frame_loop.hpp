@@ -74,10 +74,13 @@ class Viewer {
     std::optional<Script> script_;
     editor::InputQueue queue_; // every input event not yet taken by a frame
     InputState input_;
-    double lastInput_ = 0.0;    // when the newest input event taken arrived (glfwGetTime)
-    int scriptFrame_ = 0;       // the replay script's frame: stops while it waits for refining
-    int scriptMods_ = 0;        // the modifiers the script holds
-    int scriptHoldFrames_ = -1; // frames the script has waited for refining; -1: not waiting
+    double lastInput_ = 0.0; // when the newest input event taken arrived (glfwGetTime)
+    int scriptFrame_ = 0;    // the replay script's frame: stops while it waits for refining
+    int scriptMods_ = 0;     // the modifiers the script holds
+    // When the script began to wait for refining or the export (glfwGetTime); -1: not waiting.
+    // A wait longer than kScriptHoldSeconds ends the viewer with an error.
+    double scriptHoldSince_ = -1.0;
+    static constexpr double kScriptHoldSeconds = 300.0;
     bool scriptWaitsForExport_ = false; // the wait is for the export, not the refining
     int frameNumber_ = 0;
     float frameMilliseconds_ = 0.0f;
