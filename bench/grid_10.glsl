@@ -12,26 +12,26 @@ float handBox(vec3 p, float b) {
     vec3 q = abs(p) - b;
     return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
 }
-float handRoundBox(vec3 p) { return handBox(p, 0.32 - 0.08) - 0.08; }
+float handRoundBox(vec3 p) { return handBox(p, 0.40477 - 0.10119) - 0.10119; }
 // The torus turned 90 degrees about x: its ring lies in the xy plane.
-float handTorus(vec3 p) { return length(vec2(length(p.xy) - 0.3, p.z)) - 0.12; }
+float handTorus(vec3 p) { return length(vec2(length(p.xy) - 0.37947, p.z)) - 0.15179; }
 float handCapsule(vec3 p) {
-    p.y -= clamp(p.y, -0.2, 0.2);
-    return length(p) - 0.22;
+    p.y -= clamp(p.y, -0.25298, 0.25298);
+    return length(p) - 0.27828;
 }
 
-// The ten distances in file order.
+// The ten distances in file order: rows of four cells 1.26491 across (4 / sqrt(10)).
 void handShapes(vec3 p, out float d[10]) {
-    d[0] = length(p - vec3(-1.5, 1.5, 0.0)) - 0.42;
-    d[1] = handBox(p - vec3(-0.5, 1.5, 0.0), 0.34);
-    d[2] = handTorus(p - vec3(0.5, 1.5, 0.0));
-    d[3] = handRoundBox(p - vec3(1.5, 1.5, 0.0));
-    d[4] = handCapsule(p - vec3(-1.5, 0.5, 0.0));
-    d[5] = length(p - vec3(-0.5, 0.5, 0.0)) - 0.42;
-    d[6] = handBox(p - vec3(0.5, 0.5, 0.0), 0.34);
-    d[7] = handTorus(p - vec3(1.5, 0.5, 0.0));
-    d[8] = handRoundBox(p - vec3(-1.5, -0.5, 0.0));
-    d[9] = handCapsule(p - vec3(-0.5, -0.5, 0.0));
+    d[0] = length(p - vec3(-1.89737, 1.26491, 0.0)) - 0.53126;
+    d[1] = handBox(p - vec3(-0.63246, 1.26491, 0.0), 0.43007);
+    d[2] = handTorus(p - vec3(0.63246, 1.26491, 0.0));
+    d[3] = handRoundBox(p - vec3(1.89737, 1.26491, 0.0));
+    d[4] = handCapsule(p - vec3(-1.89737, 0.0, 0.0));
+    d[5] = length(p - vec3(-0.63246, 0.0, 0.0)) - 0.53126;
+    d[6] = handBox(p - vec3(0.63246, 0.0, 0.0), 0.43007);
+    d[7] = handTorus(p - vec3(1.89737, 0.0, 0.0));
+    d[8] = handRoundBox(p - vec3(-1.89737, -1.26491, 0.0));
+    d[9] = handCapsule(p - vec3(-0.63246, -1.26491, 0.0));
 }
 
 float sdfDistance(vec3 p) {

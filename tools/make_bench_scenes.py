@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the generated benchmark scenes of samples/bench/: N primitives (1, 10, 100, 1000,
 10000) on a grid facing the camera, sized so that every scene covers about the same share of
-the view (the issue's "equal screen coverage"), cycling through a few primitive kinds and
+the view (the issue's "equal screen coverage": the same total area of cells), cycling through a few primitive kinds and
 materials; binary trees of 256 and 4096 spheres whose levels alternate union and smooth_union
 over an SDF plane, seen with the horizon; a "molecule" of 1000 spheres in one smooth union; and
 1000 mixed shapes with subtractions and modifiers. Run from the repository root:
@@ -46,13 +46,17 @@ def common(name, camera, children):
 
 
 def grid_scene(n):
+    """n shapes in rows of ceil(sqrt(n)), centred on the view. Each shape's cell is 4 / sqrt(n)
+    across, so the cells' total area is 16 square metres for every n: equal coverage also
+    when n is not a square (10 shapes in cells of 4 / ceil(sqrt(10)) would cover 10/16 of it)."""
     side = math.ceil(math.sqrt(n))
-    cell = 4.0 / side
+    rows = math.ceil(n / side)
+    cell = 4.0 / math.sqrt(n)
     children = []
     for i in range(n):
         row, col = divmod(i, side)
         x = (col - (side - 1) / 2) * cell
-        y = ((side - 1) / 2 - row) * cell
+        y = ((rows - 1) / 2 - row) * cell
         node = scaled(KINDS[i % len(KINDS)], cell)
         node["position"] = [round(x, 5), round(y, 5), 0.0]
         node["material"] = "m%d" % (i % len(COLOURS))

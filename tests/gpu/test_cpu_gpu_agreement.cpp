@@ -17,6 +17,10 @@ struct Agreement {
     int idMismatches = 0;
     int depthMismatches = 0;
     int gpuMisses = 0; // of the id mismatches, where the CPU hits SDF and the GPU shows nothing
+    // Of the id mismatches, where the GPU hit an SDF object the CPU's ray passed and the whole
+    // program's distance at the GPU's hit is under the hit threshold there: a ray grazing a
+    // surface, whose two marches sampled it at different points.
+    int grazes = 0;
     std::string firstProblem;
 };
 
@@ -58,6 +62,10 @@ Agreement compare(const PreparedScene& prepared, int width, int height, int step
             if (cpuId != gpuId) {
                 ++a.idMismatches;
                 a.gpuMisses += hit && gpuId == 0;
+                const float gpuT = gpuDepth / forwardness;
+                a.grazes += gpuSdf && !hit &&
+                            sdfDistance(prepared.sdf, scene.camera.position + rd * gpuT) <
+                                scene.render.surfaceEpsilon * std::max(gpuT, 1.0f);
                 if (a.firstProblem.empty())
                     a.firstProblem = "pixel " + std::to_string(x) + "," + std::to_string(row) +
                                      ": GPU id " + std::to_string(gpuId) + ", CPU id " +
@@ -201,10 +209,13 @@ TEST(CpuGpuAgreement, CellsOnABoundedSceneEndRaysAtTheGrid) {
     EXPECT_EQ(everySurfaceInside(grid), 1u);
     EXPECT_EQ(everySurfaceInside(tree), 0u); // its plane reaches past any grid
     const Agreement a = compare(grid, 128, 72, 1, SdfStrategy::Cells);
-    // As tight as measured on llvmpipe: 1,741 of 9,216 pixels hit, no id or depth differs.
+    // As tight as measured on llvmpipe: 2,099 of 9,216 pixels hit; 3 ids differ, each a ray
+    // grazing a shape that the GPU's march stopped on (the whole program's distance at its hit
+    // 0.00765, the threshold 0.00767) and the CPU's stepped past; no depth differs.
     EXPECT_GT(a.sdfHits, a.sampled / 10);
     EXPECT_EQ(a.gpuMisses, 0) << a.firstProblem;
-    EXPECT_EQ(a.idMismatches, 0) << a.firstProblem;
+    EXPECT_EQ(a.idMismatches, a.grazes) << a.firstProblem;
+    EXPECT_LE(a.grazes, a.sampled / 1000);
     EXPECT_EQ(a.depthMismatches, 0) << a.firstProblem;
 }
 
