@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the generated benchmark scenes of samples/bench/: N primitives (1, 10, 100, 1000,
 10000) on a grid facing the camera, sized so that every scene covers about the same share of
-the view (the issue's "equal screen coverage": the same total area of cells), cycling through a few primitive kinds and
-materials; binary trees of 256 and 4096 spheres whose levels alternate union and smooth_union
+the view (the issue's "equal screen coverage": the same total area of cells), cycling through
+a few primitive kinds and materials; binary trees of 256 and 4096 spheres whose levels alternate union and smooth_union
 over an SDF plane, seen with the horizon; a "molecule" of 1000 spheres in one smooth union; and
 1000 mixed shapes with subtractions and modifiers. Run from the repository root:
 python3 tools/make_bench_scenes.py"""

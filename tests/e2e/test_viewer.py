@@ -116,6 +116,28 @@ def marker_pixels(shot, centre, radius=14):
 VERBOSE = os.environ.get("RMSC_E2E_VERBOSE") == "1"
 
 
+class Checks:
+    """The test's checks: check(name, ok, detail) records one (printing it when it fails, or
+    every one when VERBOSE); summary() prints the count and returns the exit code."""
+
+    def __init__(self):
+        self.failures, self.count = [], 0
+
+    def __call__(self, name, ok, detail=""):
+        if not ok or VERBOSE:
+            print(("ok   " if ok else "FAIL ") + name + ("" if ok else f": {detail}"))
+        self.count += 1
+        if not ok:
+            self.failures.append(name)
+
+    def summary(self):
+        if self.failures:
+            print(f"{len(self.failures)} of {self.count} checks failed")
+            return 1
+        print(f"all {self.count} checks passed (RMSC_E2E_VERBOSE=1 prints each, and the viewer's log)")
+        return 0
+
+
 def run_viewer(xvfb_run, rmsc, scene, script, size="640x360", tail=2000, extra=(),
                screen="800x600"):
     """Runs `rmsc view SCENE --script SCRIPT` under Xvfb and prints the end of its log (SCENE
@@ -326,22 +348,11 @@ def responsiveness_main(rmsc, source, xvfb_run, run):
     e2e.viewer_timing): the burst or the timing runs, apart from the editing runs so each has its
     own time limit (and the sanitizer pass can leave out the timing runs, whose figures mean
     nothing there)."""
-    failures, checked = [], []
-
-    def check(name, ok, detail=""):
-        if not ok or VERBOSE:
-            print(("ok   " if ok else "FAIL ") + name + ("" if ok else f": {detail}"))
-        checked.append(name)
-        if not ok:
-            failures.append(name)
+    check = Checks()
 
     with tempfile.TemporaryDirectory(prefix="rmsc-e2e-") as tmp:
         run(rmsc, source, tmp, xvfb_run, check)
-    if failures:
-        print(f"{len(failures)} of {len(checked)} checks failed")
-        return 1
-    print(f"all {len(checked)} checks passed (RMSC_E2E_VERBOSE=1 prints each, and the viewer's log)")
-    return 0
+    return check.summary()
 
 
 # Window-shot rectangles (x0, y0, x1, y1) of the 640x360 window around what the view shows of
@@ -865,14 +876,7 @@ def main():
     if not xvfb_run or not shutil.which("Xvfb"):
         print("SKIP: xvfb-run / Xvfb not installed")
         return SKIP
-    failures, checked = [], []
-
-    def check(name, ok, detail=""):
-        if not ok or VERBOSE:
-            print(("ok   " if ok else "FAIL ") + name + ("" if ok else f": {detail}"))
-        checked.append(name)
-        if not ok:
-            failures.append(name)
+    check = Checks()
 
     with tempfile.TemporaryDirectory(prefix="rmsc-e2e-") as tmp:
         scene = os.path.join(tmp, "scene.json")
@@ -955,11 +959,7 @@ def main():
         export_run(rmsc, source, tmp, xvfb_run, check)
         scale_run(rmsc, source, tmp, xvfb_run, check)
         gltf_run(rmsc, source, tmp, xvfb_run, check)
-    if failures:
-        print(f"{len(failures)} of {len(checked)} checks failed")
-        return 1
-    print(f"all {len(checked)} checks passed (RMSC_E2E_VERBOSE=1 prints each, and the viewer's log)")
-    return 0
+    return check.summary()
 
 
 if __name__ == "__main__":
