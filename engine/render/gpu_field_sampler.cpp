@@ -39,14 +39,7 @@ std::optional<GpuFieldSampler> GpuFieldSampler::create(const SdfProgram& program
     header.stackDepth = std::uint32_t(program.stackDepth);
     header.pointStackDepth = std::uint32_t(program.pointStackDepth);
     header.dataCount = std::uint32_t(program.data.size());
-    std::vector<unsigned char> bytes(
-        std::max(sizeof header + program.instructions.size() * sizeof(GpuSdfInstruction),
-                 std::size_t(kSdfUniformBlockBytes)));
-    std::memcpy(bytes.data(), &header, sizeof header);
-    if (!program.instructions.empty())
-        std::memcpy(bytes.data() + sizeof header, program.instructions.data(),
-                    program.instructions.size() * sizeof(GpuSdfInstruction));
-    sampler.sdfProgram_ = gl::createBufferWithData(GLsizeiptr(bytes.size()), bytes.data());
+    sampler.sdfProgram_ = createSdfProgramBuffer(header, program.instructions);
     std::vector<glm::vec4> data = program.data;
     if (data.empty()) data.emplace_back(0.0f); // a buffer is never empty
     sampler.sdfData_ =
@@ -73,9 +66,7 @@ bool GpuFieldSampler::sample(glm::vec3 origin, float spacing, const glm::ivec3* 
     const gl::Buffer distances =
         gl::createBufferWithData(GLsizeiptr(points * sizeof(float)), nullptr);
     glUseProgram(program_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfProgramBinding, sdfProgram_.id());
-    glBindBufferRange(GL_UNIFORM_BUFFER, kSdfProgramUniformBinding, sdfProgram_.id(), 0,
-                      kSdfUniformBlockBytes);
+    bindSdfProgramBuffer(sdfProgram_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfDataBinding, sdfData_.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frame_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFieldSampleStartBinding, startBuffer.id());

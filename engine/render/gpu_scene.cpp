@@ -3,6 +3,7 @@
 
 #include "gpu_texture.hpp"
 #include "render/gpu_layout.hpp"
+#include "render/sdf_program_buffer.hpp"
 #include "render/shadow_views.hpp"
 
 #include <algorithm>
@@ -15,11 +16,9 @@ namespace {
 
 // A buffer holding `header` followed by `items` (std430: the header is 16 bytes).
 template <class Header, class Item>
-gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& items,
-                                std::size_t minimumBytes = 0) {
+gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& items) {
     static_assert(sizeof(Header) == 16);
-    std::vector<unsigned char> bytes(
-        std::max(sizeof(Header) + items.size() * sizeof(Item), minimumBytes));
+    std::vector<unsigned char> bytes(sizeof(Header) + items.size() * sizeof(Item));
     std::memcpy(bytes.data(), &header, sizeof(Header));
     if (!items.empty())
         std::memcpy(bytes.data() + sizeof(Header), items.data(), items.size() * sizeof(Item));
@@ -95,8 +94,8 @@ bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellG
     sdfHeader.stackDepth = std::uint32_t(prepared.sdf.stackDepth);
     sdfHeader.pointStackDepth = std::uint32_t(prepared.sdf.pointStackDepth);
     sdfHeader.dataCount = std::uint32_t(dataCount);
-    glNamedBufferSubData(gpu.sdfProgram.id(), 0, sizeof sdfHeader, &sdfHeader);
-    glNamedBufferSubData(gpu.sdfProgram.id(), sizeof sdfHeader,
+    glNamedBufferSubData(gpu.sdfProgram.buffer.id(), 0, sizeof sdfHeader, &sdfHeader);
+    glNamedBufferSubData(gpu.sdfProgram.buffer.id(), sizeof sdfHeader,
                          GLsizeiptr(grid.code.size() * sizeof(GpuSdfInstruction)),
                          grid.code.data());
     if (!prepared.sdf.data.empty())
@@ -116,9 +115,7 @@ bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellG
 }
 
 void GpuScene::bindBuffers() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfProgramBinding, sdfProgram.id());
-    glBindBufferRange(GL_UNIFORM_BUFFER, kSdfProgramUniformBinding, sdfProgram.id(), 0,
-                      kSdfUniformBlockBytes);
+    bindSdfProgramBuffer(sdfProgram);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, materialBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer.id());
     for (std::size_t i = 0; i < materialTextures.size(); ++i)
@@ -240,7 +237,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
     // At least as long as its uniform window.
-    gpu.sdfProgram = createHeaderedBuffer(sdfHeader, instructions, kSdfUniformBlockBytes);
+    gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, instructions);
     gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
     if (pruned) {
         GpuSdfCellHeader header;

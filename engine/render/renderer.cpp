@@ -1,6 +1,7 @@
 // Frame orchestration.
 #include "render/renderer.hpp"
 
+#include "render/sdf_program_buffer.hpp"
 #include "sdf/cpu_eval.hpp"
 
 #include <algorithm>
@@ -30,6 +31,19 @@ std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) 
     if (uniformBlockBytes < kSdfUniformBlockBytes) {
         error = "the OpenGL driver's uniform blocks hold " + std::to_string(uniformBlockBytes) +
                 " bytes; rmsc needs " + std::to_string(kSdfUniformBlockBytes);
+        return std::nullopt;
+    }
+    GLint fragmentUnits = 0, texelBufferTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texelBufferTexels);
+    if (fragmentUnits <= GLint(kSdfProgramTexelUnit)) {
+        error = "the OpenGL driver's fragment shaders sample " + std::to_string(fragmentUnits) +
+                " textures; rmsc needs " + std::to_string(kSdfProgramTexelUnit + 1);
+        return std::nullopt;
+    }
+    if (texelBufferTexels < kSdfProgramMaxTexels) {
+        error = "the OpenGL driver's buffer textures hold " + std::to_string(texelBufferTexels) +
+                " texels; rmsc needs " + std::to_string(kSdfProgramMaxTexels);
         return std::nullopt;
     }
     std::optional<PostPass> post = PostPass::create(files, error);

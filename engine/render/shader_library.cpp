@@ -29,6 +29,7 @@ std::vector<GlslConstant> renderGlslConstants() {
         {"SDF_PROGRAM_UNIFORM_BINDING", unit(kSdfProgramUniformBinding)},
         {"SKY_IMAGE_UNIT", unit(kSkyImageUnit)},
         {"SHADOW_MAP_UNIT", unit(kShadowMapUnit)},
+        {"SDF_PROGRAM_TEXEL_UNIT", unit(kSdfProgramTexelUnit)},
         {"SDF_TEXTURE_FIRST_UNIT", unit(kSdfMaterialTextureFirstUnit)},
         {"SDF_TEXTURE_COUNT", glslInt(kMaxSdfMaterialTextures)},
         {"CONE_START_UNIT", unit(kConeStartUnit)},

@@ -85,7 +85,7 @@ bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 // is one of those (an iteration costs every kind of instruction, whatever it finds).
 bool sdfCellsSkipsNext(uint base, uint n, uint count) {
     if (n + 1u >= count) return false;
-    uint op = sdfInstructions[SDF_PROGRAM_AT(base + n + 1u)].opcode;
+    uint op = sdfInstructionHead(SDF_PROGRAM_AT(base + n + 1u)).x;
     return op == SDF_OPCODE_COMBINE || op == SDF_OPCODE_ACCUMULATE;
 }
 
@@ -95,18 +95,18 @@ float sdfDistance(vec3 p) {
     float best = SDF_FAR;
     for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
         uint i = SDF_PROGRAM_AT(base + n);
-        uint op = sdfInstructions[i].opcode;
+        uint op = sdfInstructionHead(i).x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             best = min(best, sdfLeafDistance(i, p));
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best) n += sdfInstructions[i].kind;
+            if (sdfBoundDistance(i, p) >= best) n += sdfInstructionHead(i).y;
         } else if (op == SDF_OPCODE_SEED_BEST) {
-            best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0],
-                                             sdfInstructions[i].params[1],
-                                             sdfInstructions[i].params[2],
-                                             sdfInstructions[i].misc.x));
+            best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0),
+                                             sdfInstructionParams(i, 1),
+                                             sdfInstructionParams(i, 2),
+                                             sdfInstructionMisc(i).x));
         }
 #endif
     }
@@ -120,16 +120,16 @@ SdfSurface sdfSurface(vec3 p) {
     SdfSurface best = sdfEmptySurface(p);
     for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
         uint i = SDF_PROGRAM_AT(base + n);
-        uint op = sdfInstructions[i].opcode;
+        uint op = sdfInstructionHead(i).x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             float d = sdfLeafDistance(i, p);
             if (d < best.distance)
-                best = sdfMaterialSurface(d, sdfInstructions[i].objectId,
-                                          sdfInstructions[i].material, sdfInstructionPoint(i, p));
+                best = sdfMaterialSurface(d, sdfInstructionHead(i).w,
+                                          sdfInstructionHead(i).z, sdfInstructionPoint(i, p));
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructions[i].kind;
+            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructionHead(i).y;
         }
 #endif
     }

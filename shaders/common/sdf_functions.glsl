@@ -33,6 +33,32 @@ layout(std430, binding = SDF_PROGRAM_BINDING) readonly buffer SdfProgramBuffer {
     SdfInstruction sdfInstructions[];
 };
 
+// The same buffer as 16-byte texels (a buffer texture over it, engine/render/
+// sdf_program_buffer.cpp):
+// what the interpreters read at an index that differs between invocations. One texel fetch
+// loads a vec4 where a storage buffer load is one gather per component on llvmpipe: the
+// 10,000-shape grid's cells frame drew in 38.5 ms instead of 48.4 (rmsc bench, 320x180).
+// Instruction i is texels 1 + 8 i to 8 + 8 i (after the 16-byte header), in the order of
+// SdfInstruction. Generated code indexes the buffer with constants, which are cheap either way.
+layout(binding = SDF_PROGRAM_TEXEL_UNIT) uniform samplerBuffer sdfProgramTexels;
+
+vec4 sdfInstructionTexel(uint i, int k) {
+    return texelFetch(sdfProgramTexels, int(1u + 8u * i) + k);
+}
+// x = opcode, y = kind, z = material, w = objectId.
+uvec4 sdfInstructionHead(uint i) {
+    return floatBitsToUint(sdfInstructionTexel(i, 0));
+}
+vec4 sdfInstructionParams(uint i, int row) {
+    return sdfInstructionTexel(i, 1 + row);
+}
+vec4 sdfInstructionRow(uint i, int row) {
+    return sdfInstructionTexel(i, 4 + row);
+}
+vec4 sdfInstructionMisc(uint i) {
+    return sdfInstructionTexel(i, 7);
+}
+
 // Data the instructions index into: polygon points (xy), GpuSdfHeader::dataCount entries.
 // The header and first SDF_UNIFORM_INSTRUCTIONS instructions of the same buffer as a uniform
 // block (kSdfUniformInstructions in engine/sdf/include/sdf/program.hpp): what generated code reads.

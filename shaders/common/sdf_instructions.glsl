@@ -19,14 +19,14 @@
 #endif
 
 bool sdfIsLeaf(uint i) {
-    return sdfInstructions[i].opcode == SDF_OPCODE_SHAPE ||
-           sdfInstructions[i].opcode == SDF_OPCODE_PROFILE;
+    return sdfInstructionHead(i).x == SDF_OPCODE_SHAPE ||
+           sdfInstructionHead(i).x == SDF_OPCODE_PROFILE;
 }
 
 // The point moved into the frame of instruction i (its affine world-to-local rows).
 vec3 sdfInstructionPoint(uint i, vec3 p) {
-    return sdfAffine(sdfInstructions[i].worldToLocal[0], sdfInstructions[i].worldToLocal[1],
-                     sdfInstructions[i].worldToLocal[2], p);
+    return sdfAffine(sdfInstructionRow(i, 0), sdfInstructionRow(i, 1),
+                     sdfInstructionRow(i, 2), p);
 }
 
 // Distance of the shape or profile instruction i at world point p: the primitive evaluated at
@@ -34,28 +34,28 @@ vec3 sdfInstructionPoint(uint i, vec3 p) {
 float sdfLeafDistance(uint i, vec3 p) {
     SDF_COUNT_EVALUATION;
     vec3 q = sdfInstructionPoint(i, p);
-    vec4 a = sdfInstructions[i].params[0];
-    vec4 b = sdfInstructions[i].params[1];
-    vec4 c = sdfInstructions[i].params[2];
-    uint kind = sdfInstructions[i].kind;
+    vec4 a = sdfInstructionParams(i, 0);
+    vec4 b = sdfInstructionParams(i, 1);
+    vec4 c = sdfInstructionParams(i, 2);
+    uint kind = sdfInstructionHead(i).y;
 #if SDF_HAS_PROFILES
-    float d = sdfInstructions[i].opcode == SDF_OPCODE_PROFILE ? sdfProfileUsed(kind, q, a, b, c)
+    float d = sdfInstructionHead(i).x == SDF_OPCODE_PROFILE ? sdfProfileUsed(kind, q, a, b, c)
                                                              : sdfPrimitive(kind, q, a, b, c);
 #else
     float d = sdfPrimitive(kind, q, a, b, c);
 #endif
-    return d * sdfInstructions[i].misc.x;
+    return d * sdfInstructionMisc(i).x;
 }
 
 // A BoundSkip instruction's box distance at p.
 float sdfBoundDistance(uint i, vec3 p) {
-    return sdfBoxDistance(p, sdfInstructions[i].params[0].xyz, sdfInstructions[i].params[1].xyz,
-                          sdfInstructions[i].misc.x);
+    return sdfBoxDistance(p, sdfInstructionParams(i, 0).xyz, sdfInstructionParams(i, 1).xyz,
+                          sdfInstructionMisc(i).x);
 }
 
 #if SDF_HAS_POINT_MODIFIERS
 vec3 sdfInstructionPointModifier(uint i, vec3 p) {
-    return sdfPointModifierUsed(sdfInstructions[i].kind, p, sdfInstructions[i].params[0],
-                            sdfInstructions[i].params[1], sdfInstructions[i].params[2]);
+    return sdfPointModifierUsed(sdfInstructionHead(i).y, p, sdfInstructionParams(i, 0),
+                            sdfInstructionParams(i, 1), sdfInstructionParams(i, 2));
 }
 #endif

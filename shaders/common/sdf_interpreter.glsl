@@ -24,12 +24,12 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_BOUNDS
 #define SDF_DISTANCE_STEP_BOUNDS \
     else if (op == SDF_OPCODE_BOUND_SKIP) { \
-        if (sdfBoundDistance(i, p) >= best) n += sdfInstructions[i].kind; \
+        if (sdfBoundDistance(i, p) >= best) n += sdfInstructionHead(i).y; \
     } else if (op == SDF_OPCODE_SEED_BEST) { \
-        best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
-                                         sdfInstructions[i].params[1], \
-                                         sdfInstructions[i].params[2], \
-                                         sdfInstructions[i].misc.x)); \
+        best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0), \
+                                         sdfInstructionParams(i, 1), \
+                                         sdfInstructionParams(i, 2), \
+                                         sdfInstructionMisc(i).x)); \
     } else if (op == SDF_OPCODE_ACCUMULATE) { \
         --top; \
         best = min(best, stack[top]); \
@@ -61,8 +61,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_DISTANCE_MODIFIERS
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS \
     else if (op == SDF_OPCODE_DISTANCE_MODIFIER) { \
-        stack[top - 1] = sdfDistanceModifierUsed(sdfInstructions[i].kind, stack[top - 1], p, \
-                                                 sdfInstructions[i].params[0]); \
+        stack[top - 1] = sdfDistanceModifierUsed(sdfInstructionHead(i).y, stack[top - 1], p, \
+                                                 sdfInstructionParams(i, 0)); \
     }
 #else
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS
@@ -74,7 +74,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
         float b = stack[top - 1]; \
         float a = stack[top - 2]; \
         stack[top - 2] = \
-            sdfCombineUsed(sdfInstructions[i].kind, a, b, sdfInstructions[i].params[0], weightA); \
+            sdfCombineUsed(sdfInstructionHead(i).y, a, b, sdfInstructionParams(i, 0), weightA); \
         --top; \
     }
 #else
@@ -83,7 +83,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #define SDF_DISTANCE_STEP \
     if (n < count) { \
         uint i = SDF_PROGRAM_AT(base + n); \
-        uint op = sdfInstructions[i].opcode; \
+        uint op = sdfInstructionHead(i).x; \
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) { \
             stack[top] = sdfLeafDistance(i, p); \
             ++top; \
@@ -137,16 +137,16 @@ SdfSurface sdfSurface(vec3 p) {
     stack[0] = best;                      // (read only if the program pushes nothing)
     for (uint n = 0u; n < count; ++n) {
         uint i = SDF_PROGRAM_AT(base + n);
-        uint op = sdfInstructions[i].opcode;
+        uint op = sdfInstructionHead(i).x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
-            stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), sdfInstructions[i].objectId,
-                                            sdfInstructions[i].material,
+            stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), sdfInstructionHead(i).w,
+                                            sdfInstructionHead(i).z,
                                             sdfInstructionPoint(i, p));
             ++top;
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructions[i].kind;
+            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructionHead(i).y;
         } else if (op == SDF_OPCODE_ACCUMULATE) {
             --top;
             if (stack[top].distance < best.distance) best = stack[top];
@@ -170,14 +170,14 @@ SdfSurface sdfSurface(vec3 p) {
 #if SDF_HAS_DISTANCE_MODIFIERS
         else if (op == SDF_OPCODE_DISTANCE_MODIFIER) {
             stack[top - 1].distance = sdfDistanceModifierUsed(
-                sdfInstructions[i].kind, stack[top - 1].distance, p, sdfInstructions[i].params[0]);
+                sdfInstructionHead(i).y, stack[top - 1].distance, p, sdfInstructionParams(i, 0));
         }
 #endif
 #if SDF_HAS_COMBINE
         else if (op == SDF_OPCODE_COMBINE) {
             float w;
-            float d = sdfCombineUsed(sdfInstructions[i].kind, stack[top - 2].distance,
-                                     stack[top - 1].distance, sdfInstructions[i].params[0], w);
+            float d = sdfCombineUsed(sdfInstructionHead(i).y, stack[top - 2].distance,
+                                     stack[top - 1].distance, sdfInstructionParams(i, 0), w);
             stack[top - 2] = sdfBlendSurfaces(stack[top - 2], stack[top - 1], d, w);
             --top;
         }

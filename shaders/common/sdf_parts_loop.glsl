@@ -13,15 +13,15 @@ bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 // (see common/sdf_interpreter.glsl).
 #define SDF_PARTS_STEP \
     if (i < count) { \
-        uint op = sdfInstructions[i].opcode; \
+        uint op = sdfInstructionHead(i).x; \
         if (op == SDF_OPCODE_BOUND_SKIP) { \
-            if (sdfBoundDistance(i, p) >= best) i += sdfInstructions[i].kind; \
+            if (sdfBoundDistance(i, p) >= best) i += sdfInstructionHead(i).y; \
             i += 1u; \
         } else if (op == SDF_OPCODE_SEED_BEST) { \
-            best = min(best, sdfSeedDistance(p, sdfInstructions[i].params[0], \
-                                             sdfInstructions[i].params[1], \
-                                             sdfInstructions[i].params[2], \
-                                             sdfInstructions[i].misc.x)); \
+            best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0), \
+                                             sdfInstructionParams(i, 1), \
+                                             sdfInstructionParams(i, 2), \
+                                             sdfInstructionMisc(i).x)); \
             i += 1u; \
         } else { \
             float d = sdfLeafDistance(i, p); \
@@ -61,17 +61,17 @@ SdfSurface sdfSurface(vec3 p) {
     uint count = sdfHeader.x;
     SdfSurface best = sdfEmptySurface(p);
     for (uint i = 0u; i < count;) {
-        uint op = sdfInstructions[i].opcode;
+        uint op = sdfInstructionHead(i).x;
         if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) i += sdfInstructions[i].kind;
+            if (sdfBoundDistance(i, p) >= best.distance) i += sdfInstructionHead(i).y;
             i += 1u;
         } else if (op == SDF_OPCODE_SEED_BEST) {
             i += 1u;
         } else {
             float d = sdfLeafDistance(i, p);
             if (d < best.distance)
-                best = sdfMaterialSurface(d, sdfInstructions[i].objectId,
-                                          sdfInstructions[i].material, sdfInstructionPoint(i, p));
+                best = sdfMaterialSurface(d, sdfInstructionHead(i).w,
+                                          sdfInstructionHead(i).z, sdfInstructionPoint(i, p));
             i += 2u;
         }
     }

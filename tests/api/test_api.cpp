@@ -810,9 +810,10 @@ std::vector<GLint64> stateSnapshot() {
         state.push_back(GLint64(f * 1000));
     glGetFloatv(GL_POLYGON_OFFSET_FACTOR, floats);
     state.push_back(GLint64(floats[0] * 1000));
-    for (GLuint unit = 0; unit < 16; ++unit) {
+    for (GLuint unit = 0; unit < 17; ++unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
         integers(GL_TEXTURE_BINDING_2D, 1);
+        integers(GL_TEXTURE_BINDING_BUFFER, 1);
         integers(GL_TEXTURE_BINDING_2D_ARRAY, 1);
         integers(GL_TEXTURE_BINDING_CUBE_MAP, 1);
         integers(GL_SAMPLER_BINDING, 1);
@@ -855,6 +856,10 @@ TEST(Api, CallsLeaveTheHostsGlStateAsTheyFoundIt) {
     glBindTextureUnit(0, texture);
     glBindTextureUnit(13, texture);
     glBindTextureUnit(15, texture);
+    GLuint texels = 0; // on the unit of rmsc's SDF program texels
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &texels);
+    glTextureBuffer(texels, GL_R32F, buffer);
+    glBindTextureUnit(16, texels);
     glBindSampler(4, sampler);
     glActiveTexture(GL_TEXTURE3);
     glEnable(GL_SCISSOR_TEST);
@@ -909,13 +914,14 @@ TEST(Api, CallsLeaveTheHostsGlStateAsTheyFoundIt) {
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindVertexArray(0);
-    for (GLuint unit : {0u, 13u, 15u})
+    for (GLuint unit : {0u, 13u, 15u, 16u})
         glBindTextureUnit(unit, 0);
     glBindSampler(4, 0);
     glDeleteFramebuffers(1, &other);
     glDeleteVertexArrays(1, &vertexArray);
     glDeleteSamplers(1, &sampler);
     glDeleteTextures(1, &texture);
+    glDeleteTextures(1, &texels);
     glDeleteBuffers(1, &buffer);
 }
 

@@ -109,9 +109,9 @@ TEST(CellUpload, AnEditOfNumbersIsWrittenIntoTheSceneInPlace) {
     for (Material& m : edited.materials)
         m.baseColor = glm::vec3(0.9f, 0.2f, 0.1f);
     ASSERT_TRUE(repruneSdfCells(*state, edited.sdf, grid));
-    const GLuint program = gpu.sdfProgram.id(), cells = gpu.sdfCells.id();
+    const GLuint program = gpu.sdfProgram.buffer.id(), cells = gpu.sdfCells.id();
     ASSERT_TRUE(updateSdfScene(gpu, edited, grid));
-    EXPECT_EQ(gpu.sdfProgram.id(), program);
+    EXPECT_EQ(gpu.sdfProgram.buffer.id(), program);
     EXPECT_EQ(gpu.sdfCells.id(), cells);
     const auto inPlace = draw(gpu, edited);
     const GpuScene fresh = uploadScene(edited, SdfStrategy::Cells, &grid);

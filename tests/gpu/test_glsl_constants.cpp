@@ -54,6 +54,7 @@ std::vector<Expected> expectedConstants() {
         {"SDF_PROGRAM_UNIFORM_BINDING", std::to_string(kSdfProgramUniformBinding)},
         {"SKY_IMAGE_UNIT", std::to_string(kSkyImageUnit)},
         {"SHADOW_MAP_UNIT", std::to_string(kShadowMapUnit)},
+        {"SDF_PROGRAM_TEXEL_UNIT", std::to_string(kSdfProgramTexelUnit)},
         {"SDF_TEXTURE_FIRST_UNIT", std::to_string(kSdfMaterialTextureFirstUnit)},
         {"SDF_TEXTURE_COUNT", std::to_string(kMaxSdfMaterialTextures)},
         {"CONE_START_UNIT", std::to_string(kConeStartUnit)},
@@ -148,7 +149,8 @@ TEST(GlslConstants, BuffersBlocksAndSamplersAreWhereTheRendererBindsThem) {
 #include "common/march_statistics.glsl"
 out vec4 color;
 void main() {
-    color = sdfUniformInstructions[0].params[0] + sdfInstructions[0].params[0] + sdfData[0] +
+    color = sdfUniformInstructions[0].params[0] + sdfInstructions[0].params[0] +
+            sdfInstructionTexel(0u, 0) + sdfData[0] +
             materials[0].baseColorMetallic + lights[0].colorIntensity + shadowViews[0].params +
             frame.viewport + texture(uShadowMaps, vec4(0.5)) + texture(uSkyImage, vec2(0.5)) +
             vec4(float(marchStatistics[0]));
@@ -172,6 +174,7 @@ void main() {
     EXPECT_EQ(resource(*p, GL_UNIFORM_BLOCK, "SdfProgramUniforms", GL_BUFFER_BINDING),
               GLint(kSdfProgramUniformBinding));
     EXPECT_EQ(samplerUnit(*p, "uShadowMaps"), GLint(kShadowMapUnit));
+    EXPECT_EQ(samplerUnit(*p, "sdfProgramTexels"), GLint(kSdfProgramTexelUnit));
     EXPECT_EQ(samplerUnit(*p, "uSkyImage"), GLint(kSkyImageUnit));
     for (int slot = 0; slot < kMaxSdfMaterialTextures; ++slot) {
         const std::string name = "uSdfTexture" + std::to_string(slot);

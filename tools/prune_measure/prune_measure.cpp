@@ -25,6 +25,7 @@
 #include "gl/program.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_layout.hpp"
+#include "render/sdf_program_buffer.hpp"
 #include "render/shader_library.hpp"
 #include "scene/scene_json.hpp"
 #include "sdf/cell_pruning.hpp"
@@ -129,13 +130,7 @@ class GpuPruner {
         header.stackDepth = std::uint32_t(program.stackDepth);
         header.pointStackDepth = std::uint32_t(program.pointStackDepth);
         header.dataCount = std::uint32_t(program.data.size());
-        std::vector<unsigned char> bytes(
-            std::max(sizeof header + program.instructions.size() * sizeof(GpuSdfInstruction),
-                     std::size_t(kSdfUniformBlockBytes)));
-        std::memcpy(bytes.data(), &header, sizeof header);
-        std::memcpy(bytes.data() + sizeof header, program.instructions.data(),
-                    program.instructions.size() * sizeof(GpuSdfInstruction));
-        sdfProgram_ = gl::createBufferWithData(GLsizeiptr(bytes.size()), bytes.data());
+        sdfProgram_ = createSdfProgramBuffer(header, program.instructions);
         std::vector<glm::vec4> data = program.data;
         if (data.empty()) data.emplace_back(0.0f);
         sdfData_ =
@@ -152,9 +147,7 @@ class GpuPruner {
         const auto started = std::chrono::steady_clock::now();
         GpuPruneResult result;
         glUseProgram(program_.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfProgramBinding, sdfProgram_.id());
-        glBindBufferRange(GL_UNIFORM_BUFFER, kSdfProgramUniformBinding, sdfProgram_.id(), 0,
-                          kSdfUniformBlockBytes);
+        bindSdfProgramBuffer(sdfProgram_);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfDataBinding, sdfData_.id());
         glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frame_.id());
         glUniform1f(slack_, 1e-5f * size); // the CPU pruner's slack (Pruner::slack)
@@ -260,7 +253,8 @@ class GpuPruner {
     }
 
     gl::Program program_;
-    gl::Buffer sdfProgram_, sdfData_, frame_;
+    SdfProgramBuffer sdfProgram_;
+    gl::Buffer sdfData_, frame_;
     GLint info_ = -1, slack_ = -1;
 };
 

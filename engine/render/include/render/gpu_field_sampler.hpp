@@ -5,6 +5,7 @@
 #pragma once
 
 #include "gl/handles.hpp"
+#include "render/sdf_program_buffer.hpp"
 #include "sdf/program.hpp"
 
 #include <glm/glm.hpp>
@@ -29,7 +30,8 @@ class GpuFieldSampler {
   private:
     GpuFieldSampler() = default;
     gl::Program program_;
-    gl::Buffer sdfProgram_, sdfData_, frame_;
+    SdfProgramBuffer sdfProgram_;
+    gl::Buffer sdfData_, frame_;
     GLint latticeLocation_ = -1, infoLocation_ = -1;
 };
 

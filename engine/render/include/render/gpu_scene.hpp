@@ -6,6 +6,7 @@
 #include "prepare/prepared_scene.hpp"
 #include "render/gpu_layout.hpp"
 #include "render/gpu_mesh.hpp"
+#include "render/sdf_program_buffer.hpp"
 #include "sdf/cell_pruning.hpp"
 #include "sdf/glsl_codegen.hpp"
 
@@ -44,7 +45,7 @@ struct GpuScene {
     std::vector<std::vector<MeshMaterial>> meshMaterials; // per mesh, from the glTF
     std::vector<GpuMeshInstance> instances;
     std::vector<Material> materials; // copy of PreparedScene::materials, for overrides
-    gl::Buffer sdfProgram;           // GpuSdfHeader + instructions
+    SdfProgramBuffer sdfProgram;     // GpuSdfHeader + instructions
     gl::Buffer sdfData;              // SdfProgram::data (vec4[], at least one entry)
     // The Cells strategy's cell table and programs (GpuSdfCellHeader + SdfCellGrid::words),
     // none for the other strategies, and what building it measured.

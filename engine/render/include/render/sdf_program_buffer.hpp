@@ -1,0 +1,30 @@
+// The SDF program buffer every SDF pass reads (shaders/common/sdf_functions.glsl): a
+// GpuSdfHeader and the instructions, bound three ways: as a storage buffer, its first
+// kSdfUniformBlockBytes as the uniform window generated code reads, and as RGBA32F texels (a
+// buffer texture over the same storage) that the interpreters fetch.
+#pragma once
+
+#include "gl/handles.hpp"
+#include "sdf/program.hpp"
+
+#include <vector>
+
+namespace rmsc {
+
+struct SdfProgramBuffer {
+    gl::Buffer buffer;  // GpuSdfHeader + instructions, at least kSdfUniformBlockBytes
+    gl::Texture texels; // the same storage, 16 bytes a texel
+};
+
+// The texels a driver must allow in a buffer texture for the largest program rmsc writes
+// (checked by Renderer::create): 2^24, far above kSdfInstructions' 8 texels each with the cells'
+// code and the shells' programs after it; desktop drivers and llvmpipe allow 2^27.
+constexpr int kSdfProgramMaxTexels = 1 << 24;
+
+SdfProgramBuffer createSdfProgramBuffer(const GpuSdfHeader& header,
+                                        const std::vector<GpuSdfInstruction>& instructions);
+
+// Binds it at kSdfProgramBinding, kSdfProgramUniformBinding and kSdfProgramTexelUnit.
+void bindSdfProgramBuffer(const SdfProgramBuffer& program);
+
+} // namespace rmsc
