@@ -1,5 +1,5 @@
-// The saved state. Texture bindings are saved for every target on units 0-16 (rmsc binds units
-// 0-16, and binding texture 0 to a unit clears all of its targets), buffer bindings for the
+// The saved state. Texture bindings are saved for every target on units 0-17 (rmsc binds units
+// 0-17, and binding texture 0 to a unit clears all of its targets), buffer bindings for the
 // indices rmsc's uniform and storage blocks use.
 #include "gl/state_guard.hpp"
 
@@ -27,7 +27,7 @@ constexpr GLenum kTextureTargets[][2] = {
     {GL_TEXTURE_BUFFER, GL_TEXTURE_BINDING_BUFFER},
     {GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BINDING_2D_MULTISAMPLE},
     {GL_TEXTURE_2D_MULTISAMPLE_ARRAY, GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY}};
-constexpr GLuint kTextureUnits = 17;
+constexpr GLuint kTextureUnits = 18;
 constexpr GLuint kUniformBufferIndices = 4;
 constexpr GLuint kStorageBufferIndices = 8;
 constexpr GLuint kDrawBuffers = 8;

@@ -26,14 +26,17 @@ gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& i
 }
 
 // The cells buffer: the header, the grid's words, then room for a quarter more words (an edit's
-// new lists go after the old ones: updateSdfCells writes them in place).
-gl::Buffer createCellBuffer(const GpuSdfCellHeader& header, const SdfCellGrid& grid) {
+// new lists go after the old ones: updateSdfCells writes them in place), a whole number of
+// 8-byte texels; and its texels (shaders/common/sdf_cells.glsl, sdfCellTexels).
+void createCellBuffer(GpuScene& gpu, const GpuSdfCellHeader& header, const SdfCellGrid& grid) {
     const std::size_t wordBytes = grid.words.size() * sizeof(std::uint32_t);
-    gl::Buffer buffer = gl::createBufferWithData(
-        GLsizeiptr(sizeof header + wordBytes + wordBytes / 4 + sizeof(std::uint32_t)), nullptr);
-    glNamedBufferSubData(buffer.id(), 0, sizeof header, &header);
-    glNamedBufferSubData(buffer.id(), sizeof header, GLsizeiptr(wordBytes), grid.words.data());
-    return buffer;
+    const std::size_t bytes = (sizeof header + wordBytes + wordBytes / 4 + 8 + 7) / 8 * 8;
+    gpu.sdfCells = gl::createBufferWithData(GLsizeiptr(bytes), nullptr);
+    glNamedBufferSubData(gpu.sdfCells.id(), 0, sizeof header, &header);
+    glNamedBufferSubData(gpu.sdfCells.id(), sizeof header, GLsizeiptr(wordBytes),
+                         grid.words.data());
+    gpu.sdfCellTexels = gl::createTexture(GL_TEXTURE_BUFFER);
+    glTextureBuffer(gpu.sdfCellTexels.id(), GL_RG32UI, gpu.sdfCells.id());
 }
 
 // Every surface of the scene inside the grid's cube (a scene without planes or infinite
@@ -66,7 +69,7 @@ void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid) {
     const bool fromHeld = grid.changedSince != 0 && grid.changedSince == gpu.sdfCellStamp;
     gpu.sdfCellStamp = grid.packStamp;
     if (sizeof header + grid.words.size() * sizeof(std::uint32_t) > capacity) {
-        gpu.sdfCells = createCellBuffer(header, grid);
+        createCellBuffer(gpu, header, grid);
         gpu.sdfCellStats.bytes = bufferBytes(gpu.sdfCells);
         return;
     }
@@ -122,8 +125,10 @@ void GpuScene::bindBuffers() const {
         glBindTextureUnit(kSdfMaterialTextureFirstUnit + GLuint(i), materialTextures[i].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, shadowViewBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfDataBinding, sdfData.id());
-    if (sdfCells.id() != 0)
+    if (sdfCells.id() != 0) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfCellBinding, sdfCells.id());
+        glBindTextureUnit(kSdfCellTexelUnit, sdfCellTexels.id());
+    }
 }
 
 void setSceneLights(GpuScene& gpu, const PreparedScene& prepared,
@@ -245,7 +250,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
         header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
                                  everySurfaceInside(prepared, grid) ? 1u : 0u);
         gpu.sdfCellHeader = header;
-        gpu.sdfCells = createCellBuffer(header, grid);
+        createCellBuffer(gpu, header, grid);
         gpu.sdfCellStamp = grid.packStamp;
         gpu.sdfCellStats = grid.stats;
         gpu.sdfCellStats.bytes = bufferBytes(gpu.sdfCells);

@@ -36,9 +36,9 @@ std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) 
     GLint fragmentUnits = 0, texelBufferTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texelBufferTexels);
-    if (fragmentUnits <= GLint(kSdfProgramTexelUnit)) {
+    if (fragmentUnits <= GLint(kSdfCellTexelUnit)) {
         error = "the OpenGL driver's fragment shaders sample " + std::to_string(fragmentUnits) +
-                " textures; rmsc needs " + std::to_string(kSdfProgramTexelUnit + 1);
+                " textures; rmsc needs " + std::to_string(kSdfCellTexelUnit + 1);
         return std::nullopt;
     }
     if (texelBufferTexels < kSdfProgramMaxTexels) {

@@ -30,6 +30,7 @@ std::vector<GlslConstant> renderGlslConstants() {
         {"SKY_IMAGE_UNIT", unit(kSkyImageUnit)},
         {"SHADOW_MAP_UNIT", unit(kShadowMapUnit)},
         {"SDF_PROGRAM_TEXEL_UNIT", unit(kSdfProgramTexelUnit)},
+        {"SDF_CELL_TEXEL_UNIT", unit(kSdfCellTexelUnit)},
         {"SDF_TEXTURE_FIRST_UNIT", unit(kSdfMaterialTextureFirstUnit)},
         {"SDF_TEXTURE_COUNT", glslInt(kMaxSdfMaterialTextures)},
         {"CONE_START_UNIT", unit(kConeStartUnit)},

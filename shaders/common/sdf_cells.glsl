@@ -16,6 +16,20 @@ layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
     uint sdfCellWords[];
 };
 
+// The same buffer as pairs of words (a buffer texture over it, engine/render/gpu_scene.cpp),
+// read at indices that differ between pixels: a cell's two words in one fetch, where llvmpipe
+// loads storage-buffer words one at a time (see sdfProgramTexels in common/sdf_functions.glsl).
+// Word n of sdfCellWords is in texel 4 + n / 2 (after the 32-byte header).
+layout(binding = SDF_CELL_TEXEL_UNIT) uniform usamplerBuffer sdfCellTexels;
+
+uvec2 sdfCellPair(uint k) {
+    return texelFetch(sdfCellTexels, int(4u + k)).xy;
+}
+uint sdfCellWord(uint n) {
+    uvec2 pair = sdfCellPair(n >> 1u);
+    return (n & 1u) == 0u ? pair.x : pair.y;
+}
+
 // How far along the ray ro + t rd a surface can be: where the ray leaves the grid's cube when
 // every surface lies inside it (nothing is outside to meet: 0 when the ray misses the cube), else
 // tMax. The march stops there instead of running the whole program outside the grid until
@@ -32,7 +46,7 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
     return leave < max(enter, 0.0) ? 0.0 : min(tMax, leave);
 }
 
-#define SDF_PROGRAM_AT(n) sdfCellWords[n]
+#define SDF_PROGRAM_AT(n) sdfCellWord(n)
 
 // The list of the program that runs at p, as sdfCellRange in engine/sdf/cell_pruning.cpp. The
 // descent is written out level by level (at most SDF_CELL_MAX_LEVELS): a loop's iterations
@@ -42,14 +56,13 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
 #define SDF_CELL_LEVEL(level) \
     if (block != 0xffffffffu && level < levels) { \
         uvec3 d = (c >> (2u * (levels - 1u - level))) & 3u; \
-        uint w = 2u * (block * 64u + d.x + 4u * d.y + 16u * d.z); \
-        uint e = sdfCellWords[w]; \
-        if ((e & 0x80000000u) == 0u) { \
-            base = e; \
-            count = sdfCellWords[w + 1u]; \
+        uvec2 e = sdfCellPair(block * 64u + d.x + 4u * d.y + 16u * d.z); \
+        if ((e.x & 0x80000000u) == 0u) { \
+            base = e.x; \
+            count = e.y; \
             block = 0xffffffffu; \
         } else { \
-            block = e & 0x7fffffffu; \
+            block = e.x & 0x7fffffffu; \
         } \
     }
 void sdfProgramRange(vec3 p, out uint base, out uint count) {

@@ -810,7 +810,7 @@ std::vector<GLint64> stateSnapshot() {
         state.push_back(GLint64(f * 1000));
     glGetFloatv(GL_POLYGON_OFFSET_FACTOR, floats);
     state.push_back(GLint64(floats[0] * 1000));
-    for (GLuint unit = 0; unit < 17; ++unit) {
+    for (GLuint unit = 0; unit < 18; ++unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
         integers(GL_TEXTURE_BINDING_2D, 1);
         integers(GL_TEXTURE_BINDING_BUFFER, 1);
@@ -856,10 +856,11 @@ TEST(Api, CallsLeaveTheHostsGlStateAsTheyFoundIt) {
     glBindTextureUnit(0, texture);
     glBindTextureUnit(13, texture);
     glBindTextureUnit(15, texture);
-    GLuint texels = 0; // on the unit of rmsc's SDF program texels
+    GLuint texels = 0; // on the units of rmsc's SDF program and cell texels
     glCreateTextures(GL_TEXTURE_BUFFER, 1, &texels);
     glTextureBuffer(texels, GL_R32F, buffer);
     glBindTextureUnit(16, texels);
+    glBindTextureUnit(17, texels);
     glBindSampler(4, sampler);
     glActiveTexture(GL_TEXTURE3);
     glEnable(GL_SCISSOR_TEST);
@@ -891,6 +892,17 @@ TEST(Api, CallsLeaveTheHostsGlStateAsTheyFoundIt) {
     renderer().compile(edited);
     renderer().render(edited, 16, 16, Aov::Depth);
     EXPECT_EQ(stateSnapshot(), before) << "after compile and render";
+    // More shapes than generated code takes (limits::kGeneratedCodeShapes, 160): drawn with the
+    // cells map, which binds the cell table's texels too.
+    std::string many = R"({"version": 1, "sdf": {"children": [)";
+    for (int i = 0; i < 200; ++i)
+        many += std::string(i ? ", " : "") +
+                R"({"shape": "sphere", "radius": 0.05, "position": [)" +
+                std::to_string(0.1 * (i % 20) - 1.0) + ", " + std::to_string(0.1 * (i / 20) - 0.5) +
+                ", 0]}";
+    many += "]}}";
+    renderer().render(Scene::fromJson(many), 16, 16, Aov::Depth);
+    EXPECT_EQ(stateSnapshot(), before) << "after a scene drawn with the cells map";
     GLint polygonMode[2] = {};
     glGetIntegerv(GL_POLYGON_MODE, polygonMode);
     EXPECT_EQ(polygonMode[0], GL_LINE);
@@ -914,7 +926,7 @@ TEST(Api, CallsLeaveTheHostsGlStateAsTheyFoundIt) {
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindVertexArray(0);
-    for (GLuint unit : {0u, 13u, 15u, 16u})
+    for (GLuint unit : {0u, 13u, 15u, 16u, 17u})
         glBindTextureUnit(unit, 0);
     glBindSampler(4, 0);
     glDeleteFramebuffers(1, &other);

@@ -55,6 +55,7 @@ std::vector<Expected> expectedConstants() {
         {"SKY_IMAGE_UNIT", std::to_string(kSkyImageUnit)},
         {"SHADOW_MAP_UNIT", std::to_string(kShadowMapUnit)},
         {"SDF_PROGRAM_TEXEL_UNIT", std::to_string(kSdfProgramTexelUnit)},
+        {"SDF_CELL_TEXEL_UNIT", std::to_string(kSdfCellTexelUnit)},
         {"SDF_TEXTURE_FIRST_UNIT", std::to_string(kSdfMaterialTextureFirstUnit)},
         {"SDF_TEXTURE_COUNT", std::to_string(kMaxSdfMaterialTextures)},
         {"CONE_START_UNIT", std::to_string(kConeStartUnit)},

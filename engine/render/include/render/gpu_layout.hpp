@@ -36,10 +36,11 @@ enum UboBinding : unsigned { kFrameBinding = 0, kSdfProgramUniformBinding = 1 };
 // shadows.glsl); passes keep their own textures on lower units.
 enum LightingTextureUnit : unsigned { kSkyImageUnit = 14, kShadowMapUnit = 15 };
 
-// The texture unit of the SDF program buffer's texels (render/sdf_program_buffer.hpp): after
-// every other unit, so the march pass samples 17 textures (Renderer::create checks the driver
-// allows it; desktop drivers and llvmpipe allow 32).
-enum SdfProgramTexelUnit : unsigned { kSdfProgramTexelUnit = 16 };
+// The texture units of the SDF program buffer's texels (render/sdf_program_buffer.hpp) and of
+// the cell buffer's (GpuScene::sdfCellTexels): after every other unit, so the march pass samples
+// 18 textures (Renderer::create checks the driver allows it; desktop drivers and llvmpipe
+// allow 32).
+enum SdfTexelUnit : unsigned { kSdfProgramTexelUnit = 16, kSdfCellTexelUnit = 17 };
 
 // The header of the cell buffer (shaders/common/sdf_cells.glsl), before SdfCellGrid::words.
 struct GpuSdfCellHeader {

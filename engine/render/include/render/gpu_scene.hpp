@@ -51,6 +51,7 @@ struct GpuScene {
     // none for the other strategies, and what building it measured.
     // Its header is kept for updateSdfCells; the buffer has room for a quarter more words.
     gl::Buffer sdfCells;
+    gl::Texture sdfCellTexels; // the same storage as pairs of words (RG32UI, 8-byte texels)
     GpuSdfCellHeader sdfCellHeader;
     std::uint64_t sdfCellStamp = 0; // the pack it holds (SdfCellGrid::packStamp)
     SdfCellStats sdfCellStats;

@@ -16,9 +16,10 @@ struct SdfProgramBuffer {
     gl::Texture texels; // the same storage, 16 bytes a texel
 };
 
-// The texels a driver must allow in a buffer texture for the largest program rmsc writes
-// (checked by Renderer::create): 2^24, far above kSdfInstructions' 8 texels each with the cells'
-// code and the shells' programs after it; desktop drivers and llvmpipe allow 2^27.
+// The texels a driver must allow in a buffer texture for the largest program or cell table rmsc
+// writes (checked by Renderer::create): 2^24, far above kSdfInstructions' 8 texels each with
+// the cells' code and the shells' programs after it, and above the 8-byte texels of
+// limits::kSdfCells' table and lists; desktop drivers and llvmpipe allow 2^27.
 constexpr int kSdfProgramMaxTexels = 1 << 24;
 
 SdfProgramBuffer createSdfProgramBuffer(const GpuSdfHeader& header,
