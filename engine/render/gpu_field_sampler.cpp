@@ -8,7 +8,6 @@
 #include "sdf/glsl_codegen.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <vector>
 
 namespace rmsc {

@@ -241,7 +241,6 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
     if (sdfData.empty()) sdfData.emplace_back(0.0f); // a buffer is never empty
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
-    // At least as long as its uniform window.
     gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, instructions);
     gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
     if (pruned) {

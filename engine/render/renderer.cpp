@@ -41,9 +41,9 @@ std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) 
                 " textures; rmsc needs " + std::to_string(kSdfCellTexelUnit + 1);
         return std::nullopt;
     }
-    if (texelBufferTexels < kSdfProgramMaxTexels) {
+    if (texelBufferTexels < kSdfMaxBufferTexels) {
         error = "the OpenGL driver's buffer textures hold " + std::to_string(texelBufferTexels) +
-                " texels; rmsc needs " + std::to_string(kSdfProgramMaxTexels);
+                " texels; rmsc needs " + std::to_string(kSdfMaxBufferTexels);
         return std::nullopt;
     }
     std::optional<PostPass> post = PostPass::create(files, error);

@@ -13,13 +13,13 @@ layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
     vec4 sdfCellOrigin; // xyz = the grid cube's corner, w = its edge
     uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the whole program's list, w = 1 when
                         // every surface lies inside the grid's cube
-    uint sdfCellWords[];
+    // then the words (SdfCellGrid::words), read through sdfCellTexels below
 };
 
 // The same buffer as pairs of words (a buffer texture over it, engine/render/gpu_scene.cpp),
 // read at indices that differ between pixels: a cell's two words in one fetch, where llvmpipe
 // loads storage-buffer words one at a time (see sdfProgramTexels in common/sdf_functions.glsl).
-// Word n of sdfCellWords is in texel 4 + n / 2 (after the 32-byte header).
+// Word n is in texel 4 + n / 2 (after the 32-byte header).
 layout(binding = SDF_CELL_TEXEL_UNIT) uniform usamplerBuffer sdfCellTexels;
 
 uvec2 sdfCellPair(uint k) {
@@ -108,13 +108,14 @@ float sdfDistance(vec3 p) {
     float best = SDF_FAR;
     for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
         uint i = SDF_PROGRAM_AT(base + n);
-        uint op = sdfInstructionHead(i).x;
+        uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+        uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             best = min(best, sdfLeafDistance(i, p));
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best) n += sdfInstructionHead(i).y;
+            if (sdfBoundDistance(i, p) >= best) n += head.y;
         } else if (op == SDF_OPCODE_SEED_BEST) {
             best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0),
                                              sdfInstructionParams(i, 1),
@@ -133,16 +134,16 @@ SdfSurface sdfSurface(vec3 p) {
     SdfSurface best = sdfEmptySurface(p);
     for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
         uint i = SDF_PROGRAM_AT(base + n);
-        uint op = sdfInstructionHead(i).x;
+        uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+        uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             float d = sdfLeafDistance(i, p);
             if (d < best.distance)
-                best = sdfMaterialSurface(d, sdfInstructionHead(i).w,
-                                          sdfInstructionHead(i).z, sdfInstructionPoint(i, p));
+                best = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructionHead(i).y;
+            if (sdfBoundDistance(i, p) >= best.distance) n += head.y;
         }
 #endif
     }

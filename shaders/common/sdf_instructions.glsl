@@ -19,8 +19,8 @@
 #endif
 
 bool sdfIsLeaf(uint i) {
-    return sdfInstructionHead(i).x == SDF_OPCODE_SHAPE ||
-           sdfInstructionHead(i).x == SDF_OPCODE_PROFILE;
+    uint op = sdfInstructionHead(i).x;
+    return op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE;
 }
 
 // The point moved into the frame of instruction i (its affine world-to-local rows).
@@ -37,9 +37,10 @@ float sdfLeafDistance(uint i, vec3 p) {
     vec4 a = sdfInstructionParams(i, 0);
     vec4 b = sdfInstructionParams(i, 1);
     vec4 c = sdfInstructionParams(i, 2);
-    uint kind = sdfInstructionHead(i).y;
+    uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+    uint kind = head.y;
 #if SDF_HAS_PROFILES
-    float d = sdfInstructionHead(i).x == SDF_OPCODE_PROFILE ? sdfProfileUsed(kind, q, a, b, c)
+    float d = head.x == SDF_OPCODE_PROFILE ? sdfProfileUsed(kind, q, a, b, c)
                                                              : sdfPrimitive(kind, q, a, b, c);
 #else
     float d = sdfPrimitive(kind, q, a, b, c);

@@ -24,7 +24,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_BOUNDS
 #define SDF_DISTANCE_STEP_BOUNDS \
     else if (op == SDF_OPCODE_BOUND_SKIP) { \
-        if (sdfBoundDistance(i, p) >= best) n += sdfInstructionHead(i).y; \
+        if (sdfBoundDistance(i, p) >= best) n += head.y; \
     } else if (op == SDF_OPCODE_SEED_BEST) { \
         best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0), \
                                          sdfInstructionParams(i, 1), \
@@ -61,7 +61,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_DISTANCE_MODIFIERS
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS \
     else if (op == SDF_OPCODE_DISTANCE_MODIFIER) { \
-        stack[top - 1] = sdfDistanceModifierUsed(sdfInstructionHead(i).y, stack[top - 1], p, \
+        stack[top - 1] = sdfDistanceModifierUsed(head.y, stack[top - 1], p, \
                                                  sdfInstructionParams(i, 0)); \
     }
 #else
@@ -74,7 +74,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
         float b = stack[top - 1]; \
         float a = stack[top - 2]; \
         stack[top - 2] = \
-            sdfCombineUsed(sdfInstructionHead(i).y, a, b, sdfInstructionParams(i, 0), weightA); \
+            sdfCombineUsed(head.y, a, b, sdfInstructionParams(i, 0), weightA); \
         --top; \
     }
 #else
@@ -83,7 +83,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #define SDF_DISTANCE_STEP \
     if (n < count) { \
         uint i = SDF_PROGRAM_AT(base + n); \
-        uint op = sdfInstructionHead(i).x; \
+        uvec4 head = sdfInstructionHead(i); /* opcode, kind, material, id */ \
+        uint op = head.x; \
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) { \
             stack[top] = sdfLeafDistance(i, p); \
             ++top; \
@@ -137,16 +138,16 @@ SdfSurface sdfSurface(vec3 p) {
     stack[0] = best;                      // (read only if the program pushes nothing)
     for (uint n = 0u; n < count; ++n) {
         uint i = SDF_PROGRAM_AT(base + n);
-        uint op = sdfInstructionHead(i).x;
+        uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+        uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
-            stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), sdfInstructionHead(i).w,
-                                            sdfInstructionHead(i).z,
+            stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), head.w, head.z,
                                             sdfInstructionPoint(i, p));
             ++top;
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += sdfInstructionHead(i).y;
+            if (sdfBoundDistance(i, p) >= best.distance) n += head.y;
         } else if (op == SDF_OPCODE_ACCUMULATE) {
             --top;
             if (stack[top].distance < best.distance) best = stack[top];
@@ -170,13 +171,13 @@ SdfSurface sdfSurface(vec3 p) {
 #if SDF_HAS_DISTANCE_MODIFIERS
         else if (op == SDF_OPCODE_DISTANCE_MODIFIER) {
             stack[top - 1].distance = sdfDistanceModifierUsed(
-                sdfInstructionHead(i).y, stack[top - 1].distance, p, sdfInstructionParams(i, 0));
+                head.y, stack[top - 1].distance, p, sdfInstructionParams(i, 0));
         }
 #endif
 #if SDF_HAS_COMBINE
         else if (op == SDF_OPCODE_COMBINE) {
             float w;
-            float d = sdfCombineUsed(sdfInstructionHead(i).y, stack[top - 2].distance,
+            float d = sdfCombineUsed(head.y, stack[top - 2].distance,
                                      stack[top - 1].distance, sdfInstructionParams(i, 0), w);
             stack[top - 2] = sdfBlendSurfaces(stack[top - 2], stack[top - 1], d, w);
             --top;

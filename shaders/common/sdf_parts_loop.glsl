@@ -13,9 +13,10 @@ bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 // (see common/sdf_interpreter.glsl).
 #define SDF_PARTS_STEP \
     if (i < count) { \
-        uint op = sdfInstructionHead(i).x; \
+        uvec4 head = sdfInstructionHead(i); /* opcode, kind, material, id */ \
+        uint op = head.x; \
         if (op == SDF_OPCODE_BOUND_SKIP) { \
-            if (sdfBoundDistance(i, p) >= best) i += sdfInstructionHead(i).y; \
+            if (sdfBoundDistance(i, p) >= best) i += head.y; \
             i += 1u; \
         } else if (op == SDF_OPCODE_SEED_BEST) { \
             best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0), \
@@ -61,17 +62,17 @@ SdfSurface sdfSurface(vec3 p) {
     uint count = sdfHeader.x;
     SdfSurface best = sdfEmptySurface(p);
     for (uint i = 0u; i < count;) {
-        uint op = sdfInstructionHead(i).x;
+        uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+        uint op = head.x;
         if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) i += sdfInstructionHead(i).y;
+            if (sdfBoundDistance(i, p) >= best.distance) i += head.y;
             i += 1u;
         } else if (op == SDF_OPCODE_SEED_BEST) {
             i += 1u;
         } else {
             float d = sdfLeafDistance(i, p);
             if (d < best.distance)
-                best = sdfMaterialSurface(d, sdfInstructionHead(i).w,
-                                          sdfInstructionHead(i).z, sdfInstructionPoint(i, p));
+                best = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
             i += 2u;
         }
     }

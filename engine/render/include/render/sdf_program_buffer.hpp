@@ -20,7 +20,7 @@ struct SdfProgramBuffer {
 // writes (checked by Renderer::create): 2^24, far above kSdfInstructions' 8 texels each with
 // the cells' code and the shells' programs after it, and above the 8-byte texels of
 // limits::kSdfCells' table and lists; desktop drivers and llvmpipe allow 2^27.
-constexpr int kSdfProgramMaxTexels = 1 << 24;
+constexpr int kSdfMaxBufferTexels = 1 << 24;
 
 SdfProgramBuffer createSdfProgramBuffer(const GpuSdfHeader& header,
                                         const std::vector<GpuSdfInstruction>& instructions);
