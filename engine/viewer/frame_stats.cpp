@@ -12,7 +12,11 @@ std::optional<std::string> recordFrame(FrameStats& stats, const ViewStatus& stat
     ++stats.allFrames;
     stats.allMaxMilliseconds = std::max(stats.allMaxMilliseconds, milliseconds);
     stats.allSumMilliseconds += milliseconds;
-    if (milliseconds > targetMilliseconds) ++stats.overTarget;
+    if (milliseconds > targetMilliseconds) {
+        ++stats.overTarget;
+        if (stats.overTargetFrames.size() < std::size_t(FrameStats::kOverTargetListed))
+            stats.overTargetFrames.emplace_back(frame, milliseconds);
+    }
     if (status.changes != stats.changes) { // this frame showed a change: count from it
         stats.changes = status.changes;
         stats.frames = 0;
@@ -49,7 +53,14 @@ std::string frameSummary(const FrameStats& stats, float targetMilliseconds) {
                   stats.allFrames ? stats.allSumMilliseconds / stats.allFrames : 0.0,
                   stats.overTarget, targetMilliseconds, stats.longestSceneMilliseconds,
                   stats.longestSceneFrame);
-    return std::string(line);
+    std::string summary(line);
+    for (std::size_t i = 0; i < stats.overTargetFrames.size(); ++i) {
+        std::snprintf(line, sizeof line, "%s frame %d %.1f ms", i == 0 ? "; over:" : ",",
+                      stats.overTargetFrames[i].first, stats.overTargetFrames[i].second);
+        summary += line;
+    }
+    if (stats.overTarget > int(stats.overTargetFrames.size())) summary += ", ...";
+    return summary;
 }
 
 } // namespace rmsc::app

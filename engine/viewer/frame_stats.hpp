@@ -7,6 +7,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rmsc::app {
 
@@ -22,6 +24,10 @@ struct FrameStats {
     float allMaxMilliseconds = 0.0f;
     double allSumMilliseconds = 0.0;
     int overTarget = 0; // frames longer than the target
+    // The first kOverTargetListed of them: frame number and milliseconds (the summary names
+    // them, so a long frame can be found in the log).
+    static constexpr int kOverTargetListed = 12;
+    std::vector<std::pair<int, float>> overTargetFrames;
     // The longest a frame spent handing the scene to the GPU side (compiling it, pruning its
     // cells, uploading it, building shaders it had to build there): work that blocks the frame.
     float longestSceneMilliseconds = 0.0f;
