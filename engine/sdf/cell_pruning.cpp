@@ -360,6 +360,16 @@ GpuSdfInstruction constantInstruction(float value) {
     return in;
 }
 
+// Is the list one plane instruction (kSdfCellAffine)? A plane is affine in its frame's point,
+// which is affine in the world point (sdPlane, and the far cells' constants whose frame maps
+// every point to the origin).
+bool isOnePlane(const std::vector<GpuSdfInstruction>& code, const std::uint32_t* list,
+                std::uint32_t length) {
+    if (length != 1 || list[0] >= code.size()) return false;
+    const GpuSdfInstruction& in = code[list[0]];
+    return SdfOpcode(in.opcode) == SdfOpcode::Shape && PrimitiveId(in.kind) == PrimitiveId::Plane;
+}
+
 // The values and intervals of a parent tree's nodes at a cell, computed as far as pruning needs
 // them: an operand whose floor decides its operation is dropped unevaluated (see NodeFloor).
 struct CellEvaluator {
@@ -1010,7 +1020,7 @@ struct SdfCellState {
     // eighth more blocks) and how many list words it held, each block's statistics, and which
     // blocks' entries changed since.
     struct BlockStats {
-        int leafCells = 0, maxLength = 0;
+        int leafCells = 0, maxLength = 0, affineCells = 0;
         long length = 0, leaves = 0;
     };
     std::uint64_t packStamp = 0;
@@ -1402,6 +1412,10 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
             grid.words[2 * k] = e & kSdfCellRefined ? e : e + base;
             grid.words[2 * k + 1] = length;
             if (e & kSdfCellRefined) continue;
+            if (isOnePlane(s.code, s.lists.data() + e, length)) {
+                grid.words[2 * k + 1] |= kSdfCellAffine;
+                ++stats.affineCells;
+            }
             ++stats.leafCells;
             stats.length += long(length);
             stats.leaves += long(s.cellLeaves[k]);
@@ -1428,6 +1442,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         grid.stats.cellsPerLevel[std::size_t(s.blocks[b].level - 1)] += 64;
         const SdfCellState::BlockStats& stats = s.blockStats[b];
         grid.stats.leafCells += stats.leafCells;
+        grid.stats.affineCells += stats.affineCells;
         totalLength += stats.length;
         totalLeaves += stats.leaves;
         grid.stats.maxLength = std::max(grid.stats.maxLength, stats.maxLength);
@@ -1587,7 +1602,10 @@ SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p) {
         const glm::uvec3 d = (c >> glm::uvec3(shift)) & glm::uvec3(3);
         const std::size_t w = 2 * (std::size_t(block) * 64 + d.x + 4 * d.y + 16 * d.z);
         const std::uint32_t e = grid.words[w];
-        if (!(e & kSdfCellRefined)) return {e, grid.words[w + 1], level + 1};
+        if (!(e & kSdfCellRefined)) {
+            const std::uint32_t length = grid.words[w + 1];
+            return {e, length & ~kSdfCellAffine, level + 1, (length & kSdfCellAffine) != 0};
+        }
         block = e & ~kSdfCellRefined;
     }
     return outside;

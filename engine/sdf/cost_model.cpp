@@ -108,7 +108,7 @@ SdfEvaluationCost sdfCellsCost(const SdfCellGrid& grid) {
                 if (visitedBlocks.insert(block).second) blocks.push_back(block);
                 continue;
             }
-            const std::uint32_t length = grid.words[base + 2 * c + 1];
+            const std::uint32_t length = grid.words[base + 2 * c + 1] & ~kSdfCellAffine;
             if (!seen.insert(entry).second || std::size_t(entry) + length > grid.words.size())
                 continue;
             const SdfEvaluationCost cell = sdfEvaluationCost(

@@ -365,12 +365,16 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
         std::vector<bool> used(std::size_t(PrimitiveId::Count), false);
         for (const GpuSdfInstruction& in : program.instructions)
             if (SdfOpcode(in.opcode) == SdfOpcode::Shape) used[in.kind] = true;
+        // A scene with a plane (a floor) marches across the cells that hold only it in a step
+        // (kSdfCellAffine); one without has no such cell the march would not leave anyway.
+        const bool planes = used[std::size_t(PrimitiveId::Plane)];
         if (strategy == SdfStrategy::Cells) used[std::size_t(PrimitiveId::Plane)] = true; // far
         out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; })
             << interpreterFeatures(program.instructions, strategy == SdfStrategy::Cells);
         if (strategy == SdfStrategy::Cells)
             out << (isPartsOnly(program) || isUnionOfShapes(program) ? "#define SDF_CELLS_LEAN 1\n"
                                                                      : "")
+                << (planes ? "#define SDF_CELLS_PLANES 1\n" : "")
                 << "#include \"common/sdf_cells.glsl\"\n";
         else
             out << (isPartsOnly(program) ? "#include \"common/sdf_parts_loop.glsl\"\n"

@@ -3,6 +3,7 @@
 
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
+#include "sdf/cell_pruning.hpp"
 #include "sdf/modifiers.hpp"
 #include "sdf/operations.hpp"
 #include "sdf/profiles.hpp"
@@ -56,6 +57,7 @@ std::vector<GlslConstant> sdfGlslConstants() {
         {"SDF_UNIFORM_INSTRUCTIONS", glslInt(kSdfUniformInstructions)},
         {"SDF_FAR", glslFloat(kSdfFar)},
         {"SDF_CELL_MAX_LEVELS", glslInt(limits::kSdfCellLevels)},
+        {"SDF_CELL_AFFINE", glslUint(kSdfCellAffine)},
     };
     for (const OpcodeName& opcode : kOpcodes)
         out.push_back(

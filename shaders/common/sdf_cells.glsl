@@ -55,19 +55,25 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
 // early anyway.
 #define SDF_CELL_LEVEL(level) \
     if (block != 0xffffffffu && level < levels) { \
-        uvec3 d = (c >> (2u * (levels - 1u - level))) & 3u; \
+        uint shift = 2u * (levels - 1u - level); \
+        uvec3 d = (c >> shift) & 3u; \
         uvec2 e = sdfCellPair(block * 64u + d.x + 4u * d.y + 16u * d.z); \
         if ((e.x & 0x80000000u) == 0u) { \
             base = e.x; \
             count = e.y; \
             block = 0xffffffffu; \
+            leafShift = shift; \
         } else { \
             block = e.x & 0x7fffffffu; \
         } \
     }
-void sdfProgramRange(vec3 p, out uint base, out uint count) {
+// Also the cell itself: `cell` its lowest corner (xyz) and edge (w; 0 outside the grid), and
+// `affine` its kSdfCellAffine flag (its program is one plane, engine/sdf/cell_pruning.hpp).
+void sdfProgramCell(vec3 p, out uint base, out uint count, out bool affine, out vec4 cell) {
     base = sdfCellInfo.y;
     count = sdfCellInfo.z;
+    affine = false;
+    cell = vec4(0.0);
     uint levels = sdfCellInfo.x;
     vec3 u = (p - sdfCellOrigin.xyz) / sdfCellOrigin.w;
     if (levels == 0u || !(all(greaterThanEqual(u, vec3(0.0))) && all(lessThan(u, vec3(1.0)))))
@@ -75,11 +81,22 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
     uint n = 1u << (2u * levels);
     uvec3 c = min(uvec3(u * float(n)), uvec3(n - 1u));
     uint block = 0u;
+    uint leafShift = 0u;
 #if SDF_CELL_MAX_LEVELS != 6
-#error "sdfProgramRange descends 6 levels: write out SDF_CELL_MAX_LEVELS"
+#error "sdfProgramCell descends 6 levels: write out SDF_CELL_MAX_LEVELS"
 #endif
     SDF_CELL_LEVEL(0u) SDF_CELL_LEVEL(1u) SDF_CELL_LEVEL(2u)
     SDF_CELL_LEVEL(3u) SDF_CELL_LEVEL(4u) SDF_CELL_LEVEL(5u)
+    if (block != 0xffffffffu) return; // (no leaf: not a grid the pruning writes)
+    affine = (count & SDF_CELL_AFFINE) != 0u;
+    count &= ~SDF_CELL_AFFINE;
+    float edge = sdfCellOrigin.w / float(n >> leafShift);
+    cell = vec4(sdfCellOrigin.xyz + vec3(c >> leafShift) * edge, edge);
+}
+void sdfProgramRange(vec3 p, out uint base, out uint count) {
+    bool affine;
+    vec4 cell;
+    sdfProgramCell(p, base, count, affine, cell);
 }
 
 #ifndef SDF_CELLS_LEAN
@@ -102,9 +119,7 @@ bool sdfCellsSkipsNext(uint base, uint n, uint count) {
     return op == SDF_OPCODE_COMBINE || op == SDF_OPCODE_ACCUMULATE;
 }
 
-float sdfDistance(vec3 p) {
-    uint base, count;
-    sdfProgramRange(p, base, count);
+float sdfListDistance(vec3 p, uint base, uint count) {
     float best = SDF_FAR;
     for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
         uint i = SDF_PROGRAM_AT(base + n);
@@ -125,6 +140,12 @@ float sdfDistance(vec3 p) {
 #endif
     }
     return best;
+}
+
+float sdfDistance(vec3 p) {
+    uint base, count;
+    sdfProgramRange(p, base, count);
+    return sdfListDistance(p, base, count);
 }
 
 // The nearest shape's surface (the first of equal ones, as a union keeps). Once per hit.
@@ -148,5 +169,52 @@ SdfSurface sdfSurface(vec3 p) {
 #endif
     }
     return best;
+}
+#endif
+
+#ifdef SDF_CELLS_PLANES // (engine/sdf/glsl_codegen.cpp: the scene has a plane)
+// The rate at which plane instruction i's field changes along the unit direction rd: sdPlane
+// (common/sdf_primitives.glsl) of the frame's point, dot(q, normal) / |normal| - offset, times
+// the distance scale, where q changes by the frame's linear part applied to rd.
+float sdfPlaneSlope(uint i, vec3 rd) {
+    vec3 dq = vec3(dot(sdfInstructionRow(i, 0).xyz, rd), dot(sdfInstructionRow(i, 1).xyz, rd),
+                   dot(sdfInstructionRow(i, 2).xyz, rd));
+    vec3 normal = sdfInstructionParams(i, 0).xyz;
+    return dot(dq, normal) / max(length(normal), 1e-6) * sdfInstructionMisc(i).x;
+}
+
+// sdfDistance at p = ro + t rd, and `advance`: how far along the unit direction rd from p the
+// ray surely meets no surface (0 when no more is known than the distance). In a cell whose
+// program is one plane (kSdfCellAffine) the only surface is where that plane's field is zero,
+// and the field changes at a constant rate along the ray: the ray may go to the cell's far side
+// (the slab test, as sdfRayEnd), or, when the plane is nearer, to where a march stepping by the
+// distance would stop: at its first point under the hit threshold epsilon * max(t, 1), which
+// lies within a step's decrease of it; a step of length h lowers the field by |slope| h, so the
+// point where the field is (1 - |slope| / 2) times the threshold, halfway. The floor's depth then
+// does not change from one cell to the next. A ray grazing a floor crosses such a cell in one
+// step where sphere tracing would take many (common/sdf_scene.glsl). Scenes without a plane
+// leave it out: its cost in every step (llvmpipe runs the branch whether or not a pixel takes
+// it) would buy nothing, their far cells' constants are a cell's edge or more already, and their
+// rays end at the grid.
+#define SDF_HAS_DISTANCE_ALONG 1
+float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advance) {
+    uint base, count;
+    bool affine;
+    vec4 cell;
+    sdfProgramCell(p, base, count, affine, cell);
+    float d = sdfListDistance(p, base, count);
+    advance = 0.0;
+    if (affine) {
+        vec3 towards = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
+        vec3 far = (cell.xyz + step(vec3(0.0), towards) * cell.w - p) / towards;
+        float exit = max(min(min(far.x, far.y), far.z), 0.0);
+        float slope = sdfPlaneSlope(SDF_PROGRAM_AT(base), rd);
+        // d + slope s = landing max(t + s, 1), solved for s.
+        float landing = (1.0 + 0.5 * slope) * epsilon;
+        float s = (d - landing * t) / (landing - slope);
+        if (t + s < 1.0) s = (d - landing) / -slope;
+        advance = slope < 0.0 ? min(exit, max(s, 0.0)) : exit;
+    }
+    return d;
 }
 #endif

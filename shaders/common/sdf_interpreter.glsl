@@ -97,10 +97,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
     } \
     ++n;
 
-// The scene distance at p (world units; negative inside). Used by the march loop.
-float sdfDistance(vec3 p) {
-    uint base, count;
-    sdfProgramRange(p, base, count);
+// The distance at p of the program's list `base` to `base + count` (see sdfProgramRange).
+float sdfListDistance(vec3 p, uint base, uint count) {
     if (count == 0u) return SDF_FAR;
     float stack[SDF_MAX_STACK];
     int top = 0; // number of entries on the stack
@@ -122,6 +120,13 @@ float sdfDistance(vec3 p) {
 #endif
     }
     return top == 0 ? best : stack[0];
+}
+
+// The scene distance at p (world units; negative inside). Used by the march loop.
+float sdfDistance(vec3 p) {
+    uint base, count;
+    sdfProgramRange(p, base, count);
+    return sdfListDistance(p, base, count);
 }
 
 // The same program as sdfDistance, carrying the material and object id (see

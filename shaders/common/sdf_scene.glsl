@@ -6,6 +6,14 @@
 #include "common/sdf_functions.glsl"
 #include "generated/sdf_map.glsl"
 
+#ifndef SDF_HAS_DISTANCE_ALONG
+// Maps that know nothing along a ray but the distance (common/sdf_cells.glsl knows more).
+float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advance) {
+    advance = 0.0;
+    return sdfDistance(p);
+}
+#endif
+
 #ifndef SDF_HAS_RAY_END
 // Maps that hold no grid (common/sdf_cells.glsl has its own): a surface may be anywhere.
 float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
@@ -50,18 +58,22 @@ vec3 sdfNormal(vec3 p, float h) {
 // happened to start (the cone pass starts a tile's pixels together: the cut-off edge came out
 // in steps of a tile). Gives up after maxSteps evaluations or when t passes tMax. An empty
 // program never hits. engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU.
+// Where the map knows the ray meets no surface for longer than the distance (`advance`, see
+// sdfDistanceAlong: a cell holding only a plane), the step goes that far, unrelaxed; the
+// previous point's reach is then that length, so the fallback test above still holds.
 //
 // The loop is a macro so that the shell pass (common/shell_scene.glsl, shellMarch) runs the very
-// same steps on its own map: DISTANCE_AT_T is the distance at the ray parameter `t`; the
-// enclosing function has tMin, tMax, tLand, maxSteps, epsilon, relaxation and the out values t
-// and steps.
+// same steps on its own map: DISTANCE_AT_T is the distance at the ray parameter `t`, and may set
+// `advance`; the enclosing function has tMin, tMax, tLand, maxSteps, epsilon, relaxation and
+// the out values t and steps.
 #define SDF_RELAXED_MARCH(DISTANCE_AT_T) \
     float previousT = tMin; \
-    float previousDistance = 0.0; /* at previousT */ \
+    float previousDistance = 0.0; /* how far from previousT the ray surely met nothing */ \
     float stepLength = 0.0;       /* from previousT to t */ \
     float omega = relaxation;     /* 1 after a fallback, until the distance grows again */ \
     for (int i = 0; i < maxSteps; ++i) { \
         if (t > tMax) return false; \
+        float advance = 0.0; \
         float h = (DISTANCE_AT_T); \
         steps = i + 1; \
         if (stepLength > previousDistance && previousDistance + h < stepLength) { \
@@ -71,10 +83,12 @@ vec3 sdfNormal(vec3 p, float h) {
             continue; \
         } \
         if (h < epsilon * max(t, 1.0)) return true; \
-        if (h > previousDistance) omega = relaxation; /* moving away from what stopped it */ \
-        stepLength = t + omega * h <= tMax ? omega * h : t < tLand ? min(h, tLand - t) : h; \
+        float reach = max(h, advance); \
+        if (reach > previousDistance) omega = relaxation; /* moving away from what stopped it */ \
+        float relaxed = advance > h ? reach : omega * h; \
+        stepLength = t + relaxed <= tMax ? relaxed : t < tLand ? min(reach, tLand - t) : reach; \
         previousT = t; \
-        previousDistance = h; \
+        previousDistance = reach; \
         t += stepLength; \
     } \
     return false;
@@ -85,5 +99,5 @@ bool sdfMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float epsi
     steps = 0;
     if (sdfSceneEmpty()) return false;
     float tLand = tMax >= frame.march.y ? tMax : -1.0; // the farthest distance ends the ray
-    SDF_RELAXED_MARCH(sdfDistance(ro + rd * t))
+    SDF_RELAXED_MARCH(sdfDistanceAlong(ro + rd * t, rd, t, epsilon, advance))
 }

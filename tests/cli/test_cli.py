@@ -212,6 +212,16 @@ with tempfile.TemporaryDirectory() as tmp:
               marched[0]["fullscreen"] <= marched[1]["fullscreen"], str(marched))
     except (ValueError, KeyError, IndexError) as e:
         check("bench shells json", False, f"{e}: {r.stdout[:400]}")
+    # The cells of a tree over a plane: most of the plane's cells hold only it, and are counted.
+    tree = os.path.join(SAMPLES, "bench", "tree_256.json")
+    r = expect("bench cells", ["bench", tree, "--size", "32x18", "--frames", "1", "--warmup", "0",
+                               "--sdf-strategy", "cells", "--json"], 0)
+    try:
+        cells = json.loads(r.stdout)["strategies"][0]["cells"]
+        check("bench counts the cells holding one plane",
+              0 < cells["affine_cells"] < cells["leaf_cells"], str(cells))
+    except (ValueError, KeyError, IndexError) as e:
+        check("bench cells json", False, f"{e}: {r.stdout[:400]}")
 
     # Material textures: a missing file and a file that is not an image, for validate and render.
     write(tmp, "not_an_image.png", "plain text, not a PNG")

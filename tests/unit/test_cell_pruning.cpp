@@ -194,6 +194,57 @@ TEST(CellPruning, RandomTreesAgreeWithTheWholeProgramInEveryCell) {
     EXPECT_GT(pruning, trees / 2);
 }
 
+// Cells marked affine (kSdfCellAffine: the march crosses them in one step, to the plane or to
+// their far side) hold no surface but the plane's, and their program is affine along any
+// segment in them: at random points of random trees over a tilted, moved and scaled plane.
+TEST(CellPruning, CellsMarkedAffineHoldOnlyAPlane) {
+    RandomTree random{std::mt19937(20261204)};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int affinePoints = 0, trees = 0;
+    for (int t = 0; t < 24; ++t) {
+        const std::string sdf =
+            R"({"children": [{"shape": "plane", "normal": [0.2, 1, -0.1], "offset": 0.9, )" +
+            random.transform() + "}, " + random.group(2) + "]}";
+        const std::optional<Compiled> c = compileText(sdf, false);
+        if (!c) continue;
+        SdfCellOptions options;
+        options.levels = 3;
+        options.farConstants = t % 2 == 0;
+        const SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf), options);
+        if (grid.levels == 0) continue;
+        ++trees;
+        EXPECT_GT(grid.stats.affineCells, 0) << sdf;
+        for (int s = 0; s < 4000; ++s) {
+            const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
+            const SdfCellRange range = sdfCellRange(grid, p);
+            if (!range.affine) continue;
+            ++affinePoints;
+            const std::span<const std::uint32_t> list =
+                std::span(grid.words).subspan(range.offset, range.length);
+            const float edge = grid.size / float(1 << (2 * range.level));
+            const glm::vec3 corner =
+                grid.origin + glm::floor((p - grid.origin) / edge) * edge; // the cell's
+            const auto cellProgram = [&](glm::vec3 q) {
+                return sdfDistanceOrdered(c->program, grid.code, list, q);
+            };
+            // Affine: the value halfway between p and another point of the cell is the mean.
+            const glm::vec3 q = corner + glm::vec3(u(rng), u(rng), u(rng)) * edge;
+            const float mean = 0.5f * (cellProgram(p) + cellProgram(q));
+            EXPECT_NEAR(cellProgram(0.5f * (p + q)), mean, 1e-4f * (1.0f + std::abs(mean)))
+                << sdf << ": a cell marked affine whose program is not";
+            // The only surface: the whole program is on the same side as the plane.
+            const float plane = cellProgram(p), whole = sdfDistance(c->program, p);
+            if (std::abs(plane) > 1e-4f * edge)
+                EXPECT_EQ(plane > 0.0f, whole > 0.0f)
+                    << sdf << ": another surface in a cell marked affine";
+            if (HasFailure()) return;
+        }
+    }
+    EXPECT_GT(trees, 12) << "(trees that compile)";
+    EXPECT_GT(affinePoints, trees * 1000) << "(of 4,000 points a tree: most of the grid)";
+}
+
 // A grid of far-apart spheres: a cell holds a few, and its program has only those.
 TEST(CellPruning, AGridOfSpheresPrunesToTheNearOnes) {
     std::ostringstream s;

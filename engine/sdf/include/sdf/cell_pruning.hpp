@@ -80,6 +80,7 @@ struct SdfCellStats {
     double meanLeaves = 0.0;        // shape evaluations per leaf cell's program, mean
     std::size_t uniquePrograms = 0; // distinct programs after sharing equal ones
     std::size_t prunedCells = 0;    // cells pruned by the build (or the re-prune)
+    int affineCells = 0;            // leaf cells whose program is one plane (kSdfCellAffine)
     double buildMs = 0.0;           // wall time of buildSdfCells (or repruneSdfCells)
     std::size_t bytes = 0;          // bytes of the cell table and index lists (on the GPU: their
                                     // buffer, render/gpu_scene.hpp)
@@ -92,6 +93,12 @@ struct SdfCellStats {
 // program's instructions followed by the instructions the pruning adds (and the outside
 // program's, when one is given).
 constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
+// Set in a leaf cell's length word (the length is the bits below it) when its program is one
+// plane instruction: a floor's plane, or a far cell's constant. Its field is affine along any
+// ray, and the only surface in the cell is where it is zero, so a march may go straight to that
+// point or to the cell's far side (shaders/common/sdf_cells.glsl, sdfDistanceAlong): a ray
+// grazing a floor to the horizon crosses each cell in one step instead of many.
+constexpr std::uint32_t kSdfCellAffine = 0x80000000u;
 
 struct SdfWordRange {
     std::uint32_t first = 0, count = 0;
@@ -162,7 +169,8 @@ bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid&
 struct SdfCellRange {
     std::uint32_t offset = 0;
     std::uint32_t length = 0;
-    int level = 0; // of the cell (its edge: grid.size / 4^level); 0 outside the grid
+    int level = 0;       // of the cell (its edge: grid.size / 4^level); 0 outside the grid
+    bool affine = false; // kSdfCellAffine
 };
 SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p);
 std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
