@@ -57,10 +57,11 @@ vec3 sdfNormal(vec3 p, float h) {
 // a surface at the farthest distance hits is decided at that one point, not by where its march
 // happened to start (the cone pass starts a tile's pixels together: the cut-off edge came out
 // in steps of a tile). Gives up after maxSteps evaluations or when t passes tMax. An empty
-// program never hits. engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU.
-// Where the map knows the ray meets no surface for longer than the distance (`advance`, see
-// sdfDistanceAlong: a cell holding only a plane), the step goes that far, unrelaxed; the
-// previous point's reach is then that length, so the fallback test above still holds.
+// program never hits. Where the map knows the ray meets no surface for longer than the distance
+// (`advance`, see sdfDistanceAlong: a cell holding only a plane), the step goes that far,
+// unrelaxed; the previous point's reach is then that length, so the fallback test above still
+// holds. engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU, through the whole
+// program (no cells, so no such steps: it stops where the cells' landing is aimed at).
 //
 // The loop is a macro so that the shell pass (common/shell_scene.glsl, shellMarch) runs the very
 // same steps on its own map: DISTANCE_AT_T is the distance at the ray parameter `t`, and may set
