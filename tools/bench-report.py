@@ -2,7 +2,8 @@
 """Writes docs/performance.md from `rmsc bench --json`: every benchmark scene under every
 scene-to-shader strategy (and the hand-written yardstick shaders in bench/), with ms per frame,
 the march pass's GPU time, the shader compile time and the ratios the performance targets are
-stated in. Run from the repository root after building:
+stated in. What the file holds after the HAND_KEPT marker line is written by hand and kept as it
+is. Run from the repository root after building (docs/performance.md is made at 160x120):
     python3 tools/bench-report.py [--rmsc build/bin/rmsc] [--size 320x180] [--frames 5]"""
 import argparse
 import datetime
@@ -10,6 +11,10 @@ import json
 import os
 import platform
 import subprocess
+
+# The line after which the output file is written by hand (the measurements of the cells, the
+# UI's frame times): kept when the file is written again.
+HAND_KEPT = "<!-- Kept by hand from here on: tools/bench-report.py leaves what follows as it is. -->"
 
 SCENES = [
     ("samples/bench/grid_1.json", "1 primitive"),
@@ -166,8 +171,9 @@ def main():
         "interpreter skips subtrees by their boxes, so generated rows count the evaluations of "
         "the whole tree. `interpreter` is a loop over the program buffer: the lean one for "
         "programs of box tests and one-shape parts (the grids), the generic one otherwise. Scenes "
-        "of more than 160 shapes always use the interpreter: generated code costs compile time "
-        "in proportion to the scene on llvmpipe. "
+        "of more than 160 shapes use `cells` instead of `baked` (the program pruned per cell, see "
+        "\"Per-cell pruning\" below): generated code costs compile time in proportion to the "
+        "scene on llvmpipe. "
         "`hand-written` is a shader in `bench/` written for that one scene, the yardstick.",
         "",
         "Rows ending in `, shells` draw the scene's shells through their proxy meshes, `, "
@@ -233,9 +239,20 @@ def main():
         "| evaluations per pixel from 10 to 1,000 primitives | %s |" % growth,
         "",
     ]
-    with open(args.output, "w") as out:
+    # What follows the marker in the file written before is kept by hand: carried over as is.
+    kept = ""
+    try:
+        with open(args.output) as previous:
+            text = previous.read()
+        if HAND_KEPT in text:
+            kept = text[text.index(HAND_KEPT):]
+    except OSError:
+        pass
+    with open(args.output + ".tmp", "w") as out:
         out.write("\n".join(lines))
-    print("wrote", args.output)
+        out.write("\n" + kept if kept else "")
+    os.replace(args.output + ".tmp", args.output)
+    print("wrote", args.output, "(keeping the part after its marker)" if kept else "")
 
 
 if __name__ == "__main__":
