@@ -341,6 +341,7 @@ struct CellResult {
     // tree's root is no such chain): an operand of that chain whose floor is above it is
     // dropped here whatever it does (repruneSdfCells).
     float unionThreshold = NAN;
+    float leastLow = NAN;   // pruneCellDirect: the least lower end over every operand
     bool unchanged = false; // repruneSdfCells: the cell's old result stands
 };
 
@@ -861,6 +862,7 @@ void pruneCellDirect(const Pruner& pr, const DirectChain& d, glm::vec3 c, float 
         expand(entry);
     }
     out.unionThreshold = leastHi;
+    out.leastLow = minLo;
     // The operands kept: every one whose lower end is at most leastHi. A cell with more than
     // `limit` shape evaluations is refined or made a far constant: no need to know them all.
     out.near = minLo < edge;
@@ -1004,6 +1006,7 @@ struct SdfCellState {
     std::vector<std::uint32_t> entries;
     std::vector<std::uint32_t> cellLeaves; // per cell: shape evaluations of its program
     std::vector<float> unionThresholds;    // per cell: CellResult::unionThreshold
+    std::vector<float> leastLows;          // per cell: CellResult::leastLow
     std::vector<std::uint32_t> lists;      // the leaf cells' lists, equal ones shared
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> shared; // hash -> offsets
     std::size_t listsAtCompaction = 0;
@@ -1056,6 +1059,7 @@ std::uint32_t allocateBlock(SdfCellState& s, int level, glm::ivec3 first, Pruned
         s.entries.resize(s.entries.size() + 128, 0);
         s.cellLeaves.resize(s.cellLeaves.size() + 64, 0);
         s.unionThresholds.resize(s.unionThresholds.size() + 64, NAN);
+        s.leastLows.resize(s.leastLows.size() + 64, NAN);
     }
     s.blocks[b] = {level, first, std::move(parent), true};
     s.liveCells += 64;
@@ -1135,6 +1139,11 @@ struct EditScope {
     std::vector<int> tops;             // tree nodes
     std::vector<NodeFloor> topsBefore; // their floors before the edit
     std::vector<char> skipped;         // per tree node: a top's node, or a union of the chain
+    // When the one top is an operand of a direct chain (DirectChain) that is one shape
+    // instruction, as when one shape of a large union is moved: that instruction's index and
+    // what it was before the edit (see farConstantStands).
+    std::optional<std::uint32_t> shape;
+    GpuSdfInstruction shapeBefore;
 };
 
 // The scope of an edit whose changed nodes all lie under operands of the tree's top chain of
@@ -1221,6 +1230,43 @@ bool topsDropped(const SdfCellState& s, const EditScope& scope, glm::vec3 centre
     return true;
 }
 
+// Does the far constant of cell k (at `level`, centre c, edge length `edge`) stand after an
+// edit of one shape operand of the direct chain (EditScope::shape)? pruneCellDirect makes a
+// cell a far constant from three numbers over every operand: the least lower end (its step
+// m = min(int(lo / edge), kFarSteps) picks the constant), the least upper end (which operands
+// are kept) and how many shapes are kept (more than `shortLeaves`). The shape's interval before
+// and after the edit, computed as pruneCellDirect computes it, shows whether each stands:
+// - the least lower end (kept as the cell's leastLow): the shape's lower end was above it, so
+//   the others' made it, and the least of it and the shape's after is in the same step;
+// - the least upper end (kept as its unionThreshold): the shape's upper end was above it, so
+//   the others' made it, and is no lower after;
+// - the count: the same other operands are kept; the shape is kept after, or was not before.
+// (Operands' intervals are as wide as a shape's or wider, so the first follows from the
+// second but for rounding; it is checked all the same.) A far cell of a large union's empty
+// surroundings holds hundreds of shapes within its least upper end, so moving one shape
+// changes none of the three in most of them.
+bool farConstantStands(const SdfCellState& s, const Pruner& pr, const EditScope& scope,
+                       std::uint32_t k, int level, glm::vec3 c, float edge) {
+    if (!scope.shape) return false;
+    const std::uint32_t entry = s.entries[2 * k], length = s.entries[2 * k + 1];
+    if ((entry & kSdfCellRefined) || length != 1) return false;
+    const std::uint32_t* constants = &s.constants[std::size_t(kFarSteps * (level - 1))];
+    if (std::find(constants, constants + kFarSteps, s.lists[entry]) == constants + kFarSteps)
+        return false;
+    const float leastLo = s.leastLows[k], leastHi = s.unionThresholds[k];
+    const float reach = 0.8660254f * edge + pr.slack; // as pruneCellDirect's
+    const auto range = [&](const GpuSdfInstruction& in) {
+        const float v = sdfLeafDistance(pr.program, in, c);
+        const float e = reach + 1e-6f * std::abs(v);
+        return SdfInterval{v - e, v + e};
+    };
+    const auto step = [&](float lo) { return std::min(int(lo / edge), kFarSteps); };
+    const SdfInterval before = range(scope.shapeBefore), after = range(pr.code[*scope.shape]);
+    if (!(before.lo > leastLo) || step(std::min(leastLo, after.lo)) != step(leastLo)) return false;
+    if (!(before.hi > leastHi) || !(after.hi >= leastHi)) return false;
+    return after.lo <= leastHi || !(before.lo <= leastHi);
+}
+
 // Prunes the cells of `pending` blocks level by level: each block's 64 cells from its parent
 // tree. `fresh` blocks are new (every cell of theirs is made); in the others a refined cell's
 // children are pruned again only when its new tree holds a node of `changed` or differs from
@@ -1256,8 +1302,10 @@ void pruneBlocks(SdfCellState& s, std::vector<PendingBlock> pending,
                     const glm::vec3 centre = s.origin + (glm::vec3(cell) + 0.5f) * edge;
                     const std::uint32_t k = 64 * pendingBlock.block + std::uint32_t(j);
                     if (pendingBlock.floorsDecide && scope &&
-                        topsDropped(s, *scope, centre, 0.8660254f * edge, pruner.slack,
-                                    s.unionThresholds[k])) {
+                        (topsDropped(s, *scope, centre, 0.8660254f * edge, pruner.slack,
+                                     s.unionThresholds[k]) ||
+                         (s.direct && o.farConstants &&
+                          farConstantStands(s, pruner, *scope, k, block.level, centre, edge)))) {
                         results[t].unchanged = true;
                         continue;
                     }
@@ -1296,6 +1344,7 @@ void pruneBlocks(SdfCellState& s, std::vector<PendingBlock> pending,
                 CellResult& r = results[t];
                 if (r.unchanged) continue;
                 s.unionThresholds[k] = r.unionThreshold;
+                s.leastLows[k] = r.leastLow;
                 const bool refine =
                     s.blocks[b].level < s.levels && !r.far && r.leaves > o.refineLeaves;
                 const bool wasRefined = !pendingBlock.fresh && (s.entries[2 * k] & kSdfCellRefined);
@@ -1571,6 +1620,17 @@ bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& gri
     if (scope)
         for (int top : scope->tops)
             scope->topsBefore.push_back(s.floors[std::size_t(top)]);
+    if (scope && s.direct && scope->tops.size() == 1 && !dataDiffers) {
+        const DirectChain& d = *s.direct;
+        const auto at = std::find(d.operands.begin(), d.operands.end(), scope->tops[0]);
+        const int single =
+            at == d.operands.end() ? -1 : d.single[std::size_t(at - d.operands.begin())];
+        if (single >= 0 && SdfOpcode(before[std::size_t(single)].opcode) == SdfOpcode::Shape &&
+            before[std::size_t(single)].kind == after[std::size_t(single)].kind) {
+            scope->shape = std::uint32_t(single);
+            scope->shapeBefore = before[std::size_t(single)];
+        }
+    }
     s.program.data = edited.data;
     std::copy(after.begin(), after.end(), s.code.begin());
     std::copy(after.begin(), after.end(), s.program.instructions.begin());
