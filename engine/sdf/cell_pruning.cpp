@@ -245,46 +245,66 @@ NodeFloor leafFloor(const GpuSdfInstruction& in) {
     return {transformAabb(local.box, localToWorld(in)), 0.0f, true};
 }
 
+// Node i's floor from its instructions and its children's floors.
+NodeFloor nodeFloor(const std::vector<GpuSdfInstruction>& code, const ProgramTree& tree,
+                    const std::vector<NodeFloor>& floors, std::size_t i) {
+    const TreeNode& t = tree.nodes[i];
+    NodeFloor f;
+    switch (t.kind) {
+    case NodeKind::Leaf:
+        if (t.end - t.begin == 1) f = leafFloor(code[t.begin]);
+        break;
+    case NodeKind::Unary: {
+        const ModifierSpec& spec =
+            modifierOfKind(ModifierStage::Distance, code[t.instruction].kind);
+        const NodeFloor& a = floors[std::size_t(t.a)];
+        if (a.valid && spec.packedGrowth)
+            f = {a.box, a.drop + spec.packedGrowth(code[t.instruction].params), true};
+        break;
+    }
+    case NodeKind::Combine: {
+        const GpuSdfInstruction& in = code[t.instruction];
+        const NodeFloor &a = floors[std::size_t(t.a)], &b = floors[std::size_t(t.b)];
+        const SdfOperationFloor rule =
+            operationFloor(SdfOp(in.kind),
+                           in.params[0].y > 0.5f ? SmoothBlend::Circular : SmoothBlend::Polynomial);
+        const float k = std::abs(in.params[0].x);
+        if (rule.box == SdfFloorBox::FirstOperand) {
+            f = a;
+        } else if (rule.box == SdfFloorBox::EitherOperand) {
+            f = a.valid ? a : b;
+        } else if (a.valid && b.valid) {
+            f.box = a.box;
+            f.box.add(b.box);
+            f.drop = rule.dropScale * std::max(a.drop, b.drop) + rule.smoothnessDrop * k;
+            f.valid = true;
+        }
+        break;
+    }
+    }
+    return f;
+}
+
 std::vector<NodeFloor> nodeFloors(const std::vector<GpuSdfInstruction>& code,
                                   const ProgramTree& tree) {
     std::vector<NodeFloor> floors(tree.nodes.size());
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i)
+        floors[i] = nodeFloor(code, tree, floors, i);
+    return floors;
+}
+
+// The floors after an edit of numbers, made again only for the `changed` nodes and those
+// above them (children come before their parents in the tree).
+void updateNodeFloors(const std::vector<GpuSdfInstruction>& code, const ProgramTree& tree,
+                      const std::vector<char>& changed, std::vector<NodeFloor>& floors) {
+    std::vector<char> again(changed);
     for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
         const TreeNode& t = tree.nodes[i];
-        NodeFloor& f = floors[i];
-        switch (t.kind) {
-        case NodeKind::Leaf:
-            if (t.end - t.begin == 1) f = leafFloor(code[t.begin]);
-            break;
-        case NodeKind::Unary: {
-            const ModifierSpec& spec =
-                modifierOfKind(ModifierStage::Distance, code[t.instruction].kind);
-            const NodeFloor& a = floors[std::size_t(t.a)];
-            if (a.valid && spec.packedGrowth)
-                f = {a.box, a.drop + spec.packedGrowth(code[t.instruction].params), true};
-            break;
-        }
-        case NodeKind::Combine: {
-            const GpuSdfInstruction& in = code[t.instruction];
-            const NodeFloor &a = floors[std::size_t(t.a)], &b = floors[std::size_t(t.b)];
-            const SdfOperationFloor rule =
-                operationFloor(SdfOp(in.kind), in.params[0].y > 0.5f ? SmoothBlend::Circular
-                                                                     : SmoothBlend::Polynomial);
-            const float k = std::abs(in.params[0].x);
-            if (rule.box == SdfFloorBox::FirstOperand) {
-                f = a;
-            } else if (rule.box == SdfFloorBox::EitherOperand) {
-                f = a.valid ? a : b;
-            } else if (a.valid && b.valid) {
-                f.box = a.box;
-                f.box.add(b.box);
-                f.drop = rule.dropScale * std::max(a.drop, b.drop) + rule.smoothnessDrop * k;
-                f.valid = true;
-            }
-            break;
-        }
-        }
+        if (t.kind != NodeKind::Leaf)
+            again[i] = again[i] || again[std::size_t(t.a)] ||
+                       (t.kind == NodeKind::Combine && again[std::size_t(t.b)]);
+        if (again[i]) floors[i] = nodeFloor(code, tree, floors, i);
     }
-    return floors;
 }
 
 // The floor of `f` at point c: a lower bound of the node's value there, or -infinity where the
@@ -1634,7 +1654,7 @@ bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& gri
     s.program.data = edited.data;
     std::copy(after.begin(), after.end(), s.code.begin());
     std::copy(after.begin(), after.end(), s.program.instructions.begin());
-    s.floors = nodeFloors(s.code, s.tree);
+    updateNodeFloors(s.code, s.tree, changed, s.floors);
     if (s.direct) refitDirectChain(*s.direct, s.floors);
     setOutsideProgram(s, s.constants.back() + 1, outside);
     s.prunedCells = 0;
