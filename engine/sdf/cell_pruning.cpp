@@ -583,9 +583,11 @@ SdfInterval evaluateAndEmit(const Pruner& pr, const PrunedTree& in, glm::vec3 c,
             for (int o : operands)
                 if (state[std::size_t(o)] == kEvaluated)
                     leastHi = std::min(leastHi, range[std::size_t(o)].hi);
+            // Each union made is the chain's union whose operands reach as far up as its own
+            // do (operand p's: chain[size - p]), so its floor still bounds it.
             int result = -1;
-            std::size_t used = 0;
-            for (int o : operands) {
+            for (std::size_t p = 0; p < operands.size(); ++p) {
+                const int o = operands[p];
                 if (state[std::size_t(o)] != kEvaluated || range[std::size_t(o)].lo > leastHi)
                     continue;
                 const int e = self(self, o);
@@ -593,7 +595,7 @@ SdfInterval evaluateAndEmit(const Pruner& pr, const PrunedTree& in, glm::vec3 c,
                     result = e;
                     continue;
                 }
-                const int node = in[std::size_t(chain[chain.size() - 1 - used++])].node;
+                const int node = in[std::size_t(chain[chain.size() - p])].node;
                 out.list.push_back(pr.tree.nodes[std::size_t(node)].instruction);
                 out.pruned.push_back({node, result, e});
                 result = int(out.pruned.size()) - 1;
