@@ -541,6 +541,34 @@ struct CellEvaluator {
     }
 };
 
+// Thresholds, top down: a node whose value is above its threshold `t` at a point does not
+// change the root's value or material there, whatever it is replaced with that is no lower.
+// The root's threshold is +infinity. An operation that is monotone in both operands, exactly
+// one of them where the other is k or more above it (weight 0 or 1), and never more than d
+// below the lesser of the two (union: k = d = 0; smooth union: k and, for the dip, k/4 or
+// k(1 - 1/sqrt 2): operationFloor) gives operand a the threshold min(hi(b) + k, t + d + k):
+// where a is above it, either a >= b + k and the result is b's alone, or both are above t + d
+// and so is the result. An operand whose interval over the cell lies above its threshold is
+// dropped: the result only grows where it is above its own threshold, so the root is
+// unchanged in the whole cell, values and materials alike. (When every operand is above its
+// threshold, the operation is above its own everywhere: one of them stays and the rest drop.)
+// This prunes what an operand-by-operand rule cannot: two far spheres smoothly united deep in
+// a tree whose other half is near. Other operations give their operands +infinity.
+struct OperandThresholds {
+    float a = INFINITY, b = INFINITY;
+};
+
+OperandThresholds operandThresholds(const GpuSdfInstruction& in, float threshold, SdfInterval a,
+                                    SdfInterval b) {
+    const float k = in.params[0].x;
+    if (SdfOp(in.kind) != SdfOp::SmoothUnion || !(k > 0.0f)) return {};
+    const SmoothBlend blend =
+        in.params[0].y > 0.5f ? SmoothBlend::Circular : SmoothBlend::Polynomial;
+    const float d = operationFloor(SdfOp::SmoothUnion, blend).smoothnessDrop * k;
+    const float above = threshold + d + k;
+    return {std::min(b.hi + k, above), std::min(a.hi + k, above)};
+}
+
 // Prunes `in` at the cell of centre c and reach r (half its diagonal): out.list, out.pruned and
 // out.leaves; returns the root's value interval over the cell.
 SdfInterval evaluateAndEmit(const Pruner& pr, const PrunedTree& in, glm::vec3 c, float r,
@@ -565,13 +593,14 @@ SdfInterval evaluateAndEmit(const Pruner& pr, const PrunedTree& in, glm::vec3 c,
         const TreeNode& t = pr.tree.nodes[std::size_t(in[std::size_t(i)].node)];
         return t.kind == NodeKind::Combine && SdfOp(pr.code[t.instruction].kind) == SdfOp::Union;
     };
-    const auto emit = [&](auto& self, int i) -> int {
+    const auto emit = [&](auto& self, int i, float threshold) -> int {
         const PrunedNode& pn = in[std::size_t(i)];
         const TreeNode& t = pr.tree.nodes[std::size_t(pn.node)];
         if (isUnion(i)) {
             // A chain of plain unions ((o1 u o2) u o3) ...: an operand drops where it is above
-            // another operand everywhere in the cell (above the least upper bound); the kept
-            // ones are united in their order with the chain's own union nodes, bottom up.
+            // another operand everywhere in the cell (above the least upper bound), or above
+            // the chain's threshold and the other operands' upper ends (see `threshold`); the
+            // kept ones are united in their order with the chain's own union nodes, bottom up.
             std::vector<int> chain; // union nodes, top down
             int bottom = i;
             for (; isUnion(bottom); bottom = in[std::size_t(bottom)].a)
@@ -579,18 +608,42 @@ SdfInterval evaluateAndEmit(const Pruner& pr, const PrunedTree& in, glm::vec3 c,
             std::vector<int> operands{bottom};
             for (auto it = chain.rbegin(); it != chain.rend(); ++it)
                 operands.push_back(in[std::size_t(*it)].b);
-            float leastHi = INFINITY;
+            float leastHi = INFINITY, nextHi = INFINITY; // the two least upper ends
+            int least = -1, lowest = -1;                 // its operand; the least lower end's
+            for (int o : operands) {
+                if (state[std::size_t(o)] != kEvaluated) continue;
+                const SdfInterval& ro = range[std::size_t(o)];
+                if (ro.hi < leastHi) {
+                    nextHi = leastHi;
+                    leastHi = ro.hi;
+                    least = o;
+                } else {
+                    nextHi = std::min(nextHi, ro.hi);
+                }
+                if (lowest < 0 || ro.lo < range[std::size_t(lowest)].lo) lowest = o;
+            }
+            const auto operandThreshold = [&](int o) {
+                return std::min(threshold, o == least ? nextHi : leastHi);
+            };
+            const auto kept = [&](int o) {
+                if (state[std::size_t(o)] != kEvaluated) return false;
+                const float lo = range[std::size_t(o)].lo;
+                return lo <= leastHi && (lo <= operandThreshold(o) || o == lowest);
+            };
+            // Every operand above its threshold: the lowest stays (see `threshold`).
+            bool anyBelow = false;
             for (int o : operands)
-                if (state[std::size_t(o)] == kEvaluated)
-                    leastHi = std::min(leastHi, range[std::size_t(o)].hi);
+                anyBelow = anyBelow || (state[std::size_t(o)] == kEvaluated &&
+                                        range[std::size_t(o)].lo <= leastHi &&
+                                        range[std::size_t(o)].lo <= operandThreshold(o));
+            if (anyBelow) lowest = -1;
             // Each union made is the chain's union whose operands reach as far up as its own
             // do (operand p's: chain[size - p]), so its floor still bounds it.
             int result = -1;
             for (std::size_t p = 0; p < operands.size(); ++p) {
                 const int o = operands[p];
-                if (state[std::size_t(o)] != kEvaluated || range[std::size_t(o)].lo > leastHi)
-                    continue;
-                const int e = self(self, o);
+                if (!kept(o)) continue;
+                const int e = self(self, o, operandThreshold(o));
                 if (result < 0) {
                     result = e;
                     continue;
@@ -603,21 +656,31 @@ SdfInterval evaluateAndEmit(const Pruner& pr, const PrunedTree& in, glm::vec3 c,
             return result;
         }
         if (t.kind == NodeKind::Combine && side[std::size_t(i)] != SdfPruneSide::Both)
-            return self(self, side[std::size_t(i)] == SdfPruneSide::A ? pn.a : pn.b);
+            return self(self, side[std::size_t(i)] == SdfPruneSide::A ? pn.a : pn.b, threshold);
         PrunedNode kept{pn.node, -1, -1};
         if (t.kind == NodeKind::Leaf) {
             for (std::uint32_t k = t.begin; k < t.end; ++k)
                 out.list.push_back(k);
             out.leaves += t.leaves;
+        } else if (t.kind == NodeKind::Unary) {
+            kept.a = self(self, pn.a, INFINITY);
+            out.list.push_back(t.instruction);
         } else {
-            kept.a = self(self, pn.a);
-            if (t.kind == NodeKind::Combine) kept.b = self(self, pn.b);
+            const OperandThresholds o =
+                operandThresholds(pr.code[t.instruction], threshold, range[std::size_t(pn.a)],
+                                  range[std::size_t(pn.b)]);
+            const SdfInterval &ra = range[std::size_t(pn.a)], &rb = range[std::size_t(pn.b)];
+            const bool dropA = ra.lo > o.a, dropB = rb.lo > o.b;
+            if (dropA && (!dropB || rb.lo < ra.lo)) return self(self, pn.b, o.b);
+            if (dropB) return self(self, pn.a, o.a);
+            kept.a = self(self, pn.a, o.a);
+            kept.b = self(self, pn.b, o.b);
             out.list.push_back(t.instruction);
         }
         out.pruned.push_back(kept);
         return int(out.pruned.size()) - 1;
     };
-    emit(emit, int(n) - 1);
+    emit(emit, int(n) - 1, INFINITY);
     return range[n - 1];
 }
 
