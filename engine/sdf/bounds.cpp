@@ -590,6 +590,14 @@ SdfBounds groupBoundsAt(const SdfNode& node, float t, float fieldScale) {
             levels[i] = level;
         }
         levels[0] = level;
+        // A fold of polynomial smooth minima with one k never dips more than k below the least
+        // of its operands, however many there are: with P = smin(Q, o) and Q >= m - k (m the
+        // least operand so far, Q <= m), where Q <= o the dip is (k - d)^2 / 4k with
+        // d = o - Q >= k - e for e = Q - (m - k) in [0, k], at most e^2 / 4k <= e; where o < Q,
+        // o - k/4 >= min(m, o) - k. So past four operands, where the fold's own growth would
+        // reach k, every operand is bounded at t + k.
+        if (op == SdfOp::SmoothUnion && node.blend == SmoothBlend::Polynomial && n > 4)
+            std::fill(levels.begin(), levels.end(), t + k);
         Aabb box;
         for (std::size_t i = 0; i < n; ++i) {
             const SdfBounds child = parentBoundsAt(*kept[i], levels[i], fieldScale);

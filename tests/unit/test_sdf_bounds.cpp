@@ -376,6 +376,34 @@ TEST(SdfBounds, SmoothUnionGrowthIsUsedAndTight) {
     expectTreeContained(root, "smooth union of two spheres", true);
 }
 
+// A fold of many polynomial smooth minima with one k never dips more than k below its least
+// operand. Twelve equal spheres at nearly one place are the worst case: each step adds
+// (k - d)^2 / 4k to the dip d, which tends to k. The bound is t + k for every operand (the
+// fold's own growth, k/4 a step, would reach 11k/4); a bound of t + k/2 leaves inside points
+// out. Scattered spheres and a large k as well.
+TEST(SdfBounds, AFoldOfSmoothMinimaDipsAtMostKBelowItsLeastOperand) {
+    SdfNode stacked = group(SdfOp::SmoothUnion, {}, "/sdf", 1.0f);
+    for (int i = 0; i < 12; ++i)
+        stacked.children.push_back(sphere(0.3f, "/sdf/children/" + std::to_string(i),
+                                          transform({0.001f * float(i), 0.0f, 0.0f})));
+    const SdfBounds bounds = sdfNodeBounds(stacked);
+    ASSERT_TRUE(bounds.bounded);
+    EXPECT_NEAR(bounds.box.max.y, 0.3f + 1.0f, 1e-5f);
+    const SdfProgram program = compile(stacked);
+    // The recurrence gives a dip of 0.76 k after twelve steps: the surface reaches y = 1.06.
+    EXPECT_LT(sdfDistance(program, glm::vec3(0.0f, 1.0f, 0.0f)), 0.0f);
+    expectTreeContained(stacked, "twelve stacked spheres", true);
+
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    SdfNode scattered = group(SdfOp::SmoothUnion, {}, "/sdf", 0.6f);
+    for (int i = 0; i < 30; ++i)
+        scattered.children.push_back(sphere(0.1f + 0.1f * std::abs(u(rng)),
+                                            "/sdf/children/" + std::to_string(i),
+                                            transform({u(rng), u(rng), u(rng)})));
+    expectTreeContained(scattered, "thirty scattered spheres", true);
+}
+
 TEST(SdfBounds, CutChildrenOnlyRemove) {
     SdfNode root = group(SdfOp::SmoothUnion, twoShapes("/sdf"), "/sdf", 0.3f);
     SdfNode cutter = sphere(2.0f, "/sdf/children/2", transform({0.0f, 2.2f, 0.0f}));
