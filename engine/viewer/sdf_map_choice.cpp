@@ -85,6 +85,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
         return;
     }
     const double compileMs = renderer_->lastCompileMs();
+    if (!sameMap) costMilliseconds_ = 0.0f; // the other map's cost says nothing of this one's
     if (fresh) {
         gpuScene_ = std::move(*fresh);
         drawnBounded_ = bounded;

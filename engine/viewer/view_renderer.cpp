@@ -74,9 +74,11 @@ void ViewRenderer::updateScene(const Scene& scene, std::uint64_t revision, std::
     if (revision != preparingRevision_) {
         preparingRevision_ = revision;
         preparing_.request(revision, scene);
-        const bool large = prepared_ && effectiveSdfStrategy(prepared_->sdf, SdfStrategy::Baked) ==
+        // Neither a large scene nor the first one is waited for: the window shows at once, the
+        // view once the scene is compiled (a later frame takes it).
+        const bool small = prepared_ && effectiveSdfStrategy(prepared_->sdf, SdfStrategy::Baked) !=
                                             SdfStrategy::Cells;
-        wait = wait || !large;
+        wait = wait || small;
     }
     if (wait) preparing_.waitUntilIdle();
     std::optional<editor::ScenePreparingResult> result = preparing_.take();
@@ -125,6 +127,8 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
         lastRenderedCamera_ = view.camera;
         lastRenderedRevision_ = view.revision;
         ++changes_;
+        // A new map's cost is not known: its first quick render is the smallest.
+        if (!(costMilliseconds_ > 0.0f)) adaptive.scale = adaptive.minScale;
         const float scale =
             refineAll ? 1.0f : adaptive.next(costMilliseconds_, costScale_, budgetMilliseconds);
         const auto t0 = std::chrono::steady_clock::now();

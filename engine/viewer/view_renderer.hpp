@@ -73,8 +73,9 @@ class ViewRenderer {
     bool hasShaders() const { return renderer_.has_value(); }
 
     // Compiles `scene` when `revision` is one it has not seen, on preparing_'s worker: it waits
-    // for the result unless the scene drawn is large (drawn with the cells map: its compile
-    // takes tens of milliseconds) and `wait` is false, in which case a later call takes it.
+    // for the result unless no scene was compiled yet or the last one is large (drawn with the
+    // cells map: its compile takes tens of milliseconds) and `wait` is false, in which case a
+    // later call takes it.
     // The newest result is drawn once chooseSdfMap finds a map for it ready. A scene that does
     // not compile sets `sceneError` and the last one that did stays.
     void updateScene(const Scene& scene, std::uint64_t revision, std::string& sceneError,
