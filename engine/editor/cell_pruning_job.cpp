@@ -16,8 +16,10 @@ CellPruningResult CellPruningJob::prune(const CellPruningRequest& request) {
     result.frame = request.frame;
     // Pruned again into the grid kept from the last result, so the result says which of its
     // words changed since (SdfCellGrid::changedWords, changedSince).
-    result.again = state_ && repruneSdfCells(*state_, request.program, grid_, &request.outside);
-    const Aabb& content = request.content;
+    const SdfProgram& program = request.scene->sdf;
+    const Aabb content =
+        request.scene->scene.sdf ? sdfContentBox(*request.scene->scene.sdf) : Aabb{};
+    result.again = state_ && repruneSdfCells(*state_, program, grid_, request.outside.get());
     if (result.again && !content.empty() &&
         (glm::any(glm::lessThan(content.min, grid_.origin)) ||
          glm::any(glm::greaterThan(content.max, grid_.origin + glm::vec3(grid_.size)))))
@@ -28,7 +30,7 @@ CellPruningResult CellPruningJob::prune(const CellPruningRequest& request) {
         // milliseconds, runs here at the UI's.
         std::thread build([&] {
             lowerThisThreadsPriority();
-            grid_ = buildSdfCells(request.program, content, {}, &state_, &request.outside);
+            grid_ = buildSdfCells(program, content, {}, &state_, request.outside.get());
         });
         build.join();
     }

@@ -164,8 +164,9 @@ void setSceneLights(GpuScene& gpu, const PreparedScene& prepared,
     gpu.shadowSlopeBias = shadows.slopeBias;
 }
 
-GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
-                     const SdfCellGrid* cells) {
+GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const SdfCellGrid* cells,
+                     const SdfProgram* sdf) {
+    const SdfProgram& drawn = sdf ? *sdf : prepared.sdf;
     GpuScene gpu;
     for (const MeshAsset& asset : prepared.assets) {
         gpu.meshes.push_back(uploadMesh(asset));
@@ -187,20 +188,20 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
     // same, with the shells' profile instructions pointing at their data's new place.
     // The Cells strategy: the program pruned per cell, whose instructions (the program's and
     // the few the pruning adds) are the scene's in the buffer.
-    const bool pruned = effectiveSdfStrategy(prepared.sdf, strategy) == SdfStrategy::Cells;
+    const bool pruned = effectiveSdfStrategy(drawn, strategy) == SdfStrategy::Cells;
     // The grid given, or the one the cost check (prepare/sdf_cost.hpp) pruned for this program.
-    const std::vector<GpuSdfInstruction>& code = prepared.sdf.instructions;
+    const std::vector<GpuSdfInstruction>& code = drawn.instructions;
     const bool costed = !cells && prepared.sdfCells &&
                         prepared.sdfCells->code.size() >= code.size() &&
                         std::memcmp(prepared.sdfCells->code.data(), code.data(),
                                     code.size() * sizeof(GpuSdfInstruction)) == 0;
     SdfCellGrid built;
     if (pruned && !cells && !costed)
-        built = buildSdfCells(prepared.sdf,
-                              prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
+        built =
+            buildSdfCells(drawn, prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
     const SdfCellGrid& grid = cells ? *cells : costed ? *prepared.sdfCells : built;
-    std::vector<GpuSdfInstruction> instructions = pruned ? grid.code : prepared.sdf.instructions;
-    std::vector<glm::vec4> sdfData = prepared.sdf.data;
+    std::vector<GpuSdfInstruction> instructions = pruned ? grid.code : drawn.instructions;
+    std::vector<glm::vec4> sdfData = drawn.data;
     for (const PreparedShell& shell : prepared.shells) {
         SdfProgram program = shell.compiled.program;
         const float dataBase = float(sdfData.size());
@@ -234,15 +235,15 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
         gpu.shells.push_back(std::move(gpuShell));
     }
     GpuSdfHeader sdfHeader;
-    sdfHeader.instructionCount = std::uint32_t(prepared.sdf.instructions.size());
-    sdfHeader.stackDepth = std::uint32_t(prepared.sdf.stackDepth);
-    sdfHeader.pointStackDepth = std::uint32_t(prepared.sdf.pointStackDepth);
+    sdfHeader.instructionCount = std::uint32_t(drawn.instructions.size());
+    sdfHeader.stackDepth = std::uint32_t(drawn.stackDepth);
+    sdfHeader.pointStackDepth = std::uint32_t(drawn.pointStackDepth);
     sdfHeader.dataCount = std::uint32_t(sdfData.size());
     if (sdfData.empty()) sdfData.emplace_back(0.0f); // a buffer is never empty
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
     gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, instructions);
-    gpu.sdfMap = generateSdfMap(prepared.sdf, strategy);
+    gpu.sdfMap = generateSdfMap(drawn, strategy);
     if (pruned) {
         GpuSdfCellHeader header;
         header.originSize = glm::vec4(grid.origin, grid.size);
@@ -255,10 +256,10 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy,
         gpu.sdfCellStats.bytes = bufferBytes(gpu.sdfCells);
         gpu.sdfCellLevels = grid.levels;
     }
-    gpu.sdfInstructionCount = int(prepared.sdf.instructions.size());
+    gpu.sdfInstructionCount = int(drawn.instructions.size());
     gpu.sdfCodeCount = instructions.size();
     gpu.sdfDataCount = sdfData.size();
-    gpu.sdf = prepared.sdf;
+    gpu.sdf = drawn;
 
     const std::vector<GpuMaterial> materials = packMaterials(prepared.materials);
     for (const TextureImage& texture : prepared.textures)

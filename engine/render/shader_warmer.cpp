@@ -32,7 +32,8 @@ ShaderWarmer::~ShaderWarmer() {
     thread_.join();
 }
 
-void ShaderWarmer::request(const PreparedScene& scene, const std::vector<std::string>& sdfMaps) {
+void ShaderWarmer::request(std::shared_ptr<const PreparedScene> scene,
+                           const std::vector<std::string>& sdfMaps) {
     {
         std::lock_guard lock(mutex_);
         if (stopping_) return;
@@ -47,7 +48,7 @@ void ShaderWarmer::request(const PreparedScene& scene, const std::vector<std::st
         if (wanted.empty())
             pending_.reset();
         else
-            pending_ = Request{std::make_shared<const PreparedScene>(scene), std::move(wanted)};
+            pending_ = Request{std::move(scene), std::move(wanted)};
     }
     changed_.notify_all();
 }

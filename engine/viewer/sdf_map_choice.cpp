@@ -39,12 +39,12 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
                (!warmer_ || first || renderer_->hasPrograms(map) || warmer_->isWarm(map));
     };
     editor::EditingMaps maps =
-        editor::chooseEditingMaps(prepared_->sdf, boundedSdf_, live, isReady);
+        editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady);
     if (warmer_) {
-        warmer_->request(*prepared_, maps.build);
+        warmer_->request(prepared_, maps.build);
         if (waitForBuilds && !maps.build.empty()) {
             warmer_->waitUntilIdle();
-            maps = editor::chooseEditingMaps(prepared_->sdf, boundedSdf_, live, isReady);
+            maps = editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady);
             choiceBuilt_ = warmer_->finishedCount();
         }
     }
@@ -64,14 +64,12 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     }
     std::optional<GpuScene> fresh; // a new upload: a newer scene, or the other program
     if (sceneChanged_ || bounded != drawnBounded_ || cells != drawnCells_) {
-        if (bounded) std::swap(prepared_->sdf, boundedSdf_);
-        if (cells) {
+        if (cells)
             fresh = uploadScene(*prepared_, SdfStrategy::Cells, &*cellGrid_);
-        } else {
-            fresh =
-                uploadScene(*prepared_, bounded ? SdfStrategy::Interpreter : SdfStrategy::Buffer);
-        }
-        if (bounded) std::swap(prepared_->sdf, boundedSdf_);
+        else if (bounded)
+            fresh = uploadScene(*prepared_, SdfStrategy::Interpreter, nullptr, &*boundedSdf_);
+        else
+            fresh = uploadScene(*prepared_, SdfStrategy::Buffer);
     }
     GpuScene& next = fresh ? *fresh : *gpuScene_;
     std::string previous = std::exchange(next.sdfMap, maps.draw);
@@ -124,9 +122,7 @@ void ViewRenderer::updateCells(int frameNumber, bool wait) {
         effectiveSdfStrategy(prepared_->sdf, SdfStrategy::Baked) == SdfStrategy::Cells;
     if (wanted && cellsRequested_ != uploadedRevision_) {
         cellsRequested_ = uploadedRevision_;
-        cellPruning_.request(
-            {uploadedRevision_, frameNumber, prepared_->sdf, boundedSdf_,
-             prepared_->scene.sdf ? sdfContentBox(*prepared_->scene.sdf) : Aabb{}});
+        cellPruning_.request({uploadedRevision_, frameNumber, prepared_, boundedSdf_});
     }
     if (wait) cellPruning_.waitUntilIdle();
     std::optional<editor::CellPruningResult> result = cellPruning_.take();

@@ -90,10 +90,10 @@ void ViewRenderer::updateScene(const Scene& scene, std::uint64_t revision, std::
             "The scene does not compile (showing the last one that did):\n" + result->error;
         return;
     }
-    boundedSdf_ = std::move(result->bounded);
+    boundedSdf_ = std::make_shared<const SdfProgram>(std::move(result->bounded));
     // Drawn as soon as chooseSdfMap finds a map for it ready, which after a structural edit may
     // take a background build: the picture on screen stays until then.
-    prepared_ = std::move(result->prepared);
+    prepared_ = std::make_shared<const PreparedScene>(std::move(*result->prepared));
     sceneChanged_ = true;
 }
 

@@ -104,7 +104,7 @@ class ViewRenderer {
                                                 std::string& error);
 
     // The newest scene that compiled (what picking casts rays at), or nullptr.
-    const PreparedScene* newestScene() const { return prepared_ ? &*prepared_ : nullptr; }
+    const PreparedScene* newestScene() const { return prepared_.get(); }
     // The view shows the whole full-resolution image of what it was last asked to show:
     // nothing to do until something changes.
     bool refined() const { return full_ && refinement_.done(); }
@@ -124,10 +124,12 @@ class ViewRenderer {
     bool shadowMapsDrawn_ = false;     // renderer_'s shadow maps hold gpuScene_'s (its content
                                        // changes only with a new revision, which renders whole)
     editor::ScenePreparingJob preparing_;
-    std::uint64_t preparingRevision_ = 0;   // the revision last asked for
-    std::optional<PreparedScene> prepared_; // last scene that compiled (the newest), its SDF
-                                            // without the bounding hierarchy (generated code's)
-    SdfProgram boundedSdf_;                 // the same SDF with it, what the interpreter runs
+    std::uint64_t preparingRevision_ = 0; // the revision last asked for
+    // The last scene that compiled (the newest), its SDF without the bounding hierarchy
+    // (generated code's), and the same SDF with it, what the interpreter runs. Never changed
+    // once made: the warmer and the cell pruning share them with their threads.
+    std::shared_ptr<const PreparedScene> prepared_;
+    std::shared_ptr<const SdfProgram> boundedSdf_;
     bool sceneChanged_ = false; // `prepared_` is newer than what is drawn: it shows once a map
                                 // for it is ready
     bool drawnBounded_ = false; // gpuScene_ holds boundedSdf_ (the interpreter draws)

@@ -86,9 +86,10 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     const std::string a = mapFor(kSdfIdBase + 1), b = mapFor(kSdfIdBase + 2),
                       c = mapFor(kSdfIdBase + 3);
     ShaderWarmer warmer(secondaryContext(), embeddedShaderFiles());
-    warmer.request(prepared, {a});
-    warmer.request(prepared, {b});
-    warmer.request(prepared, {c});
+    const auto shared = std::make_shared<const PreparedScene>(prepared);
+    warmer.request(shared, {a});
+    warmer.request(shared, {b});
+    warmer.request(shared, {c});
     warmer.waitUntilIdle();
     EXPECT_TRUE(warmer.idle());
     EXPECT_EQ(warmer.takeError(), "");
@@ -100,7 +101,7 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     // A request is a list built in order; maps already warm are skipped.
     const std::size_t finished = warmer.finishedCount();
     const std::string d = mapFor(kSdfIdBase + 4), e = mapFor(kSdfIdBase + 5);
-    warmer.request(prepared, {c, d, e});
+    warmer.request(shared, {c, d, e});
     warmer.waitUntilIdle();
     EXPECT_TRUE(warmer.isWarm(d) && warmer.isWarm(e));
     EXPECT_EQ(warmer.finishedCount(), finished + 2) << "c was warm already";
@@ -113,13 +114,13 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
 
     // A map that does not build is reported, not retried, and the warmer goes on.
     const std::string broken = c + "\nthis is not GLSL\n";
-    warmer.request(prepared, {broken});
+    warmer.request(shared, {broken});
     warmer.waitUntilIdle();
     EXPECT_FALSE(warmer.isWarm(broken));
     EXPECT_NE(warmer.takeError().find("background shader build failed"), std::string::npos);
-    warmer.request(prepared, {broken});
+    warmer.request(shared, {broken});
     EXPECT_TRUE(warmer.idle()) << "a failed map is not asked for again";
-    warmer.request(prepared, {a});
+    warmer.request(shared, {a});
     warmer.waitUntilIdle();
     EXPECT_TRUE(warmer.isWarm(a));
     expectNoGlErrors();
@@ -134,7 +135,8 @@ TEST(ShaderWarmer, ReportsTheProgressOfTheCurrentRequest) {
     ShaderWarmer warmer(secondaryContext(), embeddedShaderFiles());
     warmer.waitUntilIdle(); // started
     EXPECT_EQ(warmer.progress().total, 0) << "nothing asked for";
-    warmer.request(prepared, {mapFor(kSdfIdBase + 6), mapFor(kSdfIdBase + 7)});
+    warmer.request(std::make_shared<const PreparedScene>(prepared),
+                   {mapFor(kSdfIdBase + 6), mapFor(kSdfIdBase + 7)});
     // Right after the request neither map can be built: each takes milliseconds at least.
     ShaderWarmer::Progress p = warmer.progress();
     EXPECT_EQ(p.total, 2);
@@ -173,7 +175,7 @@ TEST(ShaderWarmer, WithoutAContextItSaysSoAndIgnoresRequests) {
     warmer.waitUntilIdle();
     EXPECT_NE(warmer.takeError().find("no context for this test"), std::string::npos);
     const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Baked);
-    warmer.request(prepared, {map});
+    warmer.request(std::make_shared<const PreparedScene>(prepared), {map});
     EXPECT_TRUE(warmer.idle());
     EXPECT_FALSE(warmer.isWarm(map));
 }

@@ -8,22 +8,23 @@
 #pragma once
 
 #include "editor/newest_request_worker.hpp"
-#include "sdf/bounds.hpp"
+#include "prepare/prepared_scene.hpp"
 #include "sdf/cell_pruning.hpp"
 #include "sdf/program.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <utility>
 
 namespace rmsc::editor {
 
+// Shared, not copied: the viewer's frame never waits for a copy of a large scene.
 struct CellPruningRequest {
-    std::uint64_t revision = 0; // the document's
-    int frame = 0;              // the viewer's frame that asked (for its log)
-    SdfProgram program;         // the tree pruned (without the bounding hierarchy)
-    SdfProgram outside;         // what points outside the grid run (with it)
-    Aabb content;               // sdfContentBox of the scene's tree
+    std::uint64_t revision = 0;                 // the document's
+    int frame = 0;                              // the viewer's frame that asked (for its log)
+    std::shared_ptr<const PreparedScene> scene; // its sdf: the tree pruned (no bounding hierarchy)
+    std::shared_ptr<const SdfProgram> outside;  // what points outside the grid run (with it)
 };
 
 struct CellPruningResult {

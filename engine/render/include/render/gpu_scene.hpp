@@ -90,8 +90,10 @@ void setSceneLights(GpuScene& gpu, const PreparedScene& prepared, const std::vec
 
 // Under the Cells strategy the program is pruned here, unless `cells` gives the grid already
 // pruned for prepared.sdf (the viewer's, pruned again after an edit: sdf/cell_pruning.hpp).
+// `sdf`, when given, is drawn instead of prepared.sdf (the viewer's interpreter draws the same
+// tree compiled with its bounding hierarchy).
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy = SdfStrategy::Baked,
-                     const SdfCellGrid* cells = nullptr);
+                     const SdfCellGrid* cells = nullptr, const SdfProgram* sdf = nullptr);
 
 // Writes `grid` into gpu's cell buffer: when it was pruned again (repruneSdfCells) from the very
 // grid the buffer holds (SdfCellGrid::changedSince is the buffer's pack), only the header and

@@ -45,7 +45,9 @@ class ShaderWarmer {
     // Builds the programs of `scene` uploaded with its SDF map replaced by each of `sdfMaps` in
     // turn (the shells' maps are the buffer strategy's, as the editor draws them), skipping maps
     // that are warm, failed or being built. Replaces what is waiting.
-    void request(const PreparedScene& scene, const std::vector<std::string>& sdfMaps);
+    // The scene is shared, not copied: the caller's thread never waits for a copy of it.
+    void request(std::shared_ptr<const PreparedScene> scene,
+                 const std::vector<std::string>& sdfMaps);
     // Has a request for this map finished building?
     bool isWarm(const std::string& sdfMap) const;
     // How many maps have finished building (or failed) since the start: changes when there may be
