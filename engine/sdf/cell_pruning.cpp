@@ -1523,7 +1523,14 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         std::uint32_t(inPlace ? s.packedBase : 128 * (blockCount + (blockCount + 7) / 8));
     s.blockStats.resize(blockCount);
     s.blockChanged.resize(blockCount, 1);
-    if (!inPlace) grid.words.assign(base, 0u);
+    // Reserved whole first, with room for a quarter more lists (an edit's new lists go after the
+    // old ones, as in the GPU's buffer): growing a large grid's words in steps would copy them,
+    // and hold two copies at once. What is never used is never touched (costs no memory).
+    if (!inPlace) {
+        grid.words.clear();
+        grid.words.reserve(base + s.lists.size() + s.lists.size() / 4 + s.outsideLength);
+        grid.words.assign(base, 0u);
+    }
     grid.words.resize(base + s.lists.size());
     for (std::uint32_t b = 0; b < blockCount; ++b) {
         if (inPlace && !s.blockChanged[b]) continue;
@@ -1619,14 +1626,21 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     const auto started = std::chrono::steady_clock::now();
     if (keep) keep->reset();
     SdfCellGrid grid;
-    grid.code = program.instructions;
-    if (content.empty() || program.instructions.empty() || options.levels < 1) {
+    auto wholeProgramOnly = [&] { // no grid: everything runs the whole program
+        grid.code = program.instructions;
         appendOutsideList(grid, program.instructions.size());
+    };
+    if (content.empty() || program.instructions.empty() || options.levels < 1) {
+        wholeProgramOnly();
         return grid;
     }
     SdfCellStatePtr state(new SdfCellState);
     SdfCellState& s = *state;
     s.program = program;
+    // The program, the union below, the far constants and the outside program (reserved whole:
+    // a large scene's code is not copied as it grows).
+    s.code.reserve(program.instructions.size() + 1 + 6 * kFarSteps +
+                   (outside ? outside->instructions.size() : 0));
     s.code = program.instructions;
     s.options = options;
     s.keepTrees = keep != nullptr;
@@ -1637,7 +1651,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     const std::uint32_t unionInstruction = std::uint32_t(s.code.size());
     s.code.push_back(unite);
     if (!readTree(program.instructions, unionInstruction, s.tree) || s.tree.nodes.empty()) {
-        appendOutsideList(grid, program.instructions.size());
+        wholeProgramOnly();
         return grid;
     }
     s.floors = nodeFloors(s.code, s.tree);
@@ -1654,6 +1668,16 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
             s.code.push_back(constantInstruction(float(m) * cellEdge(s, level)));
         }
     setOutsideProgram(s, s.code.size(), outside);
+
+    // The per-cell arrays grow a block at a time up to the cell budget: reserved for it once,
+    // they are never copied as they grow (two copies at once), and the part never used is never
+    // touched, so it costs no memory.
+    const std::size_t cellRoom = std::min(options.maxCells, std::size_t(limits::kSdfCells)) + 64;
+    s.blocks.reserve(cellRoom / 64);
+    s.entries.reserve(2 * cellRoom);
+    s.cellLeaves.reserve(cellRoom);
+    s.unionThresholds.reserve(cellRoom);
+    s.leastLows.reserve(cellRoom);
 
     PrunedTree whole;
     if (!s.direct) {
