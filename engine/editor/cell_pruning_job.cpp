@@ -3,7 +3,9 @@
 
 #include "core/thread_priority.hpp"
 
+#include <atomic>
 #include <chrono>
+#include <memory>
 #include <thread>
 #include <utility>
 
@@ -15,22 +17,30 @@ CellPruningResult CellPruningJob::prune(const CellPruningRequest& request) {
     result.revision = request.revision;
     result.frame = request.frame;
     // Pruned again into the grid kept from the last result, so the result says which of its
-    // words changed since (SdfCellGrid::changedWords, changedSince).
+    // words changed since (SdfCellGrid::changedWords, changedSince). A result still held has
+    // its grid copied first: a grid once given never changes.
     const SdfProgram& program = request.scene->sdf;
     const Aabb content =
         request.scene->scene.sdf ? sdfContentBox(*request.scene->scene.sdf) : Aabb{};
-    result.again = state_ && repruneSdfCells(*state_, program, grid_, request.outside.get());
+    if (state_ && grid_ && grid_.use_count() > 1) grid_ = std::make_shared<SdfCellGrid>(*grid_);
+    // (Read as 1: the holders' releases happened before; the fence orders their last reads of
+    // the grid before the writes below.)
+    std::atomic_thread_fence(std::memory_order_acquire);
+    result.again =
+        state_ && grid_ && repruneSdfCells(*state_, program, *grid_, request.outside.get());
     if (result.again && !content.empty() &&
-        (glm::any(glm::lessThan(content.min, grid_.origin)) ||
-         glm::any(glm::greaterThan(content.max, grid_.origin + glm::vec3(grid_.size)))))
+        (glm::any(glm::lessThan(content.min, grid_->origin)) ||
+         glm::any(glm::greaterThan(content.max, grid_->origin + glm::vec3(grid_->size)))))
         result.again = false; // moved out of the cube: a new one
     if (!result.again) {
         // A full build takes seconds: it runs on a thread of its own at a lower priority (its
         // threads inherit it), so the frames come first; a re-prune after an edit, tens of
         // milliseconds, runs here at the UI's.
+        grid_.reset(); // (a held one stays with its holder)
         std::thread build([&] {
             lowerThisThreadsPriority();
-            grid_ = buildSdfCells(program, content, {}, &state_, request.outside.get());
+            grid_ = std::make_shared<SdfCellGrid>(
+                buildSdfCells(program, content, {}, &state_, request.outside.get()));
         });
         build.join();
     }

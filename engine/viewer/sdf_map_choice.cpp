@@ -32,8 +32,8 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     if (first) choiceRevision_ = 0; // choose again next frame: the other maps build meanwhile
     // A scene drawn with the cells map waits for its cells with the last picture (the
     // interpreter would take seconds a frame on such a scene).
-    const bool cellsPending =
-        cellsRequested_ == uploadedRevision_ && cellGridRevision_ != uploadedRevision_;
+    const bool cellsPending = cellsRequested_ == uploadedRevision_ &&
+                              (cellGridRevision_ != uploadedRevision_ || !cellGrid_);
     auto isReady = [this, first, cellsPending](const std::string& map) {
         return !cellsPending &&
                (!warmer_ || first || renderer_->hasPrograms(map) || warmer_->isWarm(map));
@@ -122,13 +122,16 @@ void ViewRenderer::updateCells(int frameNumber, bool wait) {
         effectiveSdfStrategy(prepared_->sdf, SdfStrategy::Baked) == SdfStrategy::Cells;
     if (wanted && cellsRequested_ != uploadedRevision_) {
         cellsRequested_ = uploadedRevision_;
+        // Nothing draws the last cells again until the new ones come (they are pending), and the
+        // worker prunes into the grid in place when nobody else holds it (instead of a copy).
+        cellGrid_.reset();
         cellPruning_.request({uploadedRevision_, frameNumber, prepared_, boundedSdf_});
     }
     if (wait) cellPruning_.waitUntilIdle();
     std::optional<editor::CellPruningResult> result = cellPruning_.take();
     if (!result) return;
     std::fprintf(stderr, "rmsc view: frame %d: pruned %zu cells in %.0f ms (%s)\n", result->frame,
-                 result->grid.stats.prunedCells, result->milliseconds,
+                 result->grid->stats.prunedCells, result->milliseconds,
                  result->again ? "again, after an edit of numbers" : "all");
     // (An older revision's: a newer one is pruned next.)
     if (result->revision != cellsRequested_) return;

@@ -137,7 +137,7 @@ class ViewRenderer {
     // The cells map's grid, pruned on a worker (editor/cell_pruning_job.hpp): the newest one
     // taken and the revision it is of; the revision last asked for.
     editor::CellPruningJob cellPruning_;
-    std::optional<SdfCellGrid> cellGrid_;
+    std::shared_ptr<const SdfCellGrid> cellGrid_; // dropped when the next cells are asked for
     std::uint64_t cellGridRevision_ = 0, cellsRequested_ = 0;
     std::uint64_t uploadedRevision_ = 0;
     // The SDF map drawn: the best one that is ready; the warmer builds better ones on its
