@@ -30,15 +30,37 @@ ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revisi
     return result;
 }
 
-ScenePreparingResult ScenePreparingJob::prepare(const Request& request) const {
+ScenePreparingResult ScenePreparingJob::prepare(Request& request) {
+    ScenePreparingResult result;
     try {
-        return prepareEditedScene(request.second, request.first, files_);
+        result = prepareEditedScene(request.second, request.first, files_);
     } catch (const std::exception& e) { // out of memory: the scene is not drawn
-        ScenePreparingResult result;
+        result = {};
         result.revision = request.first;
         result.error = std::string("the scene could not be compiled: ") + e.what();
-        return result;
     }
+    keepSpare(std::move(request.second));
+    return result;
+}
+
+Scene ScenePreparingJob::takeSpare() {
+    std::lock_guard lock(spareMutex_);
+    if (spares_.empty()) return Scene{};
+    Scene scene = std::move(spares_.back());
+    spares_.pop_back();
+    return scene;
+}
+
+void ScenePreparingJob::keepSpare(Scene scene) {
+    std::lock_guard lock(spareMutex_);
+    if (spares_.size() < 2) spares_.push_back(std::move(scene));
+}
+
+void ScenePreparingJob::request(std::uint64_t revision, const Scene& scene) {
+    Scene copy = takeSpare();
+    copy = scene;
+    if (std::optional<Request> replaced = worker_.request({revision, std::move(copy)}))
+        keepSpare(std::move(replaced->second));
 }
 
 } // namespace rmsc::editor

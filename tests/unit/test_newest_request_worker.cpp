@@ -26,10 +26,11 @@ TEST(NewestRequestWorker, WorksOnTheNewestRequestAndKeepsTheNewestResult) {
         worked.push_back(request);
         return request * 10;
     });
-    worker.request(1);
+    EXPECT_FALSE(worker.request(1)); // nothing waited
     firstStarted.get_future().wait();
-    worker.request(2);
-    worker.request(3); // replaces 2, which is never worked on
+    EXPECT_FALSE(worker.request(2)); // 1 is worked on, not waiting
+    // Replaces 2, which is never worked on and comes back to the caller (to use again).
+    EXPECT_EQ(worker.request(3), std::optional<int>(2));
     EXPECT_FALSE(worker.idle());
     EXPECT_FALSE(worker.take()); // nothing finished yet
     gate.set_value();

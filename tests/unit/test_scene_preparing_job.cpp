@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 using namespace rmsc;
 
@@ -68,4 +69,28 @@ TEST(ScenePreparingJob, ASceneThatDoesNotCompileIsReported) {
     EXPECT_EQ(result->revision, 7u);
     EXPECT_FALSE(result->prepared);
     EXPECT_NE(result->error.find("no-such-mesh.glb"), std::string::npos) << result->error;
+}
+
+// A request's scene is copied over the scene of an earlier request the worker is done with
+// (its memory used again): each result is still its own scene's, whatever the earlier ones
+// held, larger or smaller, named otherwise.
+TEST(ScenePreparingJob, ScenesCopiedOverEarlierOnesArePreparedAsTheirOwn) {
+    editor::ScenePreparingJob job(diskFileSource());
+    const std::vector<int> counts{40, 3, 40, 7, 7, 1};
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+        Scene scene = sceneOf(spheres(counts[i]));
+        scene.sdf->children[0].name = "first of " + std::to_string(counts[i]);
+        job.request(i + 1, scene);
+        job.waitUntilIdle();
+        const std::optional<editor::ScenePreparingResult> result = job.take();
+        ASSERT_TRUE(result);
+        ASSERT_TRUE(result->prepared) << result->error;
+        EXPECT_EQ(result->revision, i + 1);
+        // n shapes and the n - 1 unions of them.
+        EXPECT_EQ(result->prepared->sdf.instructions.size(), std::size_t(2 * counts[i] - 1));
+        ASSERT_EQ(result->prepared->scene.sdf->children.size(), std::size_t(counts[i]));
+        EXPECT_EQ(result->prepared->scene.sdf->children[0].name, scene.sdf->children[0].name);
+        EXPECT_EQ(result->prepared->scene.sdf->children.back().transform.position,
+                  scene.sdf->children.back().transform.position);
+    }
 }

@@ -29,12 +29,15 @@ template <class Request, class Result> class NewestRequestWorker {
     NewestRequestWorker(const NewestRequestWorker&) = delete;
     NewestRequestWorker& operator=(const NewestRequestWorker&) = delete;
 
-    void request(Request request) {
+    // Returns the request this one replaced, if one was waiting (its owner may use it again).
+    std::optional<Request> request(Request request) {
+        std::optional<Request> replaced;
         {
             std::lock_guard lock(mutex_);
-            waiting_ = std::move(request);
+            replaced = std::exchange(waiting_, std::move(request));
         }
         changed_.notify_all();
+        return replaced;
     }
     // The newest finished result, once (nullopt while none is new).
     std::optional<Result> take() {

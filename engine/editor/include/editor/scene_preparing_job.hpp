@@ -14,9 +14,11 @@
 #include "sdf/program.hpp"
 
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace rmsc::editor {
 
@@ -37,18 +39,26 @@ class ScenePreparingJob {
   public:
     explicit ScenePreparingJob(FileSource files) : files_(std::move(files)) {}
 
-    void request(std::uint64_t revision, Scene scene) {
-        worker_.request({revision, std::move(scene)});
-    }
+    // The scene is copied over one the worker is done with or that a newer request replaced,
+    // when there is one: assigning over its nodes reuses their memory, where a new copy of a
+    // large scene takes fresh memory (20 to 35 ms for the 10,000-shape grid on a 2-core
+    // machine, in a frame of every drag).
+    void request(std::uint64_t revision, const Scene& scene);
     // The newest finished result, once (nullopt while none is new).
     std::optional<ScenePreparingResult> take() { return worker_.take(); }
     void waitUntilIdle() { worker_.waitUntilIdle(); }
 
   private:
     using Request = std::pair<std::uint64_t, Scene>;
-    ScenePreparingResult prepare(const Request& request) const; // on the worker
+    ScenePreparingResult prepare(Request& request); // on the worker
+    Scene takeSpare();
 
     FileSource files_;
+    void keepSpare(Scene scene);
+    std::mutex spareMutex_;
+    // Requests' scenes prepared or replaced, their memory used again by the next requests: two,
+    // one for the request waiting and one for the next, while the worker prepares a third.
+    std::vector<Scene> spares_;
     // Last: destroyed first, so the compile under way ends before what it uses.
     NewestRequestWorker<Request, ScenePreparingResult> worker_{
         [this](Request& request) { return prepare(request); }};
