@@ -49,6 +49,13 @@ bool everySurfaceInside(const PreparedScene& prepared, const SdfCellGrid& grid) 
            glm::all(glm::lessThanEqual(whole.box.max, grid.origin + grid.size));
 }
 
+// The program's floor, which far cells may take instead of their constant (sdf_cells.glsl).
+void setCellFloor(GpuSdfCellHeader& header, const SdfCellGrid& grid) {
+    header.floorMin =
+        grid.floor ? glm::vec4(grid.floor->box.min, grid.floor->drop) : glm::vec4(0.0f);
+    header.floorMax = grid.floor ? glm::vec4(grid.floor->box.max, 1.0f) : glm::vec4(0.0f);
+}
+
 // The size of `buffer` (0 for none).
 std::size_t bufferBytes(const gl::Buffer& buffer) {
     GLint64 bytes = 0;
@@ -63,6 +70,7 @@ void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid) {
     header.originSize = glm::vec4(grid.origin, grid.size);
     header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
                              header.info.w);
+    setCellFloor(header, grid);
     gpu.sdfCellStats = grid.stats;
     gpu.sdfCellLevels = grid.levels;
     const std::size_t capacity = bufferBytes(gpu.sdfCells);
@@ -249,6 +257,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
         header.originSize = glm::vec4(grid.origin, grid.size);
         header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
                                  everySurfaceInside(prepared, grid) ? 1u : 0u);
+        setCellFloor(header, grid);
         gpu.sdfCellHeader = header;
         createCellBuffer(gpu, header, grid);
         gpu.sdfCellStamp = grid.packStamp;

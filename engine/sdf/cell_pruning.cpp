@@ -1518,6 +1518,9 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     grid.levels = s.levels;
     grid.origin = s.origin;
     grid.size = s.size;
+    grid.floor.reset(); // the root's, made again after an edit (updateNodeFloors)
+    if (!s.floors.empty() && s.floors.back().valid && !s.floors.back().box.empty())
+        grid.floor = SdfFieldFloor{s.floors.back().box, s.floors.back().drop};
     const std::size_t blockCount = s.blocks.size();
     const std::uint32_t base =
         std::uint32_t(inPlace ? s.packedBase : 128 * (blockCount + (blockCount + 7) / 8));

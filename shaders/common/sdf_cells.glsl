@@ -13,17 +13,19 @@ layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
     vec4 sdfCellOrigin; // xyz = the grid cube's corner, w = its edge
     uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the whole program's list, w = 1 when
                         // every surface lies inside the grid's cube
+    vec4 sdfCellFloorMin; // the whole program's floor (SdfCellGrid::floor): its box, w = drop
+    vec4 sdfCellFloorMax; // w = 1 when there is one
     // then the words (SdfCellGrid::words), read through sdfCellTexels below
 };
 
 // The same buffer as pairs of words (a buffer texture over it, engine/render/gpu_scene.cpp),
 // read at indices that differ between pixels: a cell's two words in one fetch, where llvmpipe
 // loads storage-buffer words one at a time (see sdfProgramTexels in common/sdf_functions.glsl).
-// Word n is in texel 4 + n / 2 (after the 32-byte header).
+// Word n is in texel 8 + n / 2 (after the 64-byte header).
 layout(binding = SDF_CELL_TEXEL_UNIT) uniform usamplerBuffer sdfCellTexels;
 
 uvec2 sdfCellPair(uint k) {
-    return texelFetch(sdfCellTexels, int(4u + k)).xy;
+    return texelFetch(sdfCellTexels, int(8u + k)).xy;
 }
 uint sdfCellWord(uint n) {
     uvec2 pair = sdfCellPair(n >> 1u);
@@ -99,6 +101,25 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
     sdfProgramCell(p, base, count, affine, cell);
 }
 
+// The distance at p of a cell whose program is `distance`: a far cell's constant is the least
+// the field can be anywhere in the cell, so a coarse cell beside the content gives its far
+// side no more than its near side. The whole program's floor (engine/sdf/cell_pruning.hpp,
+// sdfProgramFloor: at every point outside its box the field is at least the distance to the box
+// less the drop) is a lower bound at p itself; the larger of the two is the distance there. A
+// cone (passes/cone.frag) then passes the empty space beside the content as the bounding
+// hierarchy's box tests let it (it stopped on the constants), and soft shadows and AO read less
+// darkness into it. Without a plane in the scene every affine cell is a constant (and a scene
+// with a plane has no floor).
+float sdfCellDistance(float distance, vec3 p, bool affine) {
+#ifndef SDF_CELLS_PLANES
+    if (affine && sdfCellFloorMax.w != 0.0) {
+        vec3 outside = max(max(sdfCellFloorMin.xyz - p, p - sdfCellFloorMax.xyz), vec3(0.0));
+        distance = max(distance, length(outside) - sdfCellFloorMin.w);
+    }
+#endif
+    return distance;
+}
+
 #ifndef SDF_CELLS_LEAN
 #include "common/sdf_interpreter.glsl"
 #else
@@ -144,8 +165,10 @@ float sdfListDistance(vec3 p, uint base, uint count) {
 
 float sdfDistance(vec3 p) {
     uint base, count;
-    sdfProgramRange(p, base, count);
-    return sdfListDistance(p, base, count);
+    bool affine;
+    vec4 cell;
+    sdfProgramCell(p, base, count, affine, cell);
+    return sdfCellDistance(sdfListDistance(p, base, count), p, affine);
 }
 
 // The nearest shape's surface (the first of equal ones, as a union keeps). Once per hit.

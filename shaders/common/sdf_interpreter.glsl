@@ -125,8 +125,15 @@ float sdfListDistance(vec3 p, uint base, uint count) {
 // The scene distance at p (world units; negative inside). Used by the march loop.
 float sdfDistance(vec3 p) {
     uint base, count;
+#ifdef SDF_CELLS
+    bool affine;
+    vec4 cell;
+    sdfProgramCell(p, base, count, affine, cell);
+    return sdfCellDistance(sdfListDistance(p, base, count), p, affine);
+#else
     sdfProgramRange(p, base, count);
     return sdfListDistance(p, base, count);
+#endif
 }
 
 // The same program as sdfDistance, carrying the material and object id (see

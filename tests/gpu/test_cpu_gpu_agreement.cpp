@@ -16,13 +16,25 @@ struct Agreement {
     int sdfHits = 0;
     int idMismatches = 0;
     int depthMismatches = 0;
-    int gpuMisses = 0; // of the id mismatches, where the CPU hits SDF and the GPU shows nothing
-    // Of the id mismatches, where the GPU hit an SDF object the CPU's ray passed and the whole
-    // program's distance at the GPU's hit is under the hit threshold there: a ray grazing a
-    // surface, whose two marches sampled it at different points.
+    // Of the id mismatches, where the CPU hits SDF and the GPU shows nothing, but for grazes.
+    int gpuMisses = 0;
+    // Of the id mismatches, rays grazing a surface, whose two marches sampled them at
+    // different points: where the GPU hit an SDF object the CPU's ray passed and the whole
+    // program's distance at the GPU's hit is under the hit threshold there; or where the GPU
+    // passed what the CPU hit, a surface the ray never enters (grazesOnly).
     int grazes = 0;
     std::string firstProblem;
 };
+
+// Does the ray only graze what it hit: within the hit threshold of a surface it never enters?
+// The whole program's distance stays positive for four thresholds past the hit, so a march
+// that samples the ray at other points may pass it.
+bool grazesOnly(const SdfProgram& program, glm::vec3 ro, glm::vec3 rd, float t, float threshold) {
+    for (int i = 0; i <= 16; ++i)
+        if (sdfDistance(program, ro + rd * (t + 0.25f * threshold * float(i))) <= 0.0f)
+            return false;
+    return true;
+}
 
 // Casts the ray of every `step`-th pixel on the CPU and compares with the GPU AOVs. Pixels
 // where the GPU shows a mesh are checked too: the CPU ray, stopped at the mesh depth, must not
@@ -61,11 +73,16 @@ Agreement compare(const PreparedScene& prepared, int width, int height, int step
             }
             if (cpuId != gpuId) {
                 ++a.idMismatches;
-                a.gpuMisses += hit && gpuId == 0;
+                const bool passedAGraze =
+                    hit && gpuId == 0 &&
+                    grazesOnly(prepared.sdf, scene.camera.position, rd, hit->t,
+                               scene.render.surfaceEpsilon * std::max(hit->t, 1.0f));
+                a.gpuMisses += hit && gpuId == 0 && !passedAGraze;
                 const float gpuT = gpuDepth / forwardness;
-                a.grazes += gpuSdf && !hit &&
-                            sdfDistance(prepared.sdf, scene.camera.position + rd * gpuT) <
-                                scene.render.surfaceEpsilon * std::max(gpuT, 1.0f);
+                a.grazes +=
+                    passedAGraze || (gpuSdf && !hit &&
+                                     sdfDistance(prepared.sdf, scene.camera.position + rd * gpuT) <
+                                         scene.render.surfaceEpsilon * std::max(gpuT, 1.0f));
                 if (a.firstProblem.empty())
                     a.firstProblem = "pixel " + std::to_string(x) + "," + std::to_string(row) +
                                      ": GPU id " + std::to_string(gpuId) + ", CPU id " +
@@ -94,7 +111,8 @@ void expectAgreement(const PreparedScene& prepared, const std::string& scenePath
     EXPECT_LE(a.idMismatches, allowed) << scenePath << ": " << a.firstProblem;
     EXPECT_LE(a.depthMismatches, allowed) << scenePath << ": " << a.firstProblem;
     // Of those, a GPU march that misses what the CPU hits (it gave up, or started past the
-    // surface): none, as measured on llvmpipe in every one of these scenes.
+    // surface), but for rays that only graze a surface they never enter: none, as measured on
+    // llvmpipe in every one of these scenes.
     EXPECT_EQ(a.gpuMisses, 0) << scenePath << ": " << a.firstProblem;
 }
 
@@ -209,13 +227,14 @@ TEST(CpuGpuAgreement, CellsOnABoundedSceneEndRaysAtTheGrid) {
     EXPECT_EQ(everySurfaceInside(grid), 1u);
     EXPECT_EQ(everySurfaceInside(tree), 0u); // its plane reaches past any grid
     const Agreement a = compare(grid, 128, 72, 1, SdfStrategy::Cells);
-    // As tight as measured on llvmpipe: 2,099 of 9,216 pixels hit; 3 ids differ, each a ray
-    // grazing a shape that the GPU's march stopped on (the whole program's distance at its hit
-    // 0.00765, the threshold 0.00767) and the CPU's stepped past; no depth differs.
+    // As tight as measured on llvmpipe: 2,099 of 9,216 pixels hit; 1 id differs, a ray grazing
+    // a shape it never enters, which the CPU's march stopped on (within its hit threshold) and
+    // the GPU's stepped past; no depth differs. (Before far cells took the program's floor,
+    // 3 ids differed, rays the GPU's march stopped on and the CPU's passed.)
     EXPECT_GT(a.sdfHits, a.sampled / 10);
     EXPECT_EQ(a.gpuMisses, 0) << a.firstProblem;
     EXPECT_EQ(a.idMismatches, a.grazes) << a.firstProblem;
-    EXPECT_LE(a.grazes, 3); // as measured
+    EXPECT_LE(a.grazes, 1); // as measured
     EXPECT_EQ(a.depthMismatches, 0) << a.firstProblem;
 }
 

@@ -100,6 +100,13 @@ constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
 // grazing a floor to the horizon crosses each cell in one step instead of many.
 constexpr std::uint32_t kSdfCellAffine = 0x80000000u;
 
+// A lower bound of a field from the boxes of its shapes: at every point y outside `box` the
+// field is at least distance(y, box) - drop (sdfProgramFloor below).
+struct SdfFieldFloor {
+    Aabb box;
+    float drop = 0.0f;
+};
+
 struct SdfWordRange {
     std::uint32_t first = 0, count = 0;
 };
@@ -112,6 +119,9 @@ struct SdfCellGrid {
     std::uint32_t outsideOffset = 0; // the whole program's list (identity), in words
     std::uint32_t outsideLength = 0;
     std::vector<GpuSdfInstruction> code; // program.instructions + the added ones
+    // The whole program's floor (as sdfProgramFloor gives it), when it has one: far cells, whose
+    // program is a constant, may take the larger of the two (sdf_cells.glsl).
+    std::optional<SdfFieldFloor> floor;
     SdfCellStats stats;
     // The words the last build or re-prune wrote, in order: all of them after a build; after a
     // re-prune into the grid it last wrote, the blocks of cells that changed and the lists from
@@ -125,10 +135,6 @@ struct SdfCellGrid {
 // pruning drops subtrees by): at every point y outside `box` the field is at least
 // distance(y, box) - drop. nullopt when the program has none (a shape without an exact
 // formula or under a non-uniform scale, a point modifier, a bounding hierarchy).
-struct SdfFieldFloor {
-    Aabb box;
-    float drop = 0.0f;
-};
 std::optional<SdfFieldFloor> sdfProgramFloor(const std::vector<GpuSdfInstruction>& code);
 
 // The content box of a tree: the union of the world boxes of its bounded parts (unbounded
