@@ -104,8 +104,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 // The distance at p of a cell whose program is `distance`: a far cell's constant is the least
 // the field can be anywhere in the cell, so a coarse cell beside the content gives its far
 // side no more than its near side. The whole program's floor (engine/sdf/cell_pruning.hpp,
-// sdfProgramFloor: at every point outside its box the field is at least the distance to the box
-// less the drop) is a lower bound at p itself; the larger of the two is the distance there. A
+// SdfCellGrid::floor: at every point outside its box the field is at least the distance to the
+// box less the drop) is a lower bound at p itself; the larger of the two is the distance there. A
 // cone (passes/cone.frag) then passes the empty space beside the content as the bounding
 // hierarchy's box tests let it (it stopped on the constants), and soft shadows and AO read less
 // darkness into it. Without a plane in the scene every affine cell is a constant (and a scene

@@ -36,6 +36,18 @@ bool grazesOnly(const SdfProgram& program, glm::vec3 ro, glm::vec3 rd, float t, 
     return true;
 }
 
+// The helper itself: a ray into a sphere enters it; one passing half a threshold above it does
+// not.
+TEST(CpuGpuAgreement, AGrazeIsARayThatNeverEntersTheSurface) {
+    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+      "sdf": {"children": [{"shape": "sphere", "radius": 1}]}})");
+    const float threshold = 0.01f;
+    EXPECT_FALSE(
+        grazesOnly(prepared.sdf, {-5.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 3.995f, threshold));
+    EXPECT_TRUE(grazesOnly(prepared.sdf, {-5.0f, 1.0f + 0.5f * threshold, 0.0f}, {1.0f, 0.0f, 0.0f},
+                           4.99f, threshold));
+}
+
 // Casts the ray of every `step`-th pixel on the CPU and compares with the GPU AOVs. Pixels
 // where the GPU shows a mesh are checked too: the CPU ray, stopped at the mesh depth, must not
 // hit an SDF object in front of it.

@@ -52,9 +52,9 @@ class ScenePreparingJob {
     using Request = std::pair<std::uint64_t, Scene>;
     ScenePreparingResult prepare(Request& request); // on the worker
     Scene takeSpare();
+    void keepSpare(Scene scene);
 
     FileSource files_;
-    void keepSpare(Scene scene);
     std::mutex spareMutex_;
     // Requests' scenes prepared or replaced, their memory used again by the next requests: two,
     // one for the request waiting and one for the next, while the worker prepares a third.

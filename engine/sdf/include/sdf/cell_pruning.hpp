@@ -101,7 +101,7 @@ constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
 constexpr std::uint32_t kSdfCellAffine = 0x80000000u;
 
 // A lower bound of a field from the boxes of its shapes: at every point y outside `box` the
-// field is at least distance(y, box) - drop (sdfProgramFloor below).
+// field is at least distance(y, box) - drop (SdfCellGrid::floor, sdfProgramFloor).
 struct SdfFieldFloor {
     Aabb box;
     float drop = 0.0f;
@@ -119,8 +119,9 @@ struct SdfCellGrid {
     std::uint32_t outsideOffset = 0; // the whole program's list (identity), in words
     std::uint32_t outsideLength = 0;
     std::vector<GpuSdfInstruction> code; // program.instructions + the added ones
-    // The whole program's floor (as sdfProgramFloor gives it), when it has one: far cells, whose
-    // program is a constant, may take the larger of the two (sdf_cells.glsl).
+    // The whole program's floor, when it has one: its tree's root's, of the floors the pruning
+    // drops subtrees by (also read through a bounding hierarchy, which sdfProgramFloor refuses).
+    // Far cells, whose program is a constant, may take the larger of the two (sdf_cells.glsl).
     std::optional<SdfFieldFloor> floor;
     SdfCellStats stats;
     // The words the last build or re-prune wrote, in order: all of them after a build; after a
