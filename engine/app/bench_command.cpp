@@ -533,6 +533,9 @@ int runBench(const ParsedArgs& args) {
     // Each variant uploads the scene itself: the session's upload goes, so that a large scene's
     // buffers are held once (the peak memory reported is what one drawn scene costs).
     session.gpuScene.reset();
+    // So does the grid the cost check pruned (prepare/sdf_cost.hpp): a cells variant measures
+    // the edit on a grid of its own before it uploads, and the two grids were held together.
+    session.prepared->sdfCells.reset();
 
     FrameTargets targets = createFrameTargets(options.frame.width, options.frame.height);
     std::vector<StrategyRun> runs;
