@@ -67,6 +67,11 @@ std::string shellKey(const GpuScene& scene, const GpuShell& shell) {
 
 } // namespace
 
+void Renderer::forgetScenePrograms() {
+    sdfPasses_.clear();
+    shellPasses_.clear();
+}
+
 bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     lastCompileMs_ = 0.0;
     const auto start = std::chrono::steady_clock::now();

@@ -141,6 +141,9 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
             gpu.sdfMap = sdfMap;
             renderer->render(gpu, scene->scene.camera, scene->scene.render, *targets);
             glFinish(); // the draws, where the driver finishes the programs
+            // What the driver built is in its shader cache now; this context's own copy of it
+            // (llvmpipe: the machine code, tens of megabytes for a few maps) is never drawn with.
+            renderer->forgetScenePrograms();
         } catch (const std::exception& e) {
             failure = e.what();
         }

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <thread>
 
 using namespace rmsc;
@@ -75,6 +76,28 @@ TEST(EditingMaps, TheSelectionLiveDrawsTheBakedImageAndFollowsTheBuffer) {
         renderMap(prepared, generateSdfMap(prepared.sdf, SdfStrategy::Baked));
     EXPECT_TRUE(imagesMatch(readDisplayColor(edited), readDisplayColor(bakedEdited),
                             "editing_map_edited", {2, 0.002}));
+}
+
+// What the warmer does after each map it builds: its programs go, and drawing the map again
+// builds them again and draws the same picture.
+TEST(EditingMaps, ForgottenProgramsAreBuiltAgainAndDrawTheSame) {
+    sharedRenderer(); // the context first
+    std::string error;
+    std::optional<Renderer> renderer = Renderer::create(embeddedShaderFiles(), error);
+    ASSERT_TRUE(renderer) << error;
+    const PreparedScene prepared = openRepositoryScene("samples/scenes/csg.json");
+    const GpuScene gpu = uploadScene(prepared, SdfStrategy::Baked);
+    FrameTargets first = createFrameTargets(96, 64), again = createFrameTargets(96, 64);
+    renderer->render(gpu, prepared.scene.camera, prepared.scene.render, first);
+    EXPECT_TRUE(renderer->hasPrograms(gpu.sdfMap));
+    renderer->forgetScenePrograms();
+    EXPECT_FALSE(renderer->hasPrograms(gpu.sdfMap));
+    renderer->render(gpu, prepared.scene.camera, prepared.scene.render, again);
+    EXPECT_TRUE(renderer->hasPrograms(gpu.sdfMap));
+    EXPECT_GT(renderer->lastCompileMs(), 0.0) << "the map was not built again";
+    expectNoGlErrors();
+    EXPECT_TRUE(imagesMatch(readDisplayColor(again), readDisplayColor(first),
+                            "forgotten_programs_rebuilt", {0, 0.0}));
 }
 
 TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {

@@ -87,6 +87,9 @@ class Renderer {
     bool hasPrograms(const std::string& sdfMap) const { return sdfPasses_.contains(sdfMap); }
     // Milliseconds the last prepare() spent compiling and linking (0 on a cache hit).
     double lastCompileMs() const { return lastCompileMs_; }
+    // Deletes the programs built for SDF maps and shells (the driver's machine code with them);
+    // the next prepare() builds them again.
+    void forgetScenePrograms();
 
     // Renders one frame, or only `rows` of it; prepares the scene first (throws
     // std::runtime_error if its shaders do not build, which is a bug in rmsc, not in the scene).
