@@ -15,9 +15,9 @@ std::filesystem::path recoveryPath(const std::filesystem::path& sceneFile) {
     return path;
 }
 
-bool writeRecovery(const Document& document, std::string& error) {
-    const std::filesystem::path path = recoveryPath(document.file());
-    const std::string text = sceneToJson(document.scene());
+bool writeRecovery(const Scene& scene, const std::filesystem::path& sceneFile, std::string& error) {
+    const std::filesystem::path path = recoveryPath(sceneFile);
+    const std::string text = sceneToJson(scene);
     Diagnostics problems;
     if (!checkSceneText(text, path, problems)) {
         error = "the scene is not valid, so the recovery file was not written:\n" +

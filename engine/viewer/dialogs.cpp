@@ -89,7 +89,7 @@ void drawUnsavedChangesDialog(Dialogs& dialogs, EditorSession& session, SceneFil
     }
     ImGui::SameLine();
     if (ImGui::Button("Discard changes")) {
-        editor::removeRecovery(session.document.file());
+        removeRecoveryFile(files, session.document.file());
         goOnAfterDiscard(dialogs, session, files, messages);
         ImGui::CloseCurrentPopup();
     }

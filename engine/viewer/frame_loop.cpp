@@ -117,7 +117,7 @@ int Viewer::run() {
         std::fprintf(stderr, "rmsc view: %s\n",
                      frameSummary(stats_, view_.adaptive.targetMilliseconds).c_str());
     if (!session_.document.dirty())
-        editor::removeRecovery(session_.document.file()); // closed cleanly
+        removeRecoveryFile(files_, session_.document.file()); // closed cleanly
     return failures ? kExitSystem : kExitOk;
 }
 

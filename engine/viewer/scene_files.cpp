@@ -80,8 +80,8 @@ void saveSceneAs(const std::filesystem::path& path, editor::Document& document, 
         std::fprintf(stderr, "rmsc view: save failed: %s\n", error.c_str());
         return;
     }
-    editor::removeRecovery(previousFile); // the edits are safe in the file now
-    editor::removeRecovery(path);
+    removeRecoveryFile(files, previousFile); // the edits are safe in the file now
+    removeRecoveryFile(files, path);
     messages.fileError.clear();
     files.watcher = editor::FileWatcher(path); // our own write is not an external change
     rememberFile(files, path, messages);
@@ -90,17 +90,21 @@ void saveSceneAs(const std::filesystem::path& path, editor::Document& document, 
 
 void writeRecoveryFile(const editor::Document& document, SceneFiles& files, Messages& messages,
                        double now) {
+    if (std::optional<editor::RecoveryOutcome> outcome = files.recovery.take();
+        outcome && !outcome->written)
+        messages.notice("cannot write the recovery file: " + outcome->error);
     if (!document.dirty() || document.revision() == files.recoveryRevision ||
         now - files.lastRecoveryWrite < 5.0)
         return;
     files.lastRecoveryWrite = now;
-    std::string error;
-    if (editor::writeRecovery(document, error)) {
-        files.recoveryRevision = document.revision();
-    } else if (files.recoveryRevision != document.revision()) {
-        messages.notice("cannot write the recovery file: " + error);
-        files.recoveryRevision = document.revision(); // say it once per change, not every 5 s
-    }
+    // Asked once per revision: one that fails is said once, not every 5 s.
+    files.recoveryRevision = document.revision();
+    files.recovery.request(document.scene(), document.file(), document.revision());
+}
+
+void removeRecoveryFile(SceneFiles& files, const std::filesystem::path& sceneFile) {
+    files.recovery.cancel();
+    editor::removeRecovery(sceneFile);
 }
 
 bool reloadChangedSceneFile(EditorSession& session, SceneFiles& files, Messages& messages) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "editor/file_watcher.hpp"
+#include "editor/recovery_job.hpp"
 #include "editor_session.hpp"
 #include "messages.hpp"
 
@@ -15,10 +16,11 @@
 namespace rmsc::app {
 
 struct SceneFiles {
-    editor::FileWatcher watcher;        // the scene file; none for a scene never saved
-    std::uint64_t recoveryRevision = 0; // document revision last written to the recovery file
-    double lastRecoveryWrite = -1e9;    // seconds, on the clock `now` is given in
-    std::filesystem::path recentFile;   // where the recent files are kept ("" = nowhere)
+    editor::FileWatcher watcher;               // the scene file; none for a scene never saved
+    std::uint64_t recoveryRevision = 0;        // document revision last given to the recovery file
+    double lastRecoveryWrite = -1e9;           // seconds, on the clock `now` is given in
+    editor::RecoveryJob recovery;              // writes it on a worker
+    std::filesystem::path recentFile;          // where the recent files are kept ("" = nowhere)
     std::vector<std::filesystem::path> recent; // newest first
 };
 
@@ -44,9 +46,12 @@ void newScene(EditorSession& session, SceneFiles& files, Messages& messages);
 // Saves to `path` and removes the recovery files; a failed save keeps the edits and says why.
 void saveSceneAs(const std::filesystem::path& path, editor::Document& document, SceneFiles& files,
                  Messages& messages);
-// Unsaved edits to the recovery file, at most every 5 seconds of `now`.
+// Unsaved edits to the recovery file, at most every 5 seconds of `now`, on a worker; says in
+// `messages` when an earlier write failed.
 void writeRecoveryFile(const editor::Document& document, SceneFiles& files, Messages& messages,
                        double now);
+// Removes the recovery file of `sceneFile`, after the write under way (none lands after it).
+void removeRecoveryFile(SceneFiles& files, const std::filesystem::path& sceneFile);
 // Reloads the scene file when it changed on disk (or opens it, when it did not open at start).
 // Returns true when it changed but there are unsaved edits: the user is to be asked.
 bool reloadChangedSceneFile(EditorSession& session, SceneFiles& files, Messages& messages);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <future>
 #include <mutex>
 #include <vector>
@@ -41,4 +42,39 @@ TEST(NewestRequestWorker, WorksOnTheNewestRequestAndKeepsTheNewestResult) {
     ASSERT_TRUE(result);
     EXPECT_EQ(*result, 30); // 1's result was replaced before it was taken
     EXPECT_FALSE(worker.take());
+}
+
+// cancel() drops the request waiting and returns once the work under way is done: what the
+// recovery file's writer needs before the file is removed.
+TEST(NewestRequestWorker, CancelDropsTheWaitingRequestAndWaitsForTheWorkUnderWay) {
+    std::promise<void> gate;
+    std::shared_future<void> opened = gate.get_future().share();
+    std::promise<void> firstStarted;
+    std::mutex mutex;
+    std::vector<int> worked;
+    NewestRequestWorker<int, int> worker([&](int& request) {
+        if (request == 1) {
+            firstStarted.set_value();
+            opened.wait();
+        }
+        std::lock_guard lock(mutex);
+        worked.push_back(request);
+        return request * 10;
+    });
+    worker.request(1);
+    firstStarted.get_future().wait();
+    worker.request(2);
+    std::future<std::optional<int>> cancelled =
+        std::async(std::launch::async, [&] { return worker.cancel(); });
+    EXPECT_EQ(cancelled.wait_for(std::chrono::milliseconds(50)), std::future_status::timeout)
+        << "cancel() returned while 1 was still worked on";
+    gate.set_value();
+    EXPECT_EQ(cancelled.get(), std::optional<int>(2)) << "the waiting request comes back";
+    EXPECT_TRUE(worker.idle());
+    {
+        std::lock_guard lock(mutex);
+        EXPECT_EQ(worked, (std::vector<int>{1})) << "2 was never worked on";
+    }
+    EXPECT_EQ(worker.take(), std::optional<int>(10));
+    EXPECT_FALSE(worker.cancel()) << "nothing waits";
 }

@@ -49,6 +49,14 @@ template <class Request, class Result> class NewestRequestWorker {
         std::lock_guard lock(mutex_);
         return !waiting_ && !working_;
     }
+    // Drops the request waiting (returned, for its owner to use again) and waits for the work
+    // under way; its result can still be taken.
+    std::optional<Request> cancel() {
+        std::unique_lock lock(mutex_);
+        std::optional<Request> dropped = std::exchange(waiting_, std::nullopt);
+        changed_.wait(lock, [this] { return !working_; });
+        return dropped;
+    }
     void waitUntilIdle() {
         std::unique_lock lock(mutex_);
         changed_.wait(lock, [this] { return !waiting_ && !working_; });

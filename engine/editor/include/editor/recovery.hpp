@@ -4,7 +4,7 @@
 // still there on the next start means edits were lost, and the viewer offers them. GL-free.
 #pragma once
 
-#include "editor/document.hpp"
+#include "scene/scene.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -15,10 +15,12 @@ namespace rmsc::editor {
 // Where the edits of `sceneFile` ("" for a scene never saved) are kept.
 std::filesystem::path recoveryPath(const std::filesystem::path& sceneFile);
 
-// Writes the document's scene to recoveryPath(document.file()) atomically, once it passes the
-// check of a save (editor/scene_check.hpp). False with `error` saying why when it is not valid
-// (nothing is written; an older recovery file stays) or cannot be written.
-bool writeRecovery(const Document& document, std::string& error);
+// Writes `scene`, the edits of the scene file `sceneFile` ("" for a scene never saved), to
+// recoveryPath(sceneFile) atomically, once it passes the check of a save
+// (editor/scene_check.hpp). False with `error` saying why when it is not valid (nothing is
+// written; an older recovery file stays) or cannot be written. The viewer writes it on a worker
+// (editor/recovery_job.hpp).
+bool writeRecovery(const Scene& scene, const std::filesystem::path& sceneFile, std::string& error);
 
 // The recovery file of `sceneFile` if there is one worth offering: it exists and is newer than
 // the scene file (or the scene file is gone, or was never saved).
