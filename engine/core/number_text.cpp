@@ -2,6 +2,7 @@
 #include "core/number_text.hpp"
 
 #include <charconv>
+#include <cmath>
 
 namespace rmsc {
 namespace {
@@ -25,6 +26,24 @@ std::string shortestNumberText(float value) {
 
 std::string shortestNumberText(double value) {
     return shortestText(value);
+}
+
+float nearestShortDecimal(float value, int ulps) {
+    if (!std::isfinite(value)) return value;
+    float low = value, high = value;
+    for (int i = 0; i < ulps; ++i) {
+        low = std::nextafter(low, -INFINITY);
+        high = std::nextafter(high, INFINITY);
+    }
+    for (int digits = 1; digits <= 7; ++digits) {
+        char buffer[64];
+        const auto written = std::to_chars(buffer, buffer + sizeof buffer, value,
+                                           std::chars_format::scientific, digits - 1);
+        float rounded = value;
+        std::from_chars(buffer, written.ptr, rounded);
+        if (rounded >= low && rounded <= high) return rounded;
+    }
+    return value;
 }
 
 } // namespace rmsc

@@ -1,6 +1,8 @@
 // Move, rotate and scale gesture math (see transform_gesture.hpp).
 #include "editor/transform_gesture.hpp"
 
+#include "core/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -68,6 +70,10 @@ Transform movedTransform(const Transform& start, const glm::mat4& parentWorld,
                          glm::vec3 worldDelta) {
     Transform result = start;
     result.position = start.position + glm::inverse(glm::mat3(parentWorld)) * worldDelta;
+    // A snapped step from a short decimal lands a float step off the short one (0.3 - 0.4 gives
+    // -0.099999994): the short one, within 2 ulps, so panels and saved files show -0.1.
+    for (int i = 0; i < 3; ++i)
+        result.position[i] = nearestShortDecimal(result.position[i]);
     return result;
 }
 
@@ -88,6 +94,8 @@ Transform scaledTransform(const Transform& start, int axis, float factor) {
         result.scale = start.scale * factor;
     else
         result.scale[axis] = start.scale[axis] * factor;
+    for (int i = 0; i < 3; ++i) // as for a move
+        result.scale[i] = nearestShortDecimal(result.scale[i]);
     return result;
 }
 

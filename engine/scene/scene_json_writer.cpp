@@ -1,6 +1,7 @@
 // Writing scenes as format version 1 JSON (sceneToJson): every section, materials referenced by
-// name, shape parameters by their catalogue names, rotations as exact quaternions and numbers in
-// the fewest digits that read back as the same float. Number arrays stay on one line.
+// name, shape parameters by their catalogue names, rotations as short Euler degrees where those
+// read back exactly (else as exact quaternions) and numbers in the fewest digits that read back
+// as the same float. Number arrays stay on one line.
 #include "material_texture_json.hpp"
 #include "scene/camera_spec.hpp"
 #include "scene/scene_json.hpp"

@@ -399,15 +399,46 @@ TEST(SceneJson, WrittenSceneReadsBackIdentical) {
     expectSameScene(*scene, *again);
     EXPECT_EQ(sceneToJson(*again), text); // writing is deterministic
 
-    // The format as documented: version first, 2-space indents, short numbers, quaternions.
+    // The format as documented: version first, 2-space indents, short numbers, Euler degrees
+    // where they were typed.
     EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"camera\": {\n    \"position\": [1, 2, 3],", 0),
               0u)
         << text;
     EXPECT_NE(text.find("\"surface_epsilon\": 0.002,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"material\": \"red\""), std::string::npos);
     EXPECT_NE(text.find("\"half_extents\": [0.4, 0.2, 0.4]"), std::string::npos);
-    EXPECT_NE(text.find("\"quaternion\": ["), std::string::npos);
-    EXPECT_EQ(text.find("\"rotation\""), std::string::npos);
+    EXPECT_NE(text.find("\"rotation\": [0, 90, 0]"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"rotation\": [0, 45, 0]"), std::string::npos) << text;
+}
+
+// A rotation is written as the Euler degrees it was typed in when they read back as exactly
+// the same quaternion, and as that quaternion otherwise (a rotation turned in the editor): either
+// way the scene reads back with every bit of it.
+TEST(SceneJson, RotationsAreWrittenAsTypedWhereThatIsExact) {
+    for (const std::string typed :
+         {"[0, 30, 0]", "[10, 20, 30]", "[-45, 0, 120]", "[90, 90, 0]", "[0, 0, -0.5]"}) {
+        Diagnostics d;
+        const auto scene =
+            parse(R"({"version": 1, "sdf": {"shape": "sphere", "rotation": )" + typed + "}}", d);
+        ASSERT_TRUE(scene && scene->sdf) << d.format();
+        const std::string text = sceneToJson(*scene);
+        EXPECT_NE(text.find("\"rotation\": " + typed), std::string::npos) << text;
+        const auto again = parse(text, d);
+        ASSERT_TRUE(again && again->sdf) << d.format();
+        EXPECT_EQ(again->sdf->transform.rotation, scene->sdf->transform.rotation) << text;
+    }
+    // Turned by an angle no short degrees give exactly.
+    Scene scene;
+    SdfNode node;
+    node.transform.rotation = glm::normalize(glm::quat(0.9f, 0.1f, 0.2f, 0.3f));
+    scene.sdf = node;
+    const std::string text = sceneToJson(scene);
+    EXPECT_NE(text.find("\"quaternion\": ["), std::string::npos) << text;
+    EXPECT_EQ(text.find("\"rotation\""), std::string::npos) << text;
+    Diagnostics d;
+    const auto again = parse(text, d);
+    ASSERT_TRUE(again && again->sdf) << d.format();
+    EXPECT_EQ(again->sdf->transform.rotation, node.transform.rotation) << text;
 }
 
 TEST(SceneJson, WrittenFloatsKeepEveryBit) {

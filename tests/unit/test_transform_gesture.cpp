@@ -175,6 +175,21 @@ TEST(TransformGesture, CtrlSnapsMovesToGridStepsAnglesTo15DegreesAndScalesToTent
     EXPECT_FLOAT_EQ(snapToStep(-0.26f, 0.1f), -0.3f);
 }
 
+// A snapped step from a short decimal is that short decimal, not the float beside it: 0.3 moved
+// by -0.4 is -0.1 (float arithmetic gives -0.099999994), which panels and saved files show.
+TEST(TransformGesture, SnappedStepsLandOnShortDecimals) {
+    TransformGesture along = gesture(GestureKind::Move, 1, {100, 100});
+    along.snap = true;
+    along.start.position = glm::vec3(0, 0.3f, 0);
+    ASSERT_EQ(0.3f + -0.4f, -0.099999994f);                           // what the sum alone gives
+    EXPECT_EQ(gestureTransform(along, {100, 108}).position.y, -0.1f); // 8 px down: -0.4
+    TransformGesture scale = gesture(GestureKind::Scale, 0, {150, 100});
+    scale.snap = true;
+    scale.start.scale = glm::vec3(0.7f);
+    ASSERT_NE(0.7f * 1.4f, 0.98f);                                 // 0.97999996
+    EXPECT_EQ(gestureTransform(scale, {170, 100}).scale.x, 0.98f); // 1.4 times
+}
+
 TEST(TransformGesture, ScaleStartedOnTheCentreDoesNotJump) {
     const TransformGesture g = gesture(GestureKind::Scale, -1, {101, 100}); // 1 px away
     expectNear(gestureTransform(g, {101, 100}).scale, glm::vec3(1.0f));
