@@ -30,6 +30,10 @@ void drawObjectTab(EditorSession& session, InspectorState& state, ViewerCommands
 }
 
 void drawRenderTab(EditorSession& session, InspectorState& state, ViewSettings& view) {
+    // Its labels are longer than the Object tab's 90 px ("surface epsilon" showed as "surface
+    // epsil"): the column fits the longest, and its fields hold one number each.
+    ImGui::PushItemWidth(
+        -(ImGui::CalcTextSize("shadow normal offset").x + ImGui::GetStyle().ItemInnerSpacing.x));
     drawRenderSettingsInspector(session.document);
     ImGui::Separator();
     drawEnvironmentInspector(session.document, state.environment);
@@ -37,6 +41,7 @@ void drawRenderTab(EditorSession& session, InspectorState& state, ViewSettings& 
     drawCameraInspector(session, state.cameraRefusal);
     ImGui::Separator();
     drawViewInspector(view);
+    ImGui::PopItemWidth();
 }
 
 } // namespace

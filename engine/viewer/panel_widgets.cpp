@@ -106,7 +106,8 @@ bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float
     }
     glm::vec3 euler = glm::degrees(glm::eulerAngles(t.rotation));
     if (numberField("rotation", &euler.x, 3, 0.5f, closedRange(-360.0, 360.0, Unit::Degrees),
-                    "Turns about x, then y, then z (Euler angles; the file keeps a quaternion).",
+                    "Turns about x, then y, then z (Euler angles; the file keeps them where short "
+                    "ones give exactly this rotation, else a quaternion).",
                     {.format = "%.1f°"})) {
         t.rotation = glm::quat(glm::radians(euler));
         changed = true;
