@@ -19,7 +19,7 @@ namespace rmsc::app {
 
 using editor::Selection;
 
-glm::vec3 newShapePoint(const NewShapePlace& place) {
+editor::NewObjectSpot newShapeSpot(const NewShapePlace& place) {
     // The ray through the view's centre, as the march pass builds it (from the centre of the
     // near plane for an orthographic view), between the near and the far plane.
     const FrameCamera frame = makeFrameCamera(place.camera, 2, 2);
@@ -28,7 +28,7 @@ glm::vec3 newShapePoint(const NewShapePlace& place) {
     ray.direction = frame.forward;
     ray.tMin = place.camera.nearPlane;
     ray.tMax = place.camera.farPlane;
-    return editor::newObjectPoint(place.prepared, ray, place.fallbackDistance);
+    return editor::newObjectSpot(place.prepared, ray, place.fallbackDistance);
 }
 
 namespace {
@@ -36,10 +36,10 @@ namespace {
 // Adds `node` into the selection with its origin at the new shape's point, selected.
 void addPlacedNode(editor::Document& document, const std::string& label, SdfNode node,
                    const NewShapePlace& place) {
-    const glm::vec3 where = newShapePoint(place);
+    const editor::NewObjectSpot spot = newShapeSpot(place);
     document.apply(label, [&](Scene& scene, Selection& selection) {
         const std::vector<int> path = editor::insertSdfNode(scene, selection, std::move(node));
-        editor::placeSdfNodeAt(scene, path, where);
+        editor::placeSdfNodeOn(scene, path, spot);
         selection = Selection::sdf(path);
     });
 }

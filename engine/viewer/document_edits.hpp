@@ -2,6 +2,8 @@
 // (the model is editor/scene_edits.hpp).
 #pragma once
 
+#include "editor/new_object_place.hpp"
+
 #include "editor/document.hpp"
 #include "prepare/prepared_scene.hpp"
 #include "sdf/primitives.hpp"
@@ -20,11 +22,11 @@ struct NewShapePlace {
     Camera camera;                 // the view
     float fallbackDistance = 5.0f; // along the view when its centre ray meets nothing
 };
-// The world point under the view's centre (on the surface it meets, else at the fallback
-// distance).
-glm::vec3 newShapePoint(const NewShapePlace& place);
+// The world point under the view's centre (on the surface it meets, with its normal, else at
+// the fallback distance).
+editor::NewObjectSpot newShapeSpot(const NewShapePlace& place);
 
-// A shape into the selection (its group, or next to it), its origin at newShapePoint(place).
+// A shape into the selection (its group, or next to it), resting on newShapeSpot(place).
 void addShape(editor::Document& document, const PrimitiveSpec& spec, const NewShapePlace& place);
 void addProfileShape(editor::Document& document, SdfProfileSolid solid, const NewShapePlace& place);
 void addGroup(editor::Document& document, SdfOp op); // into the selection

@@ -365,7 +365,7 @@ void Viewer::dropFile(const std::filesystem::path& path) {
             break;
         }
         // Where a new shape goes: on the surface under the view's centre, else at its focus.
-        const glm::vec3 where = newShapePoint(newShapePlace());
+        const glm::vec3 where = newShapeSpot(newShapePlace()).point;
         session_.document.apply("Add mesh", [&](Scene& scene, editor::Selection& selection) {
             editor::addMeshAt(scene, selection, path, where);
         });

@@ -93,7 +93,7 @@ void Viewer::carryOut(ViewerCommands& commands) {
             requestSave(dialogs_, session_, files_, messages_, true);
             break;
         case ViewerCommand::AddMesh:
-            dialogs_.newMeshAt = newShapePoint(newShapePlace());
+            dialogs_.newMeshAt = newShapeSpot(newShapePlace()).point;
             dialogs_.askForPath(PathPurpose::AddMesh, document.file().empty()
                                                           ? std::filesystem::current_path()
                                                           : document.file().parent_path());

@@ -532,16 +532,22 @@ def gizmo_run(rmsc, source, tmp, xvfb_run, check):
     if "front" in shots and "front-after-q" in shots:
         check("Q does not roll the view while roll is off",
               len(differing_pixels(shots["front"], shots["front-after-q"])) < 20)
-    # The box added from the top view lies where the view's centre ray (straight down x = z = 0)
+    # The box added from the top view rests where the view's centre ray (straight down x = z = 0)
     # meets the ball: the ellipsoid of radii 0.5, 0.7 (its own X, turned to Y, times 1.4), 0.5
-    # about (0.25, 0, 0), at y = 0.7 sqrt(1 - (0.25 / 0.5)^2).
+    # about (0.25, 0, 0), at y = 0.7 sqrt(1 - (0.25 / 0.5)^2); its origin moved out along the
+    # ellipsoid's normal there by as far as its box (half extents 0.5) reaches against it.
     added = next((c for c in children if c.get("name") not in ("ball", "base")), None)
     check("a box was added", added is not None and added.get("shape") == "box", children)
     if added:
         top = 0.7 * math.sqrt(1 - 0.25 ** 2 / 0.5 ** 2)
+        gradient = [(0 - 0.25) / 0.5 ** 2, top / 0.7 ** 2, 0.0]
+        length = math.sqrt(sum(g * g for g in gradient))
+        normal = [g / length for g in gradient]
+        reach = 0.5 * sum(abs(n) for n in normal)
+        expected = [p + n * reach for p, n in zip([0, top, 0], normal)]
         where = added.get("position", [0, 0, 0])
-        check("on the ball's surface under the view's centre, not at the origin",
-              all(abs(a - b) < 0.01 for a, b in zip(where, [0, top, 0])), (where, top))
+        check("resting on the ball's surface under the view's centre, not at the origin",
+              all(abs(a - b) < 0.02 for a, b in zip(where, expected)), (where, expected))
     camera = saved.get("camera", {})
     check("the save asked about the scene camera", "the view is not the scene camera's" in run.stderr,
           run.stderr[-1500:])
