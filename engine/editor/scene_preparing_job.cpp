@@ -4,10 +4,62 @@
 #include "core/diagnostics.hpp"
 #include "sdf/compiler.hpp"
 
+#include <algorithm>
 #include <exception>
+#include <optional>
 #include <utility>
 
 namespace rmsc::editor {
+
+namespace {
+
+// The mesh instances that every error of `diagnostics` is about (by their JSON pointers); empty
+// when an error is about something else.
+std::vector<std::size_t> failingMeshes(const Scene& scene, const Diagnostics& diagnostics) {
+    std::vector<std::size_t> failing;
+    if (diagnostics.omittedErrors() > 0) return {}; // (what they were about is not known)
+    for (const Diagnostic& d : diagnostics.items) {
+        if (d.severity != Severity::Error) continue;
+        std::optional<std::size_t> mesh;
+        for (std::size_t i = 0; i < scene.meshes.size() && !mesh; ++i) {
+            const std::string& pointer = scene.meshes[i].pointer;
+            if (!pointer.empty() &&
+                (d.location == pointer || d.location.starts_with(pointer + "/")))
+                mesh = i;
+        }
+        if (!mesh) return {};
+        if (std::find(failing.begin(), failing.end(), *mesh) == failing.end())
+            failing.push_back(*mesh);
+    }
+    std::sort(failing.begin(), failing.end());
+    return failing;
+}
+
+// The scene prepared without the `failing` mesh instances, which then draw nothing: the
+// prepared scene is `scene` itself, every instance at its own index (object ids and picking
+// stay the document's).
+std::optional<PreparedScene> prepareWithoutMeshes(const Scene& scene,
+                                                  const std::vector<std::size_t>& failing,
+                                                  const FileSource& files) {
+    Scene reduced = scene;
+    for (auto i = failing.rbegin(); i != failing.rend(); ++i)
+        reduced.meshes.erase(reduced.meshes.begin() + std::ptrdiff_t(*i));
+    Diagnostics diagnostics;
+    std::optional<PreparedScene> prepared =
+        prepareScene(std::move(reduced), files, diagnostics, ShellMode::AsScene, false);
+    if (!prepared) return std::nullopt;
+    std::vector<int> instanceAsset;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i)
+        instanceAsset.push_back(std::binary_search(failing.begin(), failing.end(), i)
+                                    ? -1
+                                    : prepared->instanceAsset[kept++]);
+    prepared->instanceAsset = std::move(instanceAsset);
+    prepared->scene = scene;
+    return prepared;
+}
+
+} // namespace
 
 ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revision,
                                         const FileSource& files) {
@@ -16,8 +68,13 @@ ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revisi
     Diagnostics diagnostics;
     result.prepared = prepareScene(scene, files, diagnostics, ShellMode::AsScene, false);
     if (!result.prepared) {
-        result.error = diagnostics.format();
-        return result;
+        const std::vector<std::size_t> failing = failingMeshes(scene, diagnostics);
+        if (!failing.empty()) result.prepared = prepareWithoutMeshes(scene, failing, files);
+        if (!result.prepared) {
+            result.error = diagnostics.format();
+            return result;
+        }
+        result.warning = "Drawn without the meshes that do not load:\n" + diagnostics.format();
     }
     // The interpreter's program: with the hierarchy, the interpreter skips parts by their
     // boxes, and its text stays the same whatever the order.

@@ -58,7 +58,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     // cells only what the re-prune changed (a large scene's upload is what such an edit costs).
     if (sameMap && cells && drawnCells_ && updateSdfScene(*gpuScene_, *prepared_, *cellGrid_)) {
         sceneChanged_ = false;
-        sceneError.clear();
+        sceneError = sceneWarning_;
         lastRenderedRevision_ = 0;
         return;
     }
@@ -88,7 +88,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
         gpuScene_ = std::move(*fresh);
         drawnBounded_ = bounded;
         drawnCells_ = cells;
-        if (sceneChanged_) sceneError.clear();
+        if (sceneChanged_) sceneError = sceneWarning_;
         sceneChanged_ = false;
         lastRenderedRevision_ = 0; // the picture may show an older scene: render again
     }

@@ -90,6 +90,7 @@ void ViewRenderer::updateScene(const Scene& scene, std::uint64_t revision, std::
             "The scene does not compile (showing the last one that did):\n" + result->error;
         return;
     }
+    sceneWarning_ = std::move(result->warning);
     boundedSdf_ = std::make_shared<const SdfProgram>(std::move(result->bounded));
     // Drawn as soon as chooseSdfMap finds a map for it ready, which after a structural edit may
     // take a background build: the picture on screen stays until then.

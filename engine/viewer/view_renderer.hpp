@@ -132,6 +132,7 @@ class ViewRenderer {
     std::shared_ptr<const SdfProgram> boundedSdf_;
     bool sceneChanged_ = false; // `prepared_` is newer than what is drawn: it shows once a map
                                 // for it is ready
+    std::string sceneWarning_;  // what `prepared_` is drawn without (meshes that do not load)
     bool drawnBounded_ = false; // gpuScene_ holds boundedSdf_ (the interpreter draws)
     bool drawnCells_ = false;   // gpuScene_ holds the cells of prepared_->sdf (the cells map)
     // The cells map's grid, pruned on a worker (editor/cell_pruning_job.hpp): the newest one

@@ -60,7 +60,9 @@ TEST(ScenePreparingJob, ASceneThatDoesNotCompileIsReported) {
     editor::ScenePreparingJob job(diskFileSource());
     Diagnostics diagnostics;
     std::optional<Scene> scene = parseScene(
-        R"({"version": 1, "meshes": [{"file": "no-such-mesh.glb"}]})", "edited.json", diagnostics);
+        R"({"version": 1, "materials": {"m": {"base_color_texture": "no-such-image.png"}},
+            "sdf": {"shape": "sphere", "material": "m"}})",
+        "edited.json", diagnostics);
     ASSERT_TRUE(scene) << diagnostics.format();
     job.request(7, *scene);
     job.waitUntilIdle();
@@ -68,7 +70,52 @@ TEST(ScenePreparingJob, ASceneThatDoesNotCompileIsReported) {
     ASSERT_TRUE(result);
     EXPECT_EQ(result->revision, 7u);
     EXPECT_FALSE(result->prepared);
-    EXPECT_NE(result->error.find("no-such-mesh.glb"), std::string::npos) << result->error;
+    EXPECT_NE(result->error.find("no-such-image.png"), std::string::npos) << result->error;
+}
+
+// Mesh instances whose files do not load are left out, so the rest of the scene still draws:
+// each instance keeps its index (the missing ones draw nothing) and the warning names the file.
+// A scene that fails for anything else as well is not drawn.
+TEST(ScenePreparingJob, MeshesThatDoNotLoadAreLeftOutAndSaid) {
+    const std::string assets = std::string(RMSC_TEST_SOURCE_DIR) + "/samples/assets/";
+    Diagnostics diagnostics;
+    std::optional<Scene> scene =
+        parseScene(R"({"version": 1, "meshes": [{"file": ")" + assets + R"(cube.gltf"},
+            {"file": "no-such-mesh.glb"}, {"file": ")" +
+                       assets + R"(sphere.gltf"},
+            {"file": "no-such-mesh.glb", "position": [1, 0, 0]}],
+            "sdf": {"shape": "sphere"}})",
+                   "edited.json", diagnostics);
+    ASSERT_TRUE(scene) << diagnostics.format();
+    const editor::ScenePreparingResult result =
+        editor::prepareEditedScene(*scene, 3, diskFileSource());
+    ASSERT_TRUE(result.prepared) << result.error;
+    EXPECT_TRUE(result.error.empty());
+    EXPECT_NE(result.warning.find("no-such-mesh.glb"), std::string::npos) << result.warning;
+    EXPECT_NE(result.warning.find("/meshes/1"), std::string::npos) << result.warning;
+    EXPECT_NE(result.warning.find("/meshes/3"), std::string::npos) << result.warning;
+    const PreparedScene& prepared = *result.prepared;
+    EXPECT_EQ(prepared.scene.meshes.size(), 4u) << "the document's instances, all of them";
+    ASSERT_EQ(prepared.instanceAsset.size(), 4u);
+    EXPECT_GE(prepared.instanceAsset[0], 0);
+    EXPECT_EQ(prepared.instanceAsset[1], -1);
+    EXPECT_GE(prepared.instanceAsset[2], 0);
+    EXPECT_EQ(prepared.instanceAsset[3], -1);
+    EXPECT_NE(prepared.instanceAsset[0], prepared.instanceAsset[2]);
+    EXPECT_EQ(prepared.assets.size(), 2u);
+    EXPECT_FALSE(prepared.sdf.instructions.empty());
+
+    // And a texture missing as well: not drawn.
+    std::optional<Scene> both = parseScene(
+        R"({"version": 1, "meshes": [{"file": "no-such-mesh.glb"}],
+            "materials": {"m": {"base_color_texture": "no-such-image.png"}},
+            "sdf": {"shape": "sphere", "material": "m"}})",
+        "edited.json", diagnostics);
+    ASSERT_TRUE(both) << diagnostics.format();
+    const editor::ScenePreparingResult broken =
+        editor::prepareEditedScene(*both, 4, diskFileSource());
+    EXPECT_FALSE(broken.prepared);
+    EXPECT_NE(broken.error.find("no-such-image.png"), std::string::npos) << broken.error;
 }
 
 // A request's scene is copied over the scene of an earlier request the worker is done with

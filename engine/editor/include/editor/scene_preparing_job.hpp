@@ -27,11 +27,14 @@ struct ScenePreparingResult {
     std::optional<PreparedScene> prepared; // its SDF without the bounding hierarchy
     SdfProgram bounded;                    // the same SDF with it (or without, when it has none)
     std::string error;                     // why it did not compile (prepared empty)
+    std::string warning; // what it is drawn without (prepared set): meshes that do not load
 };
 
 // What the job does for one revision (also callable on its own): prepareScene without the
 // bounding hierarchy (the editor's: its order follows where parts are, so moving one must not
-// change the program's structure), then the SDF with it.
+// change the program's structure), then the SDF with it. When only mesh instances fail (a file
+// missing, moved or broken), the scene is prepared without them, so the rest still draws: their
+// instances draw nothing (instanceAsset -1) and `warning` says why.
 ScenePreparingResult prepareEditedScene(const Scene& scene, std::uint64_t revision,
                                         const FileSource& files);
 
