@@ -225,9 +225,9 @@ void Viewer::drawUi() {
                       session_.camera.speed, gesture_.active ? &gesture_.math : nullptr, messages_);
     drawGizmo(gizmo_, session_.document, session_.viewCamera(), layout_.viewport,
               inspector_.worldCoordinates);
-    drawViewportToolbar(gizmo_, inspector_.worldCoordinates, viewLabel(session_.camera),
-                        layout_.viewport);
-    drawProblems(layout_.viewport, messages_);
+    const float toolbarWidth = drawViewportToolbar(gizmo_, inspector_.worldCoordinates,
+                                                   viewLabel(session_.camera), layout_.viewport);
+    drawProblems(layout_.viewport, toolbarWidth, messages_);
     drawDialogs(dialogs_, session_, files_, messages_);
     drawExportDialog(export_, session_.document);
     drawExportProgress(export_, layout_.viewport, messages_);

@@ -219,8 +219,8 @@ void drawGizmo(const ViewportGizmo& gizmo, const editor::Document& document, con
     list->PopClipRect();
 }
 
-void drawViewportToolbar(ViewportGizmo& gizmo, bool& worldAxes, const std::string& viewName,
-                         const Rect& viewport) {
+float drawViewportToolbar(ViewportGizmo& gizmo, bool& worldAxes, const std::string& viewName,
+                          const Rect& viewport) {
     ImGui::SetNextWindowPos(
         ImVec2(viewport.x + viewport.width - 8, viewport.y + viewport.height - 8), ImGuiCond_Always,
         ImVec2(1, 1));
@@ -284,7 +284,9 @@ void drawViewportToolbar(ViewportGizmo& gizmo, bool& worldAxes, const std::strin
             ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
+    const float width = ImGui::GetWindowWidth();
     ImGui::End();
+    return width + 8.0f;
 }
 
 } // namespace rmsc::app

@@ -42,8 +42,9 @@ bool handleGizmo(ViewportGizmo& gizmo, const InputState& input, editor::Document
 void drawGizmo(const ViewportGizmo& gizmo, const editor::Document& document, const Camera& camera,
                const Rect& viewport, bool worldAxes);
 // The toolbar at the view's bottom-right corner: the view's name (`viewName`: which view, and
-// its projection), the tool, world or own axes, the snap steps.
-void drawViewportToolbar(ViewportGizmo& gizmo, bool& worldAxes, const std::string& viewName,
-                         const Rect& viewport);
+// its projection), the tool, world or own axes, the snap steps. Returns how much of the view's
+// width it covers from the right edge.
+float drawViewportToolbar(ViewportGizmo& gizmo, bool& worldAxes, const std::string& viewName,
+                          const Rect& viewport);
 
 } // namespace rmsc::app

@@ -3,6 +3,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include <string>
 
 namespace rmsc::app {
@@ -88,7 +90,7 @@ void drawStatusOverlay(const Rect& viewport, const ViewStatus& status, float fra
     ImGui::End();
 }
 
-void drawProblems(const Rect& viewport, Messages& messages) {
+void drawProblems(const Rect& viewport, float rightMargin, Messages& messages) {
     std::string errors;
     for (const std::string* e :
          {&messages.openError, &messages.sceneError, &messages.shaderError, &messages.fileError})
@@ -96,12 +98,12 @@ void drawProblems(const Rect& viewport, Messages& messages) {
     if (errors.empty()) return;
     ImGui::SetNextWindowPos(ImVec2(viewport.x + 8, viewport.y + viewport.height - 8), 0,
                             ImVec2(0, 1));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
-                                        ImVec2(viewport.width - 16, viewport.height * 0.5f));
+    const float width = std::max(160.0f, viewport.width - 16 - rightMargin);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(width, viewport.height * 0.5f));
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("problems", nullptr, kFixed & ~ImGuiWindowFlags_NoDecoration);
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-    ImGui::PushTextWrapPos(viewport.width - 40);
+    ImGui::PushTextWrapPos(width - 24);
     ImGui::TextUnformatted(errors.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();

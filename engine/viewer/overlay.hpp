@@ -17,7 +17,8 @@ namespace rmsc::app {
 void drawStatusOverlay(const Rect& viewport, const ViewStatus& status, float frameMilliseconds,
                        const ViewSettings& view, float flySpeed,
                        const editor::TransformGesture* gesture, const Messages& messages);
-// Drawn when there is a problem to show.
-void drawProblems(const Rect& viewport, Messages& messages);
+// Drawn when there is a problem to show, at the view's bottom-left corner, left of the
+// `rightMargin` pixels the view toolbar covers.
+void drawProblems(const Rect& viewport, float rightMargin, Messages& messages);
 
 } // namespace rmsc::app
