@@ -389,6 +389,22 @@ IdRange objectIdRange(const Scene& scene, const Selection& selection) {
     return {kSdfIdBase + index, kSdfIdBase + index + std::uint32_t(subtreeSize(*node))};
 }
 
+namespace {
+
+bool sameTreeShape(const SdfNode& a, const SdfNode& b) {
+    if (a.children.size() != b.children.size()) return false;
+    for (std::size_t i = 0; i < a.children.size(); ++i)
+        if (!sameTreeShape(a.children[i], b.children[i])) return false;
+    return true;
+}
+
+} // namespace
+
+bool sameObjectIds(const Scene& a, const Scene& b) {
+    if (a.meshes.size() != b.meshes.size() || a.sdf.has_value() != b.sdf.has_value()) return false;
+    return !a.sdf || sameTreeShape(*a.sdf, *b.sdf);
+}
+
 std::optional<Bounds> selectionBounds(const Scene& scene, const Selection& selection) {
     if (!selectionValid(scene, selection)) return std::nullopt;
     if (selection.kind == SelectionKind::Sdf) {

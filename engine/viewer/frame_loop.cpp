@@ -339,8 +339,12 @@ ViewInput Viewer::viewInput() const {
     shown.camera = session_.viewCamera();
     shown.scene = &document.scene();
     shown.revision = document.revision();
-    for (const editor::Selection& item : editor::selectedItems(document))
-        shown.selected.push_back(editor::objectIdRange(document.scene(), item));
+    // Outlined by the ids of the scene drawn: after a structural edit whose map is not ready
+    // yet, the picture's ids are the old scene's, where the selection's would outline others.
+    const PreparedScene* drawn = gpu_.drawnScene();
+    if (!drawn || editor::sameObjectIds(drawn->scene, document.scene()))
+        for (const editor::Selection& item : editor::selectedItems(document))
+            shown.selected.push_back(editor::objectIdRange(document.scene(), item));
     if (document.selection.kind == editor::SelectionKind::Light)
         shown.selectedLight = document.selection.index;
     shown.showLights = view_.showLights;

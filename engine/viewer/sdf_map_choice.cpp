@@ -58,6 +58,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     // cells only what the re-prune changed (a large scene's upload is what such an edit costs).
     if (sameMap && cells && drawnCells_ && updateSdfScene(*gpuScene_, *prepared_, *cellGrid_)) {
         sceneChanged_ = false;
+        drawnScene_ = prepared_;
         sceneError = sceneWarning_;
         lastRenderedRevision_ = 0;
         return;
@@ -86,6 +87,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     if (!sameMap) costMilliseconds_ = 0.0f; // the other map's cost says nothing of this one's
     if (fresh) {
         gpuScene_ = std::move(*fresh);
+        drawnScene_ = prepared_;
         drawnBounded_ = bounded;
         drawnCells_ = cells;
         if (sceneChanged_) sceneError = sceneWarning_;

@@ -105,6 +105,9 @@ class ViewRenderer {
 
     // The newest scene that compiled (what picking casts rays at), or nullptr.
     const PreparedScene* newestScene() const { return prepared_.get(); }
+    // The scene the picture is drawn from (nullptr before the first): its object ids are the
+    // id buffer's, which an edit's may not be until its map is ready.
+    const PreparedScene* drawnScene() const { return drawnScene_.get(); }
     // The view shows the whole full-resolution image of what it was last asked to show:
     // nothing to do until something changes.
     bool refined() const { return full_ && refinement_.done(); }
@@ -130,6 +133,7 @@ class ViewRenderer {
     // once made: the warmer and the cell pruning share them with their threads.
     std::shared_ptr<const PreparedScene> prepared_;
     std::shared_ptr<const SdfProgram> boundedSdf_;
+    std::shared_ptr<const PreparedScene> drawnScene_; // what gpuScene_ holds
     bool sceneChanged_ = false; // `prepared_` is newer than what is drawn: it shows once a map
                                 // for it is ready
     std::string sceneWarning_;  // what `prepared_` is drawn without (meshes that do not load)

@@ -246,6 +246,29 @@ TEST(EditorSceneEdits, ObjectIdsMapToNodesInPreOrder) {
     EXPECT_EQ(shape.last - shape.first, 1u);
 }
 
+// What the viewer outlines by: an edit of numbers keeps every id, a structural one does not.
+TEST(EditorSceneEdits, SameObjectIdsUntilAStructuralEdit) {
+    const Scene scene = sampleScene();
+    Scene moved = scene;
+    findSdfNode(moved, {1, 1})->transform.position = glm::vec3(0, 1, 0);
+    moved.lights.clear(); // lights are not in the id buffer
+    EXPECT_TRUE(sameObjectIds(scene, moved));
+    Scene added = scene;
+    insertSdfNode(added, Selection::sdf({1}), makeShape(PrimitiveId::Sphere));
+    EXPECT_FALSE(sameObjectIds(scene, added));
+    Scene regrouped = scene; // the same number of nodes, in another shape
+    SdfNode last = regrouped.sdf->children.back();
+    regrouped.sdf->children.pop_back();
+    regrouped.sdf->children[1].children.push_back(last);
+    EXPECT_FALSE(sameObjectIds(scene, regrouped));
+    Scene withMesh = scene;
+    withMesh.meshes.emplace_back();
+    EXPECT_FALSE(sameObjectIds(scene, withMesh));
+    Scene noSdf = scene;
+    noSdf.sdf.reset();
+    EXPECT_FALSE(sameObjectIds(scene, noSdf));
+}
+
 TEST(EditorSceneEdits, ObjectIdsAgreeWithTheCompiler) {
     // The ids the compiler gives shapes must be the ones picking maps back.
     Scene scene = sampleScene();

@@ -78,6 +78,10 @@ struct IdRange {
     std::uint32_t last = 0;
 };
 IdRange objectIdRange(const Scene& scene, const Selection& selection);
+// Every object has the same id in both scenes (the same meshes and the same SDF tree shape): an
+// id buffer drawn from one shows the other's selection where it is. False after a structural
+// edit (a node added, deleted, moved to another group), which renumbers what follows.
+bool sameObjectIds(const Scene& a, const Scene& b);
 
 // A sphere around the selected object in world space (rough: from the parameters' sizes and
 // the transform scales; a light's marker for lights), for framing and orbiting.
