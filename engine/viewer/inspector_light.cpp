@@ -4,6 +4,7 @@
 // each with the range the scene reader accepts (see inspector.hpp).
 #include "inspector.hpp"
 
+#include "editor/light_edits.hpp"
 #include "editor/param_fields.hpp"
 
 #include "panel_widgets.hpp"
@@ -105,7 +106,10 @@ void drawShadows(Light& light, editor::Document& document) {
 
 void drawLightInspector(editor::Document& document, int index, ViewerCommands& commands) {
     Light& light = document.editScene().lights[std::size_t(index)];
-    if (ImGui::InputText("name", &light.name)) document.markChanged("Rename");
+    // Unnamed, it shows the label the Scene panel gives it, greyed.
+    const std::string label = editor::lightLabel(light, index);
+    if (ImGui::InputTextWithHint("name", label.c_str(), &light.name))
+        document.markChanged("Rename");
     drawTypeCombo(light, document);
     if (hasPosition(light.type) && numberField("position", &light.position.x, 3,
                                                stepFor(std::max(1.0f, glm::length(light.position))),
