@@ -9,10 +9,6 @@
 
 namespace rmsc {
 
-// Euler angles in degrees [x, y, z] applied X first, then Y, then Z about the fixed axes:
-// R = Rz * Ry * Rx.
-glm::quat eulerDegreesToQuaternion(glm::vec3 degrees);
-
 // `v` scaled to unit length; a vector already unit length to within float rounding is returned
 // unchanged, so normalizing on every load keeps values that were saved exactly as they were.
 glm::vec3 normalizedForStorage(glm::vec3 v);
@@ -23,8 +19,9 @@ glm::quat normalizedForStorage(glm::quat q);
 bool readTransform(const JsonReader& reader, const Json& object, const std::string& pointer,
                    Transform& transform);
 
-// Writes the transform keys that differ from the identity: "position", "quaternion" [x, y, z, w]
-// (exact, unlike Euler angles), "scale" (a number when uniform).
+// Writes the transform keys that differ from the identity: "position", "rotation" (Euler
+// degrees, where short ones read back exactly: exactEulerDegrees) or else "quaternion"
+// [x, y, z, w] (exact), "scale" (a number when uniform).
 void writeTransform(const Transform& transform, Json& object);
 
 // A float as a JSON number that reads back as exactly the same float, written in the fewest

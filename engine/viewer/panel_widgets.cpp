@@ -2,6 +2,7 @@
 #include "panel_widgets.hpp"
 
 #include "core/srgb.hpp"
+#include "core/transform.hpp"
 #include "editor/param_fields.hpp"
 
 #include <imgui.h>
@@ -104,12 +105,15 @@ bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float
             world ? glm::vec3(glm::inverse(parentWorld) * glm::vec4(position, 1.0f)) : position;
         changed = true;
     }
-    glm::vec3 euler = glm::degrees(glm::eulerAngles(t.rotation));
+    // The degrees the file has (or would write) where there are such, so what was typed shows
+    // and a value typed here is saved as typed; glm's extraction (the same convention) else.
+    glm::vec3 euler =
+        exactEulerDegrees(t.rotation).value_or(glm::degrees(glm::eulerAngles(t.rotation)));
     if (numberField("rotation", &euler.x, 3, 0.5f, closedRange(-360.0, 360.0, Unit::Degrees),
                     "Turns about x, then y, then z (Euler angles; the file keeps them where short "
                     "ones give exactly this rotation, else a quaternion).",
                     {.format = "%.1f°"})) {
-        t.rotation = glm::quat(glm::radians(euler));
+        t.rotation = eulerDegreesToQuaternion(euler);
         changed = true;
     }
     // The reader takes any scale > 0; the inspector keeps to three orders of magnitude each way.

@@ -4,6 +4,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <optional>
+
 namespace rmsc {
 
 // Position, rotation and scale; the matrix applies scale, then rotation, then translation.
@@ -14,5 +16,12 @@ struct Transform {
 
     glm::mat4 matrix() const;
 };
+
+// The scene format's Euler angles: degrees [x, y, z] applied X first, then Y, then Z about the
+// fixed axes, R = Rz * Ry * Rx.
+glm::quat eulerDegreesToQuaternion(glm::vec3 degrees);
+// Short Euler degrees that eulerDegreesToQuaternion turns into exactly q, if there are: what a
+// person typed ([0, 30, 0]) is shown and written back so, not as a quaternion.
+std::optional<glm::vec3> exactEulerDegrees(const glm::quat& q);
 
 } // namespace rmsc
