@@ -12,32 +12,50 @@
 
 using rmsc::editor::NewestRequestWorker;
 
-TEST(NewestRequestWorker, WorksOnTheNewestRequestAndKeepsTheNewestResult) {
+namespace {
+
+// A worker whose request 1 waits, once started, until open() is called; it records what it
+// worked on and gives request * 10.
+struct GatedWorker {
     std::promise<void> gate;
     std::shared_future<void> opened = gate.get_future().share();
     std::promise<void> firstStarted;
     std::mutex mutex;
     std::vector<int> worked;
-    NewestRequestWorker<int, int> worker([&](int& request) {
+    NewestRequestWorker<int, int> worker{[this](int& request) {
         if (request == 1) {
             firstStarted.set_value();
-            opened.wait(); // held until the other requests are in
+            opened.wait();
         }
         std::lock_guard lock(mutex);
         worked.push_back(request);
         return request * 10;
-    });
+    }};
+
+    void waitForTheFirst() { firstStarted.get_future().wait(); }
+    void open() { gate.set_value(); }
+    std::vector<int> workedOn() {
+        std::lock_guard lock(mutex);
+        return worked;
+    }
+};
+
+} // namespace
+
+TEST(NewestRequestWorker, WorksOnTheNewestRequestAndKeepsTheNewestResult) {
+    GatedWorker gated;
+    NewestRequestWorker<int, int>& worker = gated.worker;
     EXPECT_FALSE(worker.request(1)); // nothing waited
-    firstStarted.get_future().wait();
+    gated.waitForTheFirst();         // 1 is held until the other requests are in
     EXPECT_FALSE(worker.request(2)); // 1 is worked on, not waiting
     // Replaces 2, which is never worked on and comes back to the caller (to use again).
     EXPECT_EQ(worker.request(3), std::optional<int>(2));
     EXPECT_FALSE(worker.idle());
     EXPECT_FALSE(worker.take()); // nothing finished yet
-    gate.set_value();
+    gated.open();
     worker.waitUntilIdle();
     EXPECT_TRUE(worker.idle());
-    EXPECT_EQ(worked, (std::vector<int>{1, 3}));
+    EXPECT_EQ(gated.workedOn(), (std::vector<int>{1, 3}));
     const std::optional<int> result = worker.take();
     ASSERT_TRUE(result);
     EXPECT_EQ(*result, 30); // 1's result was replaced before it was taken
@@ -47,34 +65,19 @@ TEST(NewestRequestWorker, WorksOnTheNewestRequestAndKeepsTheNewestResult) {
 // cancel() drops the request waiting and returns once the work under way is done: what the
 // recovery file's writer needs before the file is removed.
 TEST(NewestRequestWorker, CancelDropsTheWaitingRequestAndWaitsForTheWorkUnderWay) {
-    std::promise<void> gate;
-    std::shared_future<void> opened = gate.get_future().share();
-    std::promise<void> firstStarted;
-    std::mutex mutex;
-    std::vector<int> worked;
-    NewestRequestWorker<int, int> worker([&](int& request) {
-        if (request == 1) {
-            firstStarted.set_value();
-            opened.wait();
-        }
-        std::lock_guard lock(mutex);
-        worked.push_back(request);
-        return request * 10;
-    });
+    GatedWorker gated;
+    NewestRequestWorker<int, int>& worker = gated.worker;
     worker.request(1);
-    firstStarted.get_future().wait();
+    gated.waitForTheFirst();
     worker.request(2);
     std::future<std::optional<int>> cancelled =
         std::async(std::launch::async, [&] { return worker.cancel(); });
     EXPECT_EQ(cancelled.wait_for(std::chrono::milliseconds(50)), std::future_status::timeout)
         << "cancel() returned while 1 was still worked on";
-    gate.set_value();
+    gated.open();
     EXPECT_EQ(cancelled.get(), std::optional<int>(2)) << "the waiting request comes back";
     EXPECT_TRUE(worker.idle());
-    {
-        std::lock_guard lock(mutex);
-        EXPECT_EQ(worked, (std::vector<int>{1})) << "2 was never worked on";
-    }
+    EXPECT_EQ(gated.workedOn(), (std::vector<int>{1})) << "2 was never worked on";
     EXPECT_EQ(worker.take(), std::optional<int>(10));
     EXPECT_FALSE(worker.cancel()) << "nothing waits";
 }
