@@ -1035,6 +1035,47 @@ void appendOutsideList(SdfCellGrid& grid, std::size_t instructions, std::uint32_
     for (std::uint32_t i = 0; i < instructions; ++i)
         grid.words.push_back(first + i);
 }
+void appendOutsideList(SdfCellGrid& grid, std::span<const std::uint32_t> list) {
+    grid.outsideOffset = std::uint32_t(grid.words.size());
+    grid.outsideLength = std::uint32_t(list.size());
+    grid.words.insert(grid.words.end(), list.begin(), list.end());
+}
+
+// Does a list read as the least of its shapes (SdfListReading::LeastOfShapes) need instruction
+// i? Its unions and Accumulate do nothing there.
+bool neededByLeastOfShapes(const GpuSdfInstruction& in) {
+    const SdfOpcode opcode = SdfOpcode(in.opcode);
+    return opcode != SdfOpcode::Combine && opcode != SdfOpcode::Accumulate;
+}
+
+// The list of code[first, first + length) read as the least of its shapes: without its unions
+// and Accumulate, each BoundSkip skipping the positions that are left of those it skipped (a
+// copy of it with that count appended to `code` when the count changes).
+std::vector<std::uint32_t> leastOfShapesList(std::vector<GpuSdfInstruction>& code,
+                                             std::uint32_t first, std::uint32_t length) {
+    std::vector<std::uint32_t> keptBefore(length + 1, 0); // kept positions before each one
+    for (std::uint32_t j = 0; j < length; ++j)
+        keptBefore[j + 1] = keptBefore[j] + (neededByLeastOfShapes(code[first + j]) ? 1 : 0);
+    std::vector<std::uint32_t> list;
+    list.reserve(keptBefore[length]);
+    for (std::uint32_t j = 0; j < length; ++j) {
+        const GpuSdfInstruction& in = code[first + j];
+        if (!neededByLeastOfShapes(in)) continue;
+        std::uint32_t index = first + j;
+        if (SdfOpcode(in.opcode) == SdfOpcode::BoundSkip) {
+            const std::uint32_t end = std::min(length, j + 1 + in.kind);
+            const std::uint32_t skips = keptBefore[end] - keptBefore[j + 1];
+            if (skips != in.kind) {
+                GpuSdfInstruction shorter = in;
+                shorter.kind = skips;
+                index = std::uint32_t(code.size());
+                code.push_back(shorter);
+            }
+        }
+        list.push_back(index);
+    }
+    return list;
+}
 
 } // namespace
 
@@ -1073,9 +1114,13 @@ struct SdfCellState {
     std::optional<DirectChain> direct;    // the top chain, when cells are pruned from it whole
     std::vector<std::uint32_t> constants; // kFarSteps per level
     SdfCellOptions options;
-    // Where the program run outside the grid starts in `code` and its length: the program
-    // itself, or the one given to run there (after the constants).
-    std::uint32_t outsideFirst = 0, outsideLength = 0;
+    // The program run outside the grid: the program itself, or the one given to run there
+    // (after the constants), as its list (the identity, or its least-of-shapes list).
+    std::vector<std::uint32_t> outsideList;
+    // The program is of a least-of-shapes form (sdfIsLeastOfShapes, with the outside one): the
+    // lists leave their unions out (SdfListReading::LeastOfShapes).
+    bool leastOfShapes = false;
+    std::vector<std::uint32_t> shapesScratch; // setLeafCell's list without its unions
     int levels = 0;
     glm::vec3 origin{0.0f};
     float size = 0.0f;
@@ -1177,9 +1222,17 @@ std::uint32_t storeList(SdfCellState& s, std::span<const std::uint32_t> list) {
 }
 
 void setLeafCell(SdfCellState& s, std::uint32_t k, const CellResult& r) {
-    if (stackDepth(s.code, r.list) > kSdfMaxStack) s.tooDeep = true;
-    s.entries[2 * k] = storeList(s, r.list);
-    s.entries[2 * k + 1] = std::uint32_t(r.list.size());
+    std::span<const std::uint32_t> list = r.list;
+    if (s.leastOfShapes) { // the running minimum needs no unions, nor a stack
+        s.shapesScratch.clear();
+        for (std::uint32_t i : r.list)
+            if (neededByLeastOfShapes(s.code[i])) s.shapesScratch.push_back(i);
+        list = s.shapesScratch;
+    } else if (stackDepth(s.code, r.list) > kSdfMaxStack) {
+        s.tooDeep = true;
+    }
+    s.entries[2 * k] = storeList(s, list);
+    s.entries[2 * k + 1] = std::uint32_t(list.size());
     s.cellLeaves[k] = std::uint32_t(r.leaves);
     markBlockChanged(s, k / 64);
 }
@@ -1507,6 +1560,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         grid.code = s.program.instructions;
         grid.words.clear();
         appendOutsideList(grid, s.program.instructions.size());
+        grid.reading = SdfListReading::Postfix;
         grid.changedWords.push_back({0, std::uint32_t(grid.words.size())});
         grid.packStamp = grid.changedSince = 0;
         return;
@@ -1531,7 +1585,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     // and hold two copies at once. What is never used is never touched (costs no memory).
     if (!inPlace) {
         grid.words.clear();
-        grid.words.reserve(base + s.lists.size() + s.lists.size() / 4 + s.outsideLength);
+        grid.words.reserve(base + s.lists.size() + s.lists.size() / 4 + s.outsideList.size());
         grid.words.assign(base, 0u);
     }
     grid.words.resize(base + s.lists.size());
@@ -1569,7 +1623,8 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     const std::size_t listsFrom = inPlace ? s.packedLists : 0;
     std::copy(s.lists.begin() + std::ptrdiff_t(listsFrom), s.lists.end(),
               grid.words.begin() + base + std::ptrdiff_t(listsFrom));
-    appendOutsideList(grid, s.outsideLength, s.outsideFirst);
+    appendOutsideList(grid, s.outsideList);
+    grid.reading = s.leastOfShapes ? SdfListReading::LeastOfShapes : SdfListReading::Postfix;
     const std::uint32_t tail = inPlace ? base + std::uint32_t(listsFrom) : 0;
     if (grid.words.size() > tail)
         grid.changedWords.push_back({tail, std::uint32_t(grid.words.size()) - tail});
@@ -1604,13 +1659,19 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
 // hierarchy orders the same parts otherwise), else the program itself, for points outside.
 void setOutsideProgram(SdfCellState& s, std::size_t treeCode, const SdfProgram* outside) {
     s.code.resize(treeCode);
-    if (outside && !outside->instructions.empty() && outside->data == s.program.data) {
-        s.outsideFirst = std::uint32_t(treeCode);
-        s.outsideLength = std::uint32_t(outside->instructions.size());
+    const bool given = outside && !outside->instructions.empty() && outside->data == s.program.data;
+    std::uint32_t first = 0, length = std::uint32_t(s.program.instructions.size());
+    if (given) {
+        first = std::uint32_t(treeCode);
+        length = std::uint32_t(outside->instructions.size());
         s.code.insert(s.code.end(), outside->instructions.begin(), outside->instructions.end());
+    }
+    s.leastOfShapes = sdfIsLeastOfShapes(s.program) && (!given || sdfIsLeastOfShapes(*outside));
+    if (s.leastOfShapes) {
+        s.outsideList = leastOfShapesList(s.code, first, length);
     } else {
-        s.outsideFirst = 0;
-        s.outsideLength = std::uint32_t(s.program.instructions.size());
+        s.outsideList.resize(length);
+        std::iota(s.outsideList.begin(), s.outsideList.end(), first);
     }
     s.identity.resize(s.code.size());
     std::iota(s.identity.begin(), s.identity.end(), 0u);

@@ -146,12 +146,14 @@ namespace {
 // names (Ordered: a per-cell program, sdf/cell_pruning.hpp). A BoundSkip skips list positions.
 struct WholeProgram {
     const std::vector<GpuSdfInstruction>& code;
+    static constexpr bool leastOfShapes = false;
     std::size_t size() const { return code.size(); }
     const GpuSdfInstruction& operator[](std::size_t n) const { return code[n]; }
 };
 struct OrderedProgram {
     std::span<const GpuSdfInstruction> code;
     std::span<const std::uint32_t> order;
+    bool leastOfShapes = false; // SdfListReading::LeastOfShapes
     std::size_t size() const { return order.size(); }
     const GpuSdfInstruction& operator[](std::size_t n) const { return code[order[n]]; }
 };
@@ -173,6 +175,10 @@ float distanceOf(const SdfProgram& program, const Code& code, glm::vec3 p, int* 
             if (boundDistance(instruction, p) >= best) i += instruction.kind;
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::SeedBest)) {
             best = std::min(best, seedDistance(instruction, p));
+        } else if (code.leastOfShapes) { // shapes into `best`; unions and Accumulate: nothing
+            if (!isLeaf(instruction)) continue;
+            if (evaluations) ++*evaluations;
+            best = std::min(best, leafDistance(program, instruction, p));
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::Accumulate)) {
             assert(top >= 1);
             best = std::min(best, stack[--top]);
@@ -218,6 +224,10 @@ SdfSurface surfaceOf(const SdfProgram& program, const Code& code,
             if (boundDistance(instruction, p) >= best.distance) i += instruction.kind;
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::SeedBest)) {
             // Surfaces are not seeded: `best` must be a part's surface.
+        } else if (code.leastOfShapes) { // the first of equal ones, as a union keeps
+            if (!isLeaf(instruction)) continue;
+            const SdfSurface s = shapeSurface(program, instruction, materials, p);
+            if (s.distance < best.distance) best = s;
         } else if (instruction.opcode == std::uint32_t(SdfOpcode::Accumulate)) {
             assert(top >= 1);
             --top;
@@ -263,14 +273,19 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
 }
 
 float sdfDistanceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
-                         std::span<const std::uint32_t> order, glm::vec3 p, int* evaluations) {
-    return distanceOf(program, OrderedProgram{code, order}, p, evaluations);
+                         std::span<const std::uint32_t> order, glm::vec3 p, int* evaluations,
+                         SdfListReading reading) {
+    return distanceOf(program,
+                      OrderedProgram{code, order, reading == SdfListReading::LeastOfShapes}, p,
+                      evaluations);
 }
 
 SdfSurface sdfSurfaceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
                              std::span<const std::uint32_t> order,
-                             std::span<const Material> materials, glm::vec3 p) {
-    return surfaceOf(program, OrderedProgram{code, order}, materials, p);
+                             std::span<const Material> materials, glm::vec3 p,
+                             SdfListReading reading) {
+    return surfaceOf(program, OrderedProgram{code, order, reading == SdfListReading::LeastOfShapes},
+                     materials, p);
 }
 
 float sdfLeafDistance(const SdfProgram& program, const GpuSdfInstruction& instruction,

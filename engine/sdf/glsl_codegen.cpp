@@ -206,30 +206,6 @@ void emitBody(std::ostream& out, const Operands& ops, bool surface) {
     out << (accumulates ? "    return best;\n" : "    return s0;\n");
 }
 
-// Is the program the bounding hierarchy's instructions only (common/sdf_parts_loop.glsl)?
-bool isPartsOnly(const SdfProgram& program) {
-    const std::vector<GpuSdfInstruction>& code = program.instructions;
-    for (std::size_t i = 0; i < code.size(); ++i) {
-        const SdfOpcode opcode = SdfOpcode(code[i].opcode);
-        if (opcode == SdfOpcode::BoundSkip || opcode == SdfOpcode::SeedBest) continue;
-        const bool leaf = opcode == SdfOpcode::Shape || opcode == SdfOpcode::Profile;
-        if (!leaf || i + 1 == code.size() || SdfOpcode(code[i + 1].opcode) != SdfOpcode::Accumulate)
-            return false;
-        ++i; // its Accumulate
-    }
-    return !code.empty();
-}
-
-// Is the program shapes united by plain unions only (what a grid compiles to without bounds)?
-bool isUnionOfShapes(const SdfProgram& program) {
-    for (const GpuSdfInstruction& in : program.instructions) {
-        const SdfOpcode opcode = SdfOpcode(in.opcode);
-        if (opcode == SdfOpcode::Shape || opcode == SdfOpcode::Profile) continue;
-        if (opcode != SdfOpcode::Combine || SdfOp(in.kind) != SdfOp::Union) return false;
-    }
-    return !program.instructions.empty();
-}
-
 // ---- What the interpreters run of the shared GLSL ----
 //
 // The interpreters read their instructions from the buffer, so each of their dispatches (the
@@ -372,13 +348,12 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
         out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; })
             << interpreterFeatures(program.instructions, strategy == SdfStrategy::Cells);
         if (strategy == SdfStrategy::Cells)
-            out << (isPartsOnly(program) || isUnionOfShapes(program) ? "#define SDF_CELLS_LEAN 1\n"
-                                                                     : "")
+            out << (sdfIsLeastOfShapes(program) ? "#define SDF_CELLS_LEAN 1\n" : "")
                 << (planes ? "#define SDF_CELLS_PLANES 1\n" : "")
                 << "#include \"common/sdf_cells.glsl\"\n";
         else
-            out << (isPartsOnly(program) ? "#include \"common/sdf_parts_loop.glsl\"\n"
-                                         : "#include \"common/sdf_interpreter.glsl\"\n");
+            out << (sdfIsPartsOnly(program) ? "#include \"common/sdf_parts_loop.glsl\"\n"
+                                            : "#include \"common/sdf_interpreter.glsl\"\n");
         return out.str();
     }
     out << ", " << program.instructions.size() << " instructions.\n";

@@ -124,25 +124,21 @@ float sdfCellDistance(float distance, vec3 p, bool affine) {
 #include "common/sdf_interpreter.glsl"
 #else
 // A program whose every part is one shape (the grids: a plain union of shapes, with or without
-// its bounding hierarchy) needs no stack: each cell's list is shapes and unions, the whole
-// program's box tests and one-shape parts (common/sdf_parts_loop.glsl), both a running minimum.
+// its bounding hierarchy; sdfIsLeastOfShapes in engine/sdf/program_form.cpp) needs no stack:
+// each cell's list is shapes, the whole program's its box tests and shapes, both a running
+// minimum. (A list with unions or Accumulate still reads right: they do nothing here.)
 
 bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 
 // One instruction per loop iteration: a cell's list is a few shapes, and llvmpipe would run
-// unrolled instructions past its end for nothing (masked). The unions between the shapes (and
-// the Accumulate after each part of the whole program) need nothing done: a running minimum
-// is their value, so the instruction after each one is looked at, and skipped with it when it
-// is one of those (an iteration costs every kind of instruction, whatever it finds).
-bool sdfCellsSkipsNext(uint base, uint n, uint count) {
-    if (n + 1u >= count) return false;
-    uint op = sdfInstructionHead(SDF_PROGRAM_AT(base + n + 1u)).x;
-    return op == SDF_OPCODE_COMBINE || op == SDF_OPCODE_ACCUMULATE;
-}
+// unrolled instructions past its end for nothing (masked). The cells' lists hold no unions
+// (SdfListReading::LeastOfShapes, engine/sdf/cell_pruning.cpp): a running minimum is their
+// value, so an iteration is a shape. The whole program's list, for points outside the grid, is
+// written the same way: its box tests and shapes, without the Accumulate after each part.
 
 float sdfListDistance(vec3 p, uint base, uint count) {
     float best = SDF_FAR;
-    for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
+    for (uint n = 0u; n < count; ++n) {
         uint i = SDF_PROGRAM_AT(base + n);
         uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
         uint op = head.x;
@@ -176,7 +172,7 @@ SdfSurface sdfSurface(vec3 p) {
     uint base, count;
     sdfProgramRange(p, base, count);
     SdfSurface best = sdfEmptySurface(p);
-    for (uint n = 0u; n < count; n += sdfCellsSkipsNext(base, n, count) ? 2u : 1u) {
+    for (uint n = 0u; n < count; ++n) {
         uint i = SDF_PROGRAM_AT(base + n);
         uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
         uint op = head.x;

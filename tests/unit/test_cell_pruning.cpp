@@ -145,7 +145,8 @@ int expectCellsAgree(const Compiled& c, const SdfCellGrid& grid, std::mt19937& r
         const float edge = grid.size / float(1 << (2 * range.level));
         const float whole = sdfDistance(c.program, p);
         if (std::abs(whole) > edge && s % 10 != 0) continue;
-        const float pruned = sdfDistanceOrdered(c.program, grid.code, list, p);
+        const float pruned =
+            sdfDistanceOrdered(c.program, grid.code, list, p, nullptr, grid.reading);
         if (whole >= edge) { // may be a far cell's bound: never above the distance
             EXPECT_LE(pruned, whole + 1e-5f * (1.0f + std::abs(whole))) << what;
             EXPECT_GT(pruned, 0.0f) << what;
@@ -157,7 +158,8 @@ int expectCellsAgree(const Compiled& c, const SdfCellGrid& grid, std::mt19937& r
             << what << " at " << p.x << " " << p.y << " " << p.z << ", cell program of "
             << list.size() << " instructions";
         const SdfSurface a = sdfSurface(c.program, materials, p);
-        const SdfSurface b = sdfSurfaceOrdered(c.program, grid.code, list, materials, p);
+        const SdfSurface b =
+            sdfSurfaceOrdered(c.program, grid.code, list, materials, p, grid.reading);
         EXPECT_EQ(a.objectId, b.objectId) << what;
         EXPECT_NEAR(glm::length(a.baseColor - b.baseColor), 0.0f, 1e-4f) << what;
         if (::testing::Test::HasFailure()) return checked;
@@ -255,11 +257,12 @@ TEST(CellPruning, DeepSmoothTreesDropWhatIsAboveItsThreshold) {
             const std::span<const std::uint32_t> list =
                 std::span(grid.words).subspan(range.offset, range.length);
             const float whole = sdfDistance(c->program, p);
-            ASSERT_NEAR(sdfDistanceOrdered(c->program, grid.code, list, p), whole,
-                        1e-5f * (1.0f + std::abs(whole)))
+            ASSERT_NEAR(sdfDistanceOrdered(c->program, grid.code, list, p, nullptr, grid.reading),
+                        whole, 1e-5f * (1.0f + std::abs(whole)))
                 << sdf << " at " << p.x << " " << p.y << " " << p.z;
             const SdfSurface a = sdfSurface(c->program, materials, p);
-            const SdfSurface b = sdfSurfaceOrdered(c->program, grid.code, list, materials, p);
+            const SdfSurface b =
+                sdfSurfaceOrdered(c->program, grid.code, list, materials, p, grid.reading);
             ASSERT_EQ(a.objectId, b.objectId) << sdf;
             ASSERT_NEAR(glm::length(a.baseColor - b.baseColor), 0.0f, 1e-4f) << sdf;
             ++checked;
@@ -302,7 +305,7 @@ TEST(CellPruning, CellsMarkedAffineHoldOnlyAPlane) {
             const glm::vec3 corner =
                 grid.origin + glm::floor((p - grid.origin) / edge) * edge; // the cell's
             const auto cellProgram = [&](glm::vec3 q) {
-                return sdfDistanceOrdered(c->program, grid.code, list, q);
+                return sdfDistanceOrdered(c->program, grid.code, list, q, nullptr, grid.reading);
             };
             // Affine: the value halfway between p and another point of the cell is the mean.
             const glm::vec3 q = corner + glm::vec3(u(rng), u(rng), u(rng)) * edge;
@@ -628,11 +631,24 @@ TEST(CellPruning, TheOutsideRunsTheProgramGivenForIt) {
     const auto expectOutside = [&](const SdfProgram& whole, const SdfProgram& withBoxes) {
         const std::span<const std::uint32_t> outside =
             std::span(grid.words).subspan(grid.outsideOffset, grid.outsideLength);
-        ASSERT_EQ(outside.size(), withBoxes.instructions.size());
-        for (std::size_t i = 0; i < outside.size(); ++i)
-            ASSERT_EQ(std::memcmp(&grid.code[outside[i]], &withBoxes.instructions[i],
-                                  sizeof(GpuSdfInstruction)),
-                      0);
+        // The hierarchy's program read as the least of its shapes: without its Accumulate,
+        // each box test skipping as many of the positions left.
+        ASSERT_EQ(grid.reading, SdfListReading::LeastOfShapes);
+        std::size_t k = 0;
+        for (std::size_t i = 0; i < withBoxes.instructions.size(); ++i) {
+            GpuSdfInstruction expected = withBoxes.instructions[i];
+            if (SdfOpcode(expected.opcode) == SdfOpcode::Accumulate) continue;
+            ASSERT_LT(k, outside.size());
+            if (SdfOpcode(expected.opcode) == SdfOpcode::BoundSkip) {
+                std::uint32_t left = 0;
+                for (std::size_t j = i + 1; j <= i + expected.kind; ++j)
+                    left += SdfOpcode(withBoxes.instructions[j].opcode) != SdfOpcode::Accumulate;
+                expected.kind = left;
+            }
+            ASSERT_EQ(std::memcmp(&grid.code[outside[k]], &expected, sizeof expected), 0) << i;
+            ++k;
+        }
+        ASSERT_EQ(k, outside.size());
         const std::vector<Material> materials = testMaterials();
         for (const glm::vec3 p :
              {grid.origin - glm::vec3(1.0f), grid.origin + glm::vec3(grid.size * 1.1f),
@@ -641,9 +657,11 @@ TEST(CellPruning, TheOutsideRunsTheProgramGivenForIt) {
             EXPECT_EQ(range.level, 0);
             const std::span<const std::uint32_t> list =
                 std::span(grid.words).subspan(range.offset, range.length);
-            EXPECT_FLOAT_EQ(sdfDistanceOrdered(whole, grid.code, list, p), sdfDistance(whole, p));
-            EXPECT_EQ(sdfSurfaceOrdered(whole, grid.code, list, materials, p).objectId,
-                      sdfSurface(whole, materials, p).objectId);
+            EXPECT_FLOAT_EQ(sdfDistanceOrdered(whole, grid.code, list, p, nullptr, grid.reading),
+                            sdfDistance(whole, p));
+            EXPECT_EQ(
+                sdfSurfaceOrdered(whole, grid.code, list, materials, p, grid.reading).objectId,
+                sdfSurface(whole, materials, p).objectId);
         }
     };
     expectOutside(flat->program, bounded->program);
@@ -657,6 +675,71 @@ TEST(CellPruning, TheOutsideRunsTheProgramGivenForIt) {
     ASSERT_TRUE(repruneSdfCells(*state, movedFlat->program, grid, &movedBounded->program));
     expectOutside(movedFlat->program, movedBounded->program);
     EXPECT_EQ(expectCellsAgree(*movedFlat, grid, rng, 1000, "moved"), 1000);
+}
+
+// A union of shapes, with or without its bounding hierarchy, lists only the shapes each cell
+// needs (no unions: the lean loop of sdf_cells.glsl reads a running minimum), and the outside
+// list only its box tests and shapes; read so, both agree with the whole program. A tree with
+// any other operation keeps its postfix lists.
+TEST(CellPruning, AUnionOfShapesListsOnlyShapes) {
+    std::ostringstream text;
+    text << R"({"children": [)";
+    for (int i = 0; i < 40; ++i)
+        text << (i ? ", " : "") << R"({"shape": ")" << (i % 3 ? "sphere" : "box")
+             << R"(", "position": [)" << (i % 7) * 0.7f << ", " << (i % 3) * 0.4f << ", "
+             << (i / 7) * 0.7f << R"(], "material": "m)" << i % 3 << "\"}";
+    text << "]}";
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<float> u(-0.1f, 1.1f);
+    for (const bool bounded : {false, true}) {
+        const std::optional<Compiled> c = compileText(text.str(), bounded);
+        ASSERT_TRUE(c);
+        ASSERT_TRUE(sdfIsLeastOfShapes(c->program));
+        SdfCellOptions options;
+        options.levels = 3;
+        const SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf), options);
+        ASSERT_GT(grid.levels, 0);
+        EXPECT_EQ(grid.reading, SdfListReading::LeastOfShapes);
+        int cells = 0, outside = 0;
+        for (int n = 0; n < 4000; ++n) {
+            const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
+            const SdfCellRange range = sdfCellRange(grid, p);
+            (range.level == 0 ? outside : cells) += 1;
+            for (std::uint32_t k = 0; k < range.length; ++k) {
+                const SdfOpcode opcode = SdfOpcode(grid.code[grid.words[range.offset + k]].opcode);
+                ASSERT_TRUE(opcode != SdfOpcode::Combine && opcode != SdfOpcode::Accumulate)
+                    << "bounded " << bounded << ", level " << range.level;
+            }
+            const std::span<const std::uint32_t> list =
+                std::span(grid.words).subspan(range.offset, range.length);
+            const float whole = sdfDistance(c->program, p);
+            const float read =
+                sdfDistanceOrdered(c->program, grid.code, list, p, nullptr, grid.reading);
+            if (range.level == 0 || whole < grid.size / float(1 << (2 * range.level)))
+                ASSERT_NEAR(read, whole, 1e-5f * (1.0f + std::abs(whole))) << bounded;
+            else // a far cell's constant: a bound
+                ASSERT_LE(read, whole + 1e-5f * (1.0f + std::abs(whole))) << bounded;
+        }
+        EXPECT_GT(cells, 1000);
+        EXPECT_GT(outside, 1000);
+        EXPECT_EQ(expectCellsAgree(*c, grid, rng, 1000, bounded ? "bounded" : "flat"), 1000);
+    }
+    // A smooth union among them: a postfix program, its unions listed.
+    const std::string smooth = R"({"children": [{"shape": "sphere"}, {"op": "smooth_union",
+        "smoothness": 0.2, "children": [{"shape": "box", "position": [0.8, 0, 0]},
+        {"shape": "sphere", "position": [1.4, 0, 0]}]}]})";
+    const std::optional<Compiled> c = compileText(smooth, false);
+    ASSERT_TRUE(c);
+    EXPECT_FALSE(sdfIsLeastOfShapes(c->program));
+    const SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf));
+    EXPECT_EQ(grid.reading, SdfListReading::Postfix);
+    const SdfCellRange range = sdfCellRange(grid, glm::vec3(1.1f, 0.0f, 0.0f));
+    bool combines = false;
+    for (std::uint32_t k = 0; k < range.length; ++k)
+        combines = combines ||
+                   SdfOpcode(grid.code[grid.words[range.offset + k]].opcode) == SdfOpcode::Combine;
+    EXPECT_TRUE(combines);
+    EXPECT_EQ(expectCellsAgree(*c, grid, rng, 500, "smooth"), 500);
 }
 
 TEST(CellPruning, OperationRulesHoldAtTheirEdges) {

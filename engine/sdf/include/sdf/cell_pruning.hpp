@@ -118,6 +118,10 @@ struct SdfCellGrid {
     std::vector<std::uint32_t> words;
     std::uint32_t outsideOffset = 0; // the whole program's list (identity), in words
     std::uint32_t outsideLength = 0;
+    // How every list is read (the cells' and the outside one): the cells of a program of a
+    // least-of-shapes form (sdfIsLeastOfShapes) list its shapes without their unions, which
+    // the lean loop of sdf_cells.glsl would only step over.
+    SdfListReading reading = SdfListReading::Postfix;
     std::vector<GpuSdfInstruction> code; // program.instructions + the added ones
     // The whole program's floor, when it has one: its tree's root's, of the floors the pruning
     // drops subtrees by (also read through a bounding hierarchy, which sdfProgramFloor refuses).

@@ -37,14 +37,16 @@ std::uint32_t sdfNearestLeaf(const SdfProgram& program, glm::vec3 p);
 // `materials` is indexed by GpuSdfInstruction::material.
 SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> materials, glm::vec3 p);
 // The same for the instructions `order` names, in that order, out of `code` (a per-cell
-// program of sdf/cell_pruning.hpp; `program` gives the data buffer). A BoundSkip skips
-// positions of `order`.
+// program of sdf/cell_pruning.hpp; `program` gives the data buffer), read as `reading` says.
+// A BoundSkip skips positions of `order`.
 float sdfDistanceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
                          std::span<const std::uint32_t> order, glm::vec3 p,
-                         int* evaluations = nullptr);
+                         int* evaluations = nullptr,
+                         SdfListReading reading = SdfListReading::Postfix);
 SdfSurface sdfSurfaceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
                              std::span<const std::uint32_t> order,
-                             std::span<const Material> materials, glm::vec3 p);
+                             std::span<const Material> materials, glm::vec3 p,
+                             SdfListReading reading = SdfListReading::Postfix);
 // The distance of one shape or profile instruction at world point p.
 float sdfLeafDistance(const SdfProgram& program, const GpuSdfInstruction& instruction, glm::vec3 p);
 // Normalized gradient by the tetrahedron technique (4 evaluations; Quilez, "normals for an SDF").

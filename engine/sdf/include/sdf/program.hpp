@@ -114,4 +114,21 @@ struct SdfProgram {
     std::vector<std::string> nodePointers;
 };
 
+// The forms of program the lean loops run (engine/sdf/program_form.cpp):
+// - parts only: the bounding hierarchy's instructions over parts of one shape each, every shape
+//   followed by its Accumulate (shaders/common/sdf_parts_loop.glsl);
+// - a union of shapes: shapes and profiles united by plain unions only (a grid without bounds).
+// Either one's value is the least of its shapes' (the first of equal ones for the surface).
+bool sdfIsPartsOnly(const SdfProgram& program);
+bool sdfIsUnionOfShapes(const SdfProgram& program);
+inline bool sdfIsLeastOfShapes(const SdfProgram& program) {
+    return sdfIsPartsOnly(program) || sdfIsUnionOfShapes(program);
+}
+
+// How a list of instruction indices (a cell's program, sdf/cell_pruning.hpp) is read: as a
+// postfix program, or as the least of its shapes and profiles, where unions and Accumulate do
+// nothing (the cells of a least-of-shapes program leave their unions out of their lists).
+// BoundSkip and SeedBest do what they do in a program either way.
+enum class SdfListReading { Postfix, LeastOfShapes };
+
 } // namespace rmsc
