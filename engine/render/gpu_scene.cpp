@@ -208,7 +208,8 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
         built =
             buildSdfCells(drawn, prepared.scene.sdf ? sdfContentBox(*prepared.scene.sdf) : Aabb{});
     const SdfCellGrid& grid = cells ? *cells : costed ? *prepared.sdfCells : built;
-    std::vector<GpuSdfInstruction> instructions = pruned ? grid.code : drawn.instructions;
+    const std::vector<GpuSdfInstruction>& sceneCode = pruned ? grid.code : drawn.instructions;
+    std::vector<GpuSdfInstruction> shellCode; // after the scene's, in the same buffer
     std::vector<glm::vec4> sdfData = drawn.data;
     for (const PreparedShell& shell : prepared.shells) {
         SdfProgram program = shell.compiled.program;
@@ -218,9 +219,8 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
         sdfData.insert(sdfData.end(), program.data.begin(), program.data.end());
         GpuShell gpuShell;
         gpuShell.map =
-            generateSdfMap(program, strategy, {"shell", std::size_t(instructions.size())});
-        instructions.insert(instructions.end(), program.instructions.begin(),
-                            program.instructions.end());
+            generateSdfMap(program, strategy, {"shell", sceneCode.size() + shellCode.size()});
+        shellCode.insert(shellCode.end(), program.instructions.begin(), program.instructions.end());
         gpuShell.objectToWorld = shell.compiled.objectToWorld;
         gpuShell.worldToObject = shell.compiled.worldToObject;
         gpuShell.distanceScale = shell.compiled.distanceScale;
@@ -250,7 +250,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
     if (sdfData.empty()) sdfData.emplace_back(0.0f); // a buffer is never empty
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
-    gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, instructions);
+    gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, sceneCode, shellCode);
     gpu.sdfMap = generateSdfMap(drawn, strategy);
     if (pruned) {
         GpuSdfCellHeader header;
@@ -266,7 +266,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
         gpu.sdfCellLevels = grid.levels;
     }
     gpu.sdfInstructionCount = int(drawn.instructions.size());
-    gpu.sdfCodeCount = instructions.size();
+    gpu.sdfCodeCount = sceneCode.size() + shellCode.size();
     gpu.sdfDataCount = sdfData.size();
     gpu.sdf = drawn;
 

@@ -5,20 +5,29 @@
 
 #include <algorithm>
 #include <cstring>
+#include <vector>
 
 namespace rmsc {
 
 SdfProgramBuffer createSdfProgramBuffer(const GpuSdfHeader& header,
-                                        const std::vector<GpuSdfInstruction>& instructions) {
-    std::vector<unsigned char> bytes(
-        std::max(sizeof header + instructions.size() * sizeof(GpuSdfInstruction),
-                 std::size_t(kSdfUniformBlockBytes)));
-    std::memcpy(bytes.data(), &header, sizeof header);
-    if (!instructions.empty())
-        std::memcpy(bytes.data() + sizeof header, instructions.data(),
-                    instructions.size() * sizeof(GpuSdfInstruction));
+                                        std::span<const GpuSdfInstruction> code,
+                                        std::span<const GpuSdfInstruction> more) {
+    const std::size_t codeBytes = code.size_bytes(), moreBytes = more.size_bytes();
+    const std::size_t bytes =
+        std::max(sizeof header + codeBytes + moreBytes, std::size_t(kSdfUniformBlockBytes));
     SdfProgramBuffer program;
-    program.buffer = gl::createBufferWithData(GLsizeiptr(bytes.size()), bytes.data());
+    program.buffer = gl::createBufferWithData(GLsizeiptr(bytes), nullptr);
+    const GLuint id = program.buffer.id();
+    glNamedBufferSubData(id, 0, sizeof header, &header);
+    if (codeBytes) glNamedBufferSubData(id, sizeof header, GLsizeiptr(codeBytes), code.data());
+    if (moreBytes)
+        glNamedBufferSubData(id, GLintptr(sizeof header + codeBytes), GLsizeiptr(moreBytes),
+                             more.data());
+    const std::size_t written = sizeof header + codeBytes + moreBytes;
+    if (written < bytes) { // the uniform window's rest: zeros, as a small program always had
+        const std::vector<unsigned char> zeros(bytes - written, 0);
+        glNamedBufferSubData(id, GLintptr(written), GLsizeiptr(zeros.size()), zeros.data());
+    }
     program.texels = gl::createTexture(GL_TEXTURE_BUFFER);
     glTextureBuffer(program.texels.id(), GL_RGBA32F, program.buffer.id());
     return program;

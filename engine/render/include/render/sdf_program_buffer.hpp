@@ -7,7 +7,7 @@
 #include "gl/handles.hpp"
 #include "sdf/program.hpp"
 
-#include <vector>
+#include <span>
 
 namespace rmsc {
 
@@ -22,8 +22,11 @@ struct SdfProgramBuffer {
 // limits::kSdfCells' table and lists; desktop drivers and llvmpipe allow 2^27.
 constexpr int kSdfMaxBufferTexels = 1 << 24;
 
+// The buffer of `header`, then `code`, then `more` (the shells' programs after the scene's),
+// written straight from them: a large scene's program is not copied on its way.
 SdfProgramBuffer createSdfProgramBuffer(const GpuSdfHeader& header,
-                                        const std::vector<GpuSdfInstruction>& instructions);
+                                        std::span<const GpuSdfInstruction> code,
+                                        std::span<const GpuSdfInstruction> more = {});
 
 // Binds it at kSdfProgramBinding, kSdfProgramUniformBinding and kSdfProgramTexelUnit.
 void bindSdfProgramBuffer(const SdfProgramBuffer& program);
