@@ -167,6 +167,11 @@ float sdfDistance(vec3 p) {
     return sdfCellDistance(sdfListDistance(p, base, count), p, affine);
 }
 
+// The instruction of the shape sdfSurface last found nearest, and its field: the normal at the
+// hit is its gradient (sdfSurfaceNormal, common/sdf_scene.glsl).
+uint sdfNearestShape = 0u;
+#define SDF_SURFACE_FIELD(p) sdfLeafDistance(sdfNearestShape, p)
+
 // The nearest shape's surface (the first of equal ones, as a union keeps). Once per hit.
 SdfSurface sdfSurface(vec3 p) {
     uint base, count;
@@ -178,8 +183,10 @@ SdfSurface sdfSurface(vec3 p) {
         uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             float d = sdfLeafDistance(i, p);
-            if (d < best.distance)
+            if (d < best.distance) {
                 best = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
+                sdfNearestShape = i;
+            }
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {

@@ -41,6 +41,25 @@ vec3 sdfNormal(vec3 p, float h) {
     return len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
 }
 
+// The normal at a hit p whose sdfSurface(p) was the last one read: sdfNormal, or where the map
+// names the field of the surface sdfSurface found (SDF_SURFACE_FIELD: the nearest shape of a
+// union of shapes, common/sdf_cells.glsl), the same tetrahedron over that field alone. At the
+// hit a union's gradient is its nearest shape's, and one shape costs a tap less than the list
+// of the point's cell.
+vec3 sdfSurfaceNormal(vec3 p, float h) {
+#ifdef SDF_SURFACE_FIELD
+    vec3 n = vec3(0.0);
+    for (int i = SDF_ZERO; i < 4; ++i) {
+        vec3 e = 2.0 * vec3(((i + 3) >> 1) & 1, (i >> 1) & 1, i & 1) - 1.0;
+        n += e * SDF_SURFACE_FIELD(p + e * h);
+    }
+    float len = length(n);
+    return len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
+#else
+    return sdfNormal(p, h);
+#endif
+}
+
 // Over-relaxed sphere tracing (Keinert, Schäfer, Korndörfer, Ganse and Stamminger, "Enhanced
 // Sphere Tracing", Eurographics 2014 short papers, section 3.1) on top of sphere tracing (Hart
 // 1996, "Sphere tracing"): from t = tMin along the normalized rd, step by relaxation * d. A

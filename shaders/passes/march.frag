@@ -43,7 +43,7 @@ void main() {
         sdfMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, frame.march.w, t, steps)) {
         vec3 p = ro + rd * t;
         SdfSurface surface = sdfSurface(p);
-        vec3 normal = sdfNormal(p, max(frame.march.z * max(t, 1.0), 1e-5));
+        vec3 normal = sdfSurfaceNormal(p, max(frame.march.z * max(t, 1.0), 1e-5));
         SurfacePoint s;
         s.position = p;
         s.normal = normal;

@@ -65,6 +65,16 @@ TEST(SdfStrategies, PartsLoopAndBakedDrawTheSameImage) {
                      "strategy_parts_loop_grid_10");
 }
 
+// A union of shapes drawn with cells runs the lean loop over lists of shapes alone, and takes
+// the normal at a hit from the nearest shape's field (common/sdf_cells.glsl): it must draw what
+// generated code draws, normals and shading included.
+TEST(SdfStrategies, CellsOfAUnionOfShapesAndBakedDrawTheSameImage) {
+    const PreparedScene prepared = openRepositoryScene("samples/bench/grid_10.json");
+    ASSERT_NE(generateSdfMap(prepared.sdf, SdfStrategy::Cells).find("SDF_CELLS_LEAN"),
+              std::string::npos);
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells, "strategy_cells_grid_10");
+}
+
 TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
     PreparedScene prepared = openRepositoryScene("samples/scenes/csg.json");
     Renderer& renderer = sharedRenderer();
