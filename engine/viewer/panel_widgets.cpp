@@ -29,25 +29,30 @@ ImGuiID clampKey(const char* label) {
     return key;
 }
 
-// After the widget: the tooltip, the clamp's time kept, and the notice while it shows.
+const ImVec4 kClampNoticeColour{1.0f, 0.72f, 0.25f, 1.0f};
+
+// After the widget: the clamp's time kept, the tooltip, and the notice while it shows, under the
+// field and at the top of its tooltip too (a tooltip placed below the pointer covers the line
+// under the field).
 void finishNumberField(const char* label, bool changed, bool clamped, const ParamRange& range,
                        std::string_view help) {
-    if (ImGui::IsItemHovered()) {
-        const std::string text = editor::fieldHelp(help, range);
-        ImGui::SetTooltip("%s", text.c_str());
-    }
     ImGuiStorage* storage = ImGui::GetStateStorage();
     const ImGuiID key = clampKey(label);
     if (clamped)
         storage->SetFloat(key, float(ImGui::GetTime()));
     else if (changed)
         storage->SetFloat(key, -1.0f); // a value within the range: the notice goes
-    if (editor::clampNoticeShown(double(storage->GetFloat(key, -1.0f)), ImGui::GetTime())) {
-        const std::string notice = editor::clampNotice(range);
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.72f, 0.25f, 1.0f));
-        ImGui::TextUnformatted(notice.c_str());
-        ImGui::PopStyleColor();
+    const bool noticeShown =
+        editor::clampNoticeShown(double(storage->GetFloat(key, -1.0f)), ImGui::GetTime());
+    const std::string notice = noticeShown ? editor::clampNotice(range) : std::string();
+    if (ImGui::IsItemHovered()) { // (still the field: nothing has been drawn after it)
+        const std::string text = editor::fieldHelp(help, range);
+        ImGui::BeginTooltip();
+        if (noticeShown) ImGui::TextColored(kClampNoticeColour, "%s", notice.c_str());
+        ImGui::TextUnformatted(text.c_str());
+        ImGui::EndTooltip();
     }
+    if (noticeShown) ImGui::TextColored(kClampNoticeColour, "%s", notice.c_str());
 }
 
 } // namespace

@@ -642,6 +642,10 @@ def aids_run(rmsc, source, tmp, xvfb_run, check):
     if "clamped" in shots:
         notice = colour_pixels(shots["clamped"], (440, 285, 640, 315), CLAMP_NOTICE)
         check("the radius field says it clamped the value", notice > 40, notice)
+        # The pointer is still on the field: its tooltip, placed over the field, says it too
+        # (a tooltip placed below the pointer would cover the line under the field).
+        tooltip = colour_pixels(shots["clamped"], (440, 205, 640, 280), CLAMP_NOTICE)
+        check("the radius field's tooltip says it clamped the value", tooltip > 40, tooltip)
     if "building" in shots:
         # The bar shows while the new shape's shaders build; a machine that built them before
         # the shot (the log's first switch after the add) has nothing to show.
