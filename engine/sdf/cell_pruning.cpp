@@ -1050,7 +1050,8 @@ bool neededByLeastOfShapes(const GpuSdfInstruction& in) {
 
 // The list of code[first, first + length) read as the least of its shapes: without its unions
 // and Accumulate, each BoundSkip skipping the positions that are left of those it skipped (a
-// copy of it with that count appended to `code` when the count changes).
+// copy of it with that count appended to `code`: every one, so that the code's length does not
+// change with the counts, and an edit of numbers still writes the GPU's buffers in place).
 std::vector<std::uint32_t> leastOfShapesList(std::vector<GpuSdfInstruction>& code,
                                              std::uint32_t first, std::uint32_t length) {
     std::vector<std::uint32_t> keptBefore(length + 1, 0); // kept positions before each one
@@ -1064,13 +1065,10 @@ std::vector<std::uint32_t> leastOfShapesList(std::vector<GpuSdfInstruction>& cod
         std::uint32_t index = first + j;
         if (SdfOpcode(in.opcode) == SdfOpcode::BoundSkip) {
             const std::uint32_t end = std::min(length, j + 1 + in.kind);
-            const std::uint32_t skips = keptBefore[end] - keptBefore[j + 1];
-            if (skips != in.kind) {
-                GpuSdfInstruction shorter = in;
-                shorter.kind = skips;
-                index = std::uint32_t(code.size());
-                code.push_back(shorter);
-            }
+            GpuSdfInstruction shorter = in;
+            shorter.kind = keptBefore[end] - keptBefore[j + 1];
+            index = std::uint32_t(code.size());
+            code.push_back(shorter); // (`in` may move: code grows)
         }
         list.push_back(index);
     }
@@ -1701,10 +1699,15 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     SdfCellStatePtr state(new SdfCellState);
     SdfCellState& s = *state;
     s.program = program;
-    // The program, the union below, the far constants and the outside program (reserved whole:
-    // a large scene's code is not copied as it grows).
+    // The program, the union below, the far constants, the outside program and its box tests'
+    // copies (leastOfShapesList), reserved whole: a large scene's code is not copied as it grows.
+    const std::vector<GpuSdfInstruction>& runOutside =
+        outside ? outside->instructions : program.instructions;
+    const auto boxTests = std::count_if(runOutside.begin(), runOutside.end(), [](const auto& in) {
+        return SdfOpcode(in.opcode) == SdfOpcode::BoundSkip;
+    });
     s.code.reserve(program.instructions.size() + 1 + 6 * kFarSteps +
-                   (outside ? outside->instructions.size() : 0));
+                   (outside ? outside->instructions.size() : 0) + std::size_t(boxTests));
     s.code = program.instructions;
     s.options = options;
     s.keepTrees = keep != nullptr;

@@ -672,7 +672,10 @@ TEST(CellPruning, TheOutsideRunsTheProgramGivenForIt) {
     const std::optional<Compiled> movedFlat = compileText(movedText, false),
                                   movedBounded = compileText(movedText, true);
     ASSERT_TRUE(movedFlat && movedBounded);
+    const std::size_t codeBefore = grid.code.size();
     ASSERT_TRUE(repruneSdfCells(*state, movedFlat->program, grid, &movedBounded->program));
+    // The code's length stays (the GPU's buffers are written in place after such an edit).
+    EXPECT_EQ(grid.code.size(), codeBefore);
     expectOutside(movedFlat->program, movedBounded->program);
     EXPECT_EQ(expectCellsAgree(*movedFlat, grid, rng, 1000, "moved"), 1000);
 }
