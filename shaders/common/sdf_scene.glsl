@@ -28,26 +28,18 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
 // https://iquilezles.org/articles/normalsSDF/ (section "Non-inlining the normal").
 #define SDF_ZERO min(int(frame.march.x), 0)
 
-// Normalized gradient of the scene distance by the tetrahedron technique: 4 evaluations at
-// p + h * (+-1, +-1, +-1) (Inigo Quilez, "Normals for an SDF", the same article), in a loop that
-// is not unrolled.
-vec3 sdfNormal(vec3 p, float h) {
-    vec3 n = vec3(0.0);
-    for (int i = SDF_ZERO; i < 4; ++i) {
-        vec3 e = 2.0 * vec3(((i + 3) >> 1) & 1, (i >> 1) & 1, i & 1) - 1.0;
-        n += e * sdfDistance(p + e * h);
-    }
-    float len = length(n);
-    return len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
-}
+// The field whose gradient is the normal at a hit: the scene's distance, or the one the map
+// names (SDF_SURFACE_FIELD: the nearest shape of a union of shapes, which sdfSurface found;
+// common/sdf_cells.glsl). At the hit a union's gradient is its nearest shape's, and one shape
+// costs a tap less than the list of the point's cell.
+#ifndef SDF_SURFACE_FIELD
+#define SDF_SURFACE_FIELD(p) sdfDistance(p)
+#endif
 
-// The normal at a hit p whose sdfSurface(p) was the last one read: sdfNormal, or where the map
-// names the field of the surface sdfSurface found (SDF_SURFACE_FIELD: the nearest shape of a
-// union of shapes, common/sdf_cells.glsl), the same tetrahedron over that field alone. At the
-// hit a union's gradient is its nearest shape's, and one shape costs a tap less than the list
-// of the point's cell.
+// The unit normal at a hit p whose sdfSurface(p) was the last one read: the gradient of
+// SDF_SURFACE_FIELD by the tetrahedron technique, 4 evaluations at p + h * (+-1, +-1, +-1)
+// (Inigo Quilez, "Normals for an SDF", the same article), in a loop that is not unrolled.
 vec3 sdfSurfaceNormal(vec3 p, float h) {
-#ifdef SDF_SURFACE_FIELD
     vec3 n = vec3(0.0);
     for (int i = SDF_ZERO; i < 4; ++i) {
         vec3 e = 2.0 * vec3(((i + 3) >> 1) & 1, (i >> 1) & 1, i & 1) - 1.0;
@@ -55,9 +47,6 @@ vec3 sdfSurfaceNormal(vec3 p, float h) {
     }
     float len = length(n);
     return len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
-#else
-    return sdfNormal(p, h);
-#endif
 }
 
 // Over-relaxed sphere tracing (Keinert, Schäfer, Korndörfer, Ganse and Stamminger, "Enhanced

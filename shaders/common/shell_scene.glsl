@@ -66,8 +66,8 @@ bool shellMarch(vec3 ro, vec3 rd, float tMin, float tMax, int maxSteps, float ep
     SDF_RELAXED_MARCH(shellObjectDistance(o + d * t))
 }
 
-// World-space unit normal at world point p: the tetrahedron gradient (as sdfNormal) in object
-// space, taken to world space by the transpose of the world-to-object map (normals are
+// World-space unit normal at world point p: the tetrahedron gradient (as sdfSurfaceNormal) in
+// object space, taken to world space by the transpose of the world-to-object map (normals are
 // gradients).
 vec3 shellNormal(vec3 p, float h) {
     vec3 q = shellObjectPoint(p);
