@@ -2,6 +2,7 @@
 // program cache: a parameter edit under the buffer strategy compiles nothing, a structural
 // edit compiles once.
 #include "gpu_test_support.hpp"
+#include "scene_text.hpp"
 
 #include "render/readback.hpp"
 #include "sdf/compiler.hpp"
@@ -73,6 +74,29 @@ TEST(SdfStrategies, CellsOfAUnionOfShapesAndBakedDrawTheSameImage) {
     ASSERT_NE(generateSdfMap(prepared.sdf, SdfStrategy::Cells).find("SDF_CELLS_LEAN"),
               std::string::npos);
     expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells, "strategy_cells_grid_10");
+    // Profiles (their leaves read the data buffer) and a floor plane (its cells affine, crossed
+    // in a step) among the shapes.
+    const PreparedScene profiles = prepareSceneText(R"({"version": 1,
+        "camera": {"position": [0.5, 2.2, 5.5], "target": [0, 0.4, 0], "fov": 40},
+        "materials": {"a": {"base_color": "#e76f51"}, "b": {"base_color": "#2a9d8f"}},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+        "sdf": {"children": [
+          {"shape": "plane", "normal": [0, 1, 0], "offset": 0, "material": "b"},
+          {"shape": "revolution", "offset": 0.0, "position": [-1, 0, 0], "material": "a",
+           "profile": {"type": "polygon", "points": [[0.0, 0.0], [0.4, 0.0], [0.2, 0.5],
+                                                     [0.3, 0.9], [0.0, 0.9]]}},
+          {"shape": "extrusion", "depth": 0.2, "position": [0.6, 0.6, 0], "material": "b",
+           "profile": {"type": "polygon", "points": [[0.0, 0.45], [0.11, 0.15], [0.43, 0.14],
+                                                     [0.17, -0.05], [0.26, -0.36], [0.0, -0.18],
+                                                     [-0.26, -0.36], [-0.17, -0.05], [-0.43, 0.14],
+                                                     [-0.11, 0.15]]}},
+          {"shape": "sphere", "radius": 0.3, "position": [1.6, 0.3, -0.4], "material": "a"},
+          {"shape": "box", "half_extents": [0.25, 0.25, 0.25], "position": [0, 0.25, 1],
+           "rotation": [0, 30, 0], "material": "a"}]}})");
+    ASSERT_NE(generateSdfMap(profiles.sdf, SdfStrategy::Cells).find("SDF_CELLS_LEAN"),
+              std::string::npos);
+    expectSameImages(profiles, SdfStrategy::Baked, SdfStrategy::Cells,
+                     "strategy_cells_profiles_on_a_floor");
 }
 
 TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
