@@ -46,4 +46,12 @@ std::optional<glm::vec3> exactEulerDegrees(const glm::quat& q) {
     return degrees;
 }
 
+glm::vec3 shownEulerDegrees(const glm::quat& q) {
+    if (const std::optional<glm::vec3> exact = exactEulerDegrees(q)) return *exact;
+    glm::vec3 degrees = glm::degrees(glm::eulerAngles(q));
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(degrees[i]) < 1e-3f) degrees[i] = 0.0f; // (also -0: +0)
+    return degrees;
+}
+
 } // namespace rmsc

@@ -112,8 +112,7 @@ bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float
     }
     // The degrees the file has (or would write) where there are such, so what was typed shows
     // and a value typed here is saved as typed; glm's extraction (the same convention) else.
-    glm::vec3 euler =
-        exactEulerDegrees(t.rotation).value_or(glm::degrees(glm::eulerAngles(t.rotation)));
+    glm::vec3 euler = shownEulerDegrees(t.rotation);
     if (numberField("rotation", &euler.x, 3, 0.5f, closedRange(-360.0, 360.0, Unit::Degrees),
                     "Turns about x, then y, then z (Euler angles; the file keeps them where short "
                     "ones give exactly this rotation, else a quaternion).",

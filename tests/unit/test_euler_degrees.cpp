@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace rmsc;
 
 TEST(EulerDegrees, ShortDegreesComeBackExactlyAndOthersNot) {
@@ -28,4 +30,26 @@ TEST(EulerDegrees, ShortDegreesComeBackExactlyAndOthersNot) {
     // A rotation no short degrees give: none.
     EXPECT_FALSE(exactEulerDegrees(glm::normalize(glm::quat(0.9f, 0.1f, 0.2f, 0.3f))));
     EXPECT_EQ(exactEulerDegrees(glm::quat(1, 0, 0, 0)), glm::vec3(0.0f));
+}
+
+// A rotation without short degrees (a gizmo's turn) shows glm's angles, its float noise as 0: a
+// field read "-0.0°" where nothing was turned. A small angle that is not noise stays.
+TEST(EulerDegrees, ShownDegreesShowNoiseAsZero) {
+    const glm::quat turned =
+        glm::angleAxis(0.3f, glm::vec3(0, 1, 0)) * glm::angleAxis(-1e-7f, glm::vec3(1, 0, 0));
+    ASSERT_FALSE(exactEulerDegrees(turned));
+    const glm::vec3 raw = glm::degrees(glm::eulerAngles(turned));
+    ASSERT_TRUE(raw.x < 0.0f || std::signbit(raw.x) || raw.z < 0.0f || std::signbit(raw.z))
+        << "the case this test is about: glm gives a negative x or z";
+    const glm::vec3 shown = shownEulerDegrees(turned);
+    EXPECT_EQ(shown.x, 0.0f);
+    EXPECT_FALSE(std::signbit(shown.x));
+    EXPECT_EQ(shown.z, 0.0f);
+    EXPECT_FALSE(std::signbit(shown.z));
+    EXPECT_NEAR(shown.y, 17.188734f, 1e-4f);
+    const glm::quat small = glm::angleAxis(0.3f, glm::vec3(0, 1, 0)) *
+                            glm::angleAxis(glm::radians(0.04f), glm::vec3(1, 0, 0));
+    EXPECT_NEAR(shownEulerDegrees(small).x, 0.04f, 1e-4f);
+    // Short degrees are shown as typed.
+    EXPECT_EQ(shownEulerDegrees(eulerDegreesToQuaternion({0, 30, 0})), glm::vec3(0, 30, 0));
 }
