@@ -27,7 +27,7 @@ glm::quat eulerDegreesToQuaternion(glm::vec3 degrees) {
 // (-sin y, cos y sin x, cos y cos x), column 0 is cos y (cos z, sin z, .). At y = +-90 degrees
 // only x -+ z is defined: z is taken as 0 and x read from column 1, (sin(x - z), cos(x - z), 0)
 // at +90, (-sin(x + z), cos(x + z), 0) at -90. (glm is column-major: R[column][row].)
-std::optional<glm::vec3> exactEulerDegrees(const glm::quat& q) {
+glm::vec3 eulerDegrees(const glm::quat& q) {
     const glm::mat3 r = glm::mat3_cast(q);
     const float cosY = std::hypot(r[0][0], r[0][1]);
     glm::vec3 radians(0.0f, std::atan2(-r[0][2], cosY), 0.0f);
@@ -37,21 +37,32 @@ std::optional<glm::vec3> exactEulerDegrees(const glm::quat& q) {
     } else {
         radians.x = std::atan2(r[0][2] < 0.0f ? r[1][0] : -r[1][0], r[1][1]);
     }
-    glm::vec3 degrees = glm::degrees(radians);
-    // The extraction's rounding leaves an angle some ulps off, and a zero angle near 0, not at it
-    // (the check below keeps what is not exact from being written).
+    return glm::degrees(radians);
+}
+
+namespace {
+
+// The extraction's rounding leaves a zero angle near 0, not at it (and may give -0).
+glm::vec3 withoutNoise(glm::vec3 degrees) {
     for (int i = 0; i < 3; ++i)
-        degrees[i] = std::abs(degrees[i]) < 1e-3f ? 0.0f : nearestShortDecimal(degrees[i], 64);
+        if (std::abs(degrees[i]) < 1e-3f) degrees[i] = 0.0f;
+    return degrees;
+}
+
+} // namespace
+
+std::optional<glm::vec3> exactEulerDegrees(const glm::quat& q) {
+    glm::vec3 degrees = withoutNoise(eulerDegrees(q));
+    // It also leaves an angle some ulps off (the check below keeps what is not exact from being
+    // written).
+    for (int i = 0; i < 3; ++i)
+        if (degrees[i] != 0.0f) degrees[i] = nearestShortDecimal(degrees[i], 64);
     if (eulerDegreesToQuaternion(degrees) != q) return std::nullopt;
     return degrees;
 }
 
 glm::vec3 shownEulerDegrees(const glm::quat& q) {
-    if (const std::optional<glm::vec3> exact = exactEulerDegrees(q)) return *exact;
-    glm::vec3 degrees = glm::degrees(glm::eulerAngles(q));
-    for (int i = 0; i < 3; ++i)
-        if (std::abs(degrees[i]) < 1e-3f) degrees[i] = 0.0f; // (also -0: +0)
-    return degrees;
+    return exactEulerDegrees(q).value_or(withoutNoise(eulerDegrees(q)));
 }
 
 } // namespace rmsc

@@ -111,7 +111,7 @@ bool editTransform(Transform& t, bool world, const glm::mat4& parentWorld, float
         changed = true;
     }
     // The degrees the file has (or would write) where there are such, so what was typed shows
-    // and a value typed here is saved as typed; glm's extraction (the same convention) else.
+    // and a value typed here is saved as typed (shownEulerDegrees).
     glm::vec3 euler = shownEulerDegrees(t.rotation);
     if (numberField("rotation", &euler.x, 3, 0.5f, closedRange(-360.0, 360.0, Unit::Degrees),
                     "Turns about x, then y, then z (Euler angles; the file keeps them where short "
