@@ -37,7 +37,7 @@ std::optional<DisplayPass> DisplayPass::create(const ShaderFiles& files, std::st
 }
 
 void DisplayPass::draw(const DisplayInput& input) const {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, input.framebuffer);
     glViewport(input.x, input.y, input.width, input.height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);

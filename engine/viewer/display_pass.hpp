@@ -22,6 +22,7 @@ constexpr int kOutlinedRanges = 32;
 
 struct DisplayInput {
     const FrameTargets* frame = nullptr;
+    GLuint framebuffer = 0; // drawn into (0: the window's)
     ViewMode mode = ViewMode::Color;
     // Ids [first, last) to outline, one range per selected object (kOutlinedRanges at most).
     std::vector<std::pair<unsigned, unsigned>> selected;
@@ -34,7 +35,7 @@ struct DisplayInput {
 class DisplayPass {
   public:
     static std::optional<DisplayPass> create(const ShaderFiles& files, std::string& error);
-    void draw(const DisplayInput& input) const; // into the default framebuffer
+    void draw(const DisplayInput& input) const; // into input.framebuffer
 
   private:
     // One program per view mode, with and without the outline: llvmpipe runs the untaken

@@ -30,7 +30,7 @@ namespace rmsc::app {
 Viewer::Viewer(const ViewerOptions& options, std::unique_ptr<Window> window,
                std::optional<Script> script)
     : options_(options), window_(std::move(window)), script_(std::move(script)),
-      start_(std::chrono::steady_clock::now()) {
+      start_(std::chrono::steady_clock::now()), gpu_(*window_) {
     view_.adaptive.targetMilliseconds = options_.targetMilliseconds;
     files_.recentFile = editor::recentFilesPath();
     loadRecentFiles(files_, messages_);
@@ -78,7 +78,7 @@ int Viewer::run() {
         drawUi();
         commitFinishedEdits();
         pollFiles();
-        updateView(actions.waitShaders, !actions.windowShots.empty());
+        updateView(actions.waitShaders, actions.waitView, !actions.windowShots.empty());
 
         ImGui::Render();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -124,15 +124,24 @@ int Viewer::run() {
 ScriptActions Viewer::readInput() {
     input_.beginFrame();
     if (script_) {
-        glfwPollEvents();
-        if (scriptHoldSince_ >= 0.0 &&
-            (scriptWaitsForExport_ ? !export_.job.running() : gpu_.refined()))
+        // While it waits for the refined view, as a person's frames do (below): the next
+        // picture wakes it.
+        if (scriptHoldSince_ >= 0.0 && gpu_.pictureComing())
+            glfwWaitEventsTimeout(0.25);
+        else
+            glfwPollEvents();
+        // The frame that sees the wait end plays nothing: the render thread's refined picture
+        // arrives between frames, and this frame shows it (and logs it) before the next input.
+        const bool held = scriptHoldSince_ >= 0.0;
+        if (held && (scriptWaitsForExport_ ? !export_.job.running() : gpu_.refined()))
             scriptHoldSince_ = -1.0;
-        if (scriptHoldSince_ < 0.0)
-            playScriptFrame(*script_, scriptFrame_++, glfwGetTime(), queue_, scriptMods_);
-    } else if (queue_.empty() && gpu_.refined() && !ImGui::IsAnyItemActive() && !gesture_.active &&
-               !gizmo_.dragging() && !inspector_.playback.playing) {
-        glfwWaitEventsTimeout(0.25); // idle: wake for input or the file poll
+        if (!held) playScriptFrame(*script_, scriptFrame_++, glfwGetTime(), queue_, scriptMods_);
+    } else if (queue_.empty() && !ImGui::IsAnyItemActive() && !gesture_.active &&
+               !gizmo_.dragging() && !inspector_.playback.playing &&
+               (gpu_.refined() || gpu_.pictureComing())) {
+        // Idle, or the render thread refines the view on its own and wakes the loop with each
+        // band: wake for input, the next band, or the file poll.
+        glfwWaitEventsTimeout(0.25);
     } else {
         glfwPollEvents();
     }
@@ -252,28 +261,29 @@ void Viewer::pollFiles() {
     if (!shaderWatcher_.path().empty() && shaderWatcher_.changed()) loadShaders(false);
 }
 
-void Viewer::updateView(bool waitForBuilds, bool refineAll) {
+void Viewer::updateView(bool waitForBuilds, bool waitForView, bool refineAll) {
     const editor::Document& document = session_.document;
-    const auto sceneStart = std::chrono::steady_clock::now();
-    gpu_.updateScene(document.scene(), document.revision(), messages_.sceneError, waitForBuilds);
-    gpu_.chooseSdfMap(document.scene(), document.selection, waitForBuilds, frameNumber_,
-                      messages_.sceneError);
-    if (!waitForBuilds)
-        recordSceneWork(
-            stats_, frameNumber_,
-            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - sceneStart)
-                .count());
+    const auto start = std::chrono::steady_clock::now();
     int ww = 0, wh = 0, fw = 0, fh = 0;
     window_->windowSize(ww, wh);
     window_->framebufferSize(fw, fh);
-    // What the frame leaves for rendering the view: the target less what the rest of the
-    // frames takes (restMilliseconds_), at least a quarter of the target.
-    const float target = view_.adaptive.targetMilliseconds;
-    const float rest = std::max(0.0f, frameMilliseconds_ - gpu_.frameRenderMilliseconds());
-    restMilliseconds_ = std::max(rest, 0.9f * restMilliseconds_);
-    const float budget = std::clamp(target - restMilliseconds_, 0.25f * target, target);
-    gpu_.render(viewInput(), viewportPixels(layout_.viewport, ww, wh, fw, fh), view_.adaptive,
-                budget, refineAll);
+    const ViewportPixels viewport = viewportPixels(layout_.viewport, ww, wh, fw, fh);
+    ViewFrameRequest request;
+    request.view = viewInput();
+    request.live = editor::selectionLiveRange(document.scene(), document.selection);
+    request.width = viewport.width;
+    request.height = viewport.height;
+    request.adaptive = view_.adaptive;
+    request.waitForBuilds = waitForBuilds;
+    request.refineAll = refineAll;
+    request.waitForView = waitForView;
+    request.frameNumber = frameNumber_;
+    gpu_.update(document.scene(), request, viewport, messages_.sceneError);
+    if (!waitForBuilds && !waitForView && !refineAll)
+        recordSceneWork(
+            stats_, frameNumber_,
+            std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
 }
 
 int Viewer::writeScriptShots(const ScriptActions& actions) {
@@ -337,7 +347,8 @@ ViewInput Viewer::viewInput() const {
     const editor::Document& document = session_.document;
     ViewInput shown;
     shown.camera = session_.viewCamera();
-    shown.scene = &document.scene();
+    shown.render = document.scene().render;
+    shown.lights = document.scene().lights;
     shown.revision = document.revision();
     // Outlined by the ids of the scene drawn: after a structural edit whose map is not ready
     // yet, the picture's ids are the old scene's, where the selection's would outline others.

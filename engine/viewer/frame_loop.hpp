@@ -24,7 +24,7 @@
 #include "panel_layout.hpp"
 #include "replay_script.hpp"
 #include "scene_files.hpp"
-#include "view_renderer.hpp"
+#include "view_render_thread.hpp"
 #include "view_settings.hpp"
 #include "viewer/viewer.hpp"
 #include "viewer_commands.hpp"
@@ -58,8 +58,10 @@ class Viewer {
     void carryOut(ViewerCommands& commands);
     void commitFinishedEdits(); // once no widget or gesture is changing the scene
     void pollFiles();           // recovery file, scene file and shaders, every second
-    // The scene to the GPU, the SDF map, the view (the whole of it now with `refineAll`).
-    void updateView(bool waitForBuilds, bool refineAll);
+    // The scene to the GPU, the SDF map, the view (the whole of it now with `refineAll`), on the
+    // render thread: waited for with `waitForBuilds` (and the background builds), `waitForView`
+    // or `refineAll`.
+    void updateView(bool waitForBuilds, bool waitForView, bool refineAll);
     int writeScriptShots(const ScriptActions& actions); // returns how many failed
     bool loadShaders(bool initial);
     ViewInput viewInput() const;         // what the view shows this frame
@@ -84,9 +86,6 @@ class Viewer {
     bool scriptWaitsForExport_ = false; // the wait is for the export, not the refining
     int frameNumber_ = 0;
     float frameMilliseconds_ = 0.0f;
-    // What frames spend besides rendering the scene (the panels, the display, the swap): the
-    // last frame's, or a higher one seen lately (it falls by a tenth a frame).
-    float restMilliseconds_ = 0.0f;
     FrameStats stats_;
     std::chrono::steady_clock::time_point start_;
     double lastPoll_ = 0.0; // when the files were last looked at
@@ -105,7 +104,7 @@ class Viewer {
     AddSearchMenu addSearch_;
     bool shortcutSheet_ = false; // the sheet of every shortcut is shown
     CameraDrags cameraDrags_;
-    ViewRenderer gpu_; // after window_: goes first, while its context exists
+    ViewRenderThread gpu_; // after window_: goes first, while its context exists
 };
 
 } // namespace rmsc::app

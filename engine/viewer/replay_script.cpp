@@ -102,10 +102,11 @@ std::optional<Script> parseScript(const std::string& text, const std::string& fi
                            : verb == "screenshot" ? K::Screenshot
                                                   : K::WindowShot;
             script.events.push_back({frame, kind, 0, {}, rest, lineNumber});
-        } else if (verb == "quit" || verb == "wait-shaders" || verb == "wait-refined" ||
-                   verb == "wait-export") {
+        } else if (verb == "quit" || verb == "wait-shaders" || verb == "wait-view" ||
+                   verb == "wait-refined" || verb == "wait-export") {
             const K kind = verb == "quit"           ? K::Quit
                            : verb == "wait-shaders" ? K::WaitShaders
+                           : verb == "wait-view"    ? K::WaitView
                            : verb == "wait-export"  ? K::WaitExport
                                                     : K::WaitRefined;
             script.events.push_back({frame, kind, 0, {}, {}, lineNumber});
@@ -198,6 +199,9 @@ ScriptActions scriptActions(const Script& script, const std::vector<editor::Inpu
             break;
         case K::WaitShaders:
             actions.waitShaders = true;
+            break;
+        case K::WaitView:
+            actions.waitView = true;
             break;
         case K::WaitRefined:
             actions.waitRefined = true;

@@ -17,6 +17,8 @@
 //   FRAME window-shot PATH    the whole window with the editor panels, as PNG
 //   FRAME wait-shaders        wait until the shaders being built in the background are built
 //                             and in use (the view is drawn with them from this frame on)
+//   FRAME wait-view           wait until the render thread has drawn this frame's view (with
+//                             the best map ready now: nothing built is waited for)
 //   FRAME wait-refined        hold the script until the view is fully refined (its frame
 //                             count stops meanwhile; the viewer draws on)
 //   FRAME wait-export         hold the script until the export running (File > Export) ends
@@ -51,6 +53,7 @@ struct ScriptEvent {
         Screenshot,
         WindowShot,
         WaitShaders,
+        WaitView,
         WaitRefined,
         WaitExport,
         Quit
@@ -76,6 +79,7 @@ struct ScriptActions {
     std::vector<std::string> screenshots;
     std::vector<std::string> windowShots;
     bool waitShaders = false;
+    bool waitView = false;
     bool waitRefined = false;
     bool waitExport = false;
     bool quit = false;

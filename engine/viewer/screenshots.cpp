@@ -9,7 +9,7 @@
 
 namespace rmsc::app {
 
-bool writeViewShot(ViewRenderer& renderer, const ViewInput& view, const Rect& viewport,
+bool writeViewShot(ViewRenderThread& renderer, const ViewInput& view, const Rect& viewport,
                    const Window& window, const std::string& path, std::string& error) {
     int ww = 0, wh = 0, fw = 0, fh = 0;
     window.windowSize(ww, wh);

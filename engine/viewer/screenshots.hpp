@@ -3,7 +3,7 @@
 #pragma once
 
 #include "panel_layout.hpp"
-#include "view_renderer.hpp"
+#include "view_render_thread.hpp"
 #include "window.hpp"
 
 #include <filesystem>
@@ -13,7 +13,7 @@ namespace rmsc::app {
 
 // The view in `viewport` (window pixels) at the framebuffer's resolution. False with `error`
 // when nothing is rendered or the file cannot be written.
-bool writeViewShot(ViewRenderer& renderer, const ViewInput& view, const Rect& viewport,
+bool writeViewShot(ViewRenderThread& renderer, const ViewInput& view, const Rect& viewport,
                    const Window& window, const std::string& path, std::string& error);
 // The window's back buffer as it is before the swap: the view with the panels drawn over it.
 bool writeWindowShot(const Window& window, const std::string& path, std::string& error);

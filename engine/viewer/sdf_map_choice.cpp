@@ -9,8 +9,8 @@
 
 namespace rmsc::app {
 
-void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& selection,
-                                bool waitForBuilds, int frameNumber, std::string& sceneError) {
+void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, int frameNumber,
+                                std::optional<std::string>& sceneError) {
     if (!renderer_ || !prepared_) return;
     if (warmer_) {
         if (waitForBuilds) warmer_->waitUntilIdle();
@@ -18,7 +18,6 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
         if (!error.empty()) std::fprintf(stderr, "rmsc view: %s\n", error.c_str());
     }
     updateCells(frameNumber, waitForBuilds);
-    const SdfLiveRange live = editor::selectionLiveRange(scene, selection);
     const std::size_t built = warmer_ ? warmer_->finishedCount() : 0;
     if (choiceRevision_ == uploadedRevision_ && choiceLive_.first == live.first &&
         choiceLive_.last == live.last && choiceBuilt_ == built && choiceCells_ == cellGridRevision_)
@@ -27,9 +26,10 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
     choiceLive_ = live;
     choiceBuilt_ = built;
     choiceCells_ = cellGridRevision_;
-    // Without a warmer, or for the first picture, every map is built here when it is drawn.
+    // Without a warmer, or for the first picture, every map is built here (on the render thread)
+    // when it is drawn.
     const bool first = !gpuScene_;
-    if (first) choiceRevision_ = 0; // choose again next frame: the other maps build meanwhile
+    if (first) choiceRevision_ = 0; // choose again next step: the other maps build meanwhile
     // A scene drawn with the cells map waits for its cells with the last picture (the
     // interpreter would take seconds a frame on such a scene).
     const bool cellsPending = cellsRequested_ == uploadedRevision_ &&
@@ -80,7 +80,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
         sceneChanged_ = false;
         sceneError =
             "The scene's shaders do not build (showing the last scene that did):\n" + error;
-        std::fprintf(stderr, "rmsc view: %s\n", sceneError.c_str());
+        std::fprintf(stderr, "rmsc view: %s\n", sceneError->c_str());
         return;
     }
     const double compileMs = renderer_->lastCompileMs();
@@ -106,7 +106,7 @@ void ViewRenderer::chooseSdfMap(const Scene& scene, const editor::Selection& sel
                                std::to_string(int(warmer_->buildMs(maps.draw))) + " ms, " +
                                std::to_string(int(compileMs)) + " ms to switch")
                                   .c_str()
-                 : compileMs > 0 ? "built here"
+                 : compileMs > 0 ? "built on the render thread"
                                  : "built before");
     drawnMap_ = maps.kind;
 }

@@ -2,7 +2,6 @@
 // capturing it (see view_renderer.hpp; the SDF map choice is sdf_map_choice.cpp).
 #include "view_renderer.hpp"
 
-#include "editor_file_source.hpp"
 #include "render/frame.hpp"
 #include "render/readback.hpp"
 #include "sdf/compiler.hpp"
@@ -13,18 +12,8 @@
 #include <cstdio>
 
 namespace rmsc::app {
-namespace {
 
-bool sameCamera(const Camera& a, const Camera& b) {
-    return a.position == b.position && a.target == b.target && a.up == b.up &&
-           a.fovYDegrees == b.fovYDegrees && a.nearPlane == b.nearPlane &&
-           a.farPlane == b.farPlane && a.projection == b.projection &&
-           a.orthoHeight == b.orthoHeight;
-}
-
-} // namespace
-
-ViewRenderer::ViewRenderer() : preparing_(editorFileSource()) {
+ViewRenderer::ViewRenderer(Window* warmerWindow) : warmerWindow_(warmerWindow) {
     lastRenderedCamera_.fovYDegrees = -1.0f; // no camera is the same: the first frame renders
 }
 
@@ -51,16 +40,10 @@ bool ViewRenderer::useShaders(ShaderFiles files, std::string& error) {
 }
 
 void ViewRenderer::startWarmer() {
-    warmer_.reset();     // waits for the build it is doing
-    choiceRevision_ = 0; // choose the map again
-    std::string error;
-    if (!warmerWindow_) warmerWindow_ = Window::openHidden(error);
-    if (!warmerWindow_) {
-        std::fprintf(stderr, "rmsc view: shaders are not built in the background (%s)\n",
-                     error.c_str());
-        return;
-    }
-    Window* context = warmerWindow_.get();
+    warmer_.reset();            // waits for the build it is doing
+    choiceRevision_ = 0;        // choose the map again
+    if (!warmerWindow_) return; // (the render thread said why)
+    Window* context = warmerWindow_;
     warmer_ = std::make_unique<ShaderWarmer>(
         [context](std::string&) -> std::function<void()> {
             context->makeCurrent();
@@ -69,32 +52,14 @@ void ViewRenderer::startWarmer() {
         shaderFiles_);
 }
 
-void ViewRenderer::updateScene(const Scene& scene, std::uint64_t revision, std::string& sceneError,
-                               bool wait) {
-    if (revision != preparingRevision_) {
-        preparingRevision_ = revision;
-        preparing_.request(revision, scene);
-        // Neither a large scene nor the first one is waited for: the window shows at once, the
-        // view once the scene is compiled (a later frame takes it).
-        const bool small = prepared_ && effectiveSdfStrategy(prepared_->sdf, SdfStrategy::Baked) !=
-                                            SdfStrategy::Cells;
-        wait = wait || small;
-    }
-    if (wait) preparing_.waitUntilIdle();
-    std::optional<editor::ScenePreparingResult> result = preparing_.take();
-    // (An older revision's: the newest is compiled next.)
-    if (!result || result->revision != preparingRevision_) return;
-    uploadedRevision_ = result->revision;
-    if (!result->prepared) {
-        sceneError =
-            "The scene does not compile (showing the last one that did):\n" + result->error;
-        return;
-    }
-    sceneWarning_ = std::move(result->warning);
-    boundedSdf_ = std::make_shared<const SdfProgram>(std::move(result->bounded));
+void ViewRenderer::takeScene(const CompiledScene& compiled) {
+    uploadedRevision_ = compiled.revision;
+    if (!compiled.prepared) return; // the last one that compiled stays
+    sceneWarning_ = compiled.warning;
+    boundedSdf_ = compiled.bounded;
     // Drawn as soon as chooseSdfMap finds a map for it ready, which after a structural edit may
     // take a background build: the picture on screen stays until then.
-    prepared_ = std::make_shared<const PreparedScene>(std::move(*result->prepared));
+    prepared_ = compiled.prepared;
     sceneChanged_ = true;
 }
 
@@ -107,21 +72,19 @@ float millisecondsSince(std::chrono::steady_clock::time_point t0) {
 
 } // namespace
 
-void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
+bool ViewRenderer::render(const ViewInput& view, GLuint framebuffer, int width, int height,
                           editor::AdaptiveScale& adaptive, float budgetMilliseconds,
                           bool refineAll) {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, viewport.framebufferWidth, viewport.framebufferHeight);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    frameRenderMilliseconds_ = 0.0f;
-    if (!renderer_ || !display_ || !gpuScene_) return;
+    if (!renderer_ || !display_ || !gpuScene_) return false;
 
-    const int vw = viewport.width, vh = viewport.height;
-    const bool changed = !full_ || full_->display.width != vw || full_->display.height != vh ||
-                         !sameCamera(view.camera, lastRenderedCamera_) ||
-                         lastRenderedRevision_ != view.revision;
+    const int vw = width, vh = height;
+    const bool changed = viewChanged(view, vw, vh);
+    const bool rendered = changed || !refinement_.done();
     if (changed) {
         if (!full_ || full_->display.width != vw || full_->display.height != vh)
             full_ = createFrameTargets(vw, vh);
@@ -134,7 +97,7 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
             refineAll ? 1.0f : adaptive.next(costMilliseconds_, costScale_, budgetMilliseconds);
         const auto t0 = std::chrono::steady_clock::now();
         if (scale >= 1.0f) { // the whole image fits the budget
-            renderer_->render(*gpuScene_, view.camera, view.scene->render, *full_);
+            renderer_->render(*gpuScene_, view.camera, view.render, *full_);
             shadowMapsDrawn_ = true;
             glFinish();
             lastRenderMilliseconds_ = millisecondsSince(t0);
@@ -142,13 +105,12 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
             ++refinements_;
             costMilliseconds_ = lastRenderMilliseconds_;
             costScale_ = 1.0f;
-            frameRenderMilliseconds_ = lastRenderMilliseconds_;
         } else {
             const int tw = std::max(1, int(std::lround(float(vw) * scale)));
             const int th = std::max(1, int(std::lround(float(vh) * scale)));
             if (!preview_ || preview_->display.width != tw || preview_->display.height != th)
                 preview_ = createFrameTargets(tw, th);
-            renderer_->render(*gpuScene_, view.camera, view.scene->render, *preview_);
+            renderer_->render(*gpuScene_, view.camera, view.render, *preview_);
             shadowMapsDrawn_ = true;
             glFinish();
             lastRenderMilliseconds_ = millisecondsSince(t0);
@@ -156,7 +118,6 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
             costMilliseconds_ = lastRenderMilliseconds_;
             costScale_ = scale;
             refinement_.restart(vh, lastRenderMilliseconds_ / (scale * scale));
-            frameRenderMilliseconds_ = lastRenderMilliseconds_;
         }
     } else if (!refinement_.done()) {
         const editor::RefineBand band = refinement_.nextBand(budgetMilliseconds, refineAll);
@@ -164,12 +125,11 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
         // for this scene; a new renderer has none yet.
         const RenderRows rows{band.begin, band.end, band.postBegin, band.postEnd, shadowMapsDrawn_};
         const auto t0 = std::chrono::steady_clock::now();
-        renderer_->render(*gpuScene_, view.camera, view.scene->render, *full_, &rows);
+        renderer_->render(*gpuScene_, view.camera, view.render, *full_, &rows);
         shadowMapsDrawn_ = true;
         glFinish();
         lastRenderMilliseconds_ = millisecondsSince(t0);
         refinement_.rendered(band, lastRenderMilliseconds_);
-        frameRenderMilliseconds_ = lastRenderMilliseconds_;
         if (refinement_.done()) ++refinements_;
     }
 
@@ -178,10 +138,9 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
     for (const editor::IdRange& range : view.selected)
         if (range.last > range.first) in.selected.emplace_back(range.first, range.last);
     in.nearPlane = view.camera.nearPlane;
-    in.farPlane = std::min(view.camera.farPlane, view.scene->render.maxDistance);
-    in.maxSteps = view.scene->render.maxSteps;
-    in.x = viewport.x;
-    in.y = viewport.y;
+    in.farPlane = std::min(view.camera.farPlane, view.render.maxDistance);
+    in.maxSteps = view.render.maxSteps;
+    in.framebuffer = framebuffer;
     in.width = vw;
     in.height = vh;
     if (!refinement_.done() && preview_) {
@@ -191,11 +150,12 @@ void ViewRenderer::render(const ViewInput& view, const ViewportPixels& viewport,
     }
     in.frame = &*full_;
     if (in.rows != 0) display_->draw(in);
-    if (view.showLights && !view.scene->lights.empty()) {
+    if (view.showLights && !view.lights.empty()) {
         const FrameCamera frame = makeFrameCamera(view.camera, vw, vh);
-        gizmos_->draw({0, viewport.x, viewport.y, vw, vh}, frame.viewProjection, view.scene->lights,
+        gizmos_->draw({framebuffer, 0, 0, vw, vh}, frame.viewProjection, view.lights,
                       view.selectedLight);
     }
+    return rendered;
 }
 
 std::optional<Pixels<std::uint8_t>> ViewRenderer::capture(const ViewInput& view, int width,
@@ -205,12 +165,26 @@ std::optional<Pixels<std::uint8_t>> ViewRenderer::capture(const ViewInput& view,
         return std::nullopt;
     }
     if (full_ && full_->display.width == width && full_->display.height == height &&
-        refinement_.done() && sameCamera(view.camera, lastRenderedCamera_) &&
+        refinement_.done() && view.camera == lastRenderedCamera_ &&
         lastRenderedRevision_ == view.revision)
         return readDisplayColor(*full_); // the view is already refined
     FrameTargets shot = createFrameTargets(width, height);
-    renderer_->render(*gpuScene_, view.camera, view.scene->render, shot);
+    renderer_->render(*gpuScene_, view.camera, view.render, shot);
     return readDisplayColor(shot);
+}
+
+bool ViewRenderer::viewChanged(const ViewInput& view, int width, int height) const {
+    return !full_ || full_->display.width != width || full_->display.height != height ||
+           view.camera != lastRenderedCamera_ || lastRenderedRevision_ != view.revision;
+}
+
+bool ViewRenderer::wouldRender(const ViewInput& view, int width, int height) const {
+    return renderer_ && display_ && gpuScene_ &&
+           (viewChanged(view, width, height) || !refinement_.done());
+}
+
+bool ViewRenderer::waitsForBackground() const {
+    return sceneChanged_ || (warmer_ && !warmer_->idle());
 }
 
 ViewStatus ViewRenderer::status() const {

@@ -1,9 +1,10 @@
 // The viewer's GPU side: the renderer and the display pass, the scene as uploaded, the choice of
 // the SDF map it is drawn with (editor/editing_map.hpp: the best one that is ready, while the
 // shader warmer builds better ones on a hidden window's context), and the view rendered at the
-// resolution the adaptive scale asks for. The frame loop hands it the document's scene each
-// frame; it hands back the picture, captures for screenshots, the newest compiled scene (for
-// picking) and what the overlay reports.
+// resolution the adaptive scale asks for. It runs on the view's render thread, on a context of
+// its own (view_render_thread.hpp, which the frame loop talks to): it takes the newest compiled
+// scene, draws the picture into the framebuffer it is given, captures for screenshots, and
+// reports the newest compiled scene (for picking) and what the overlay shows.
 #pragma once
 
 #include "core/image_io.hpp"
@@ -14,7 +15,6 @@
 #include "editor/editing_map.hpp"
 #include "editor/refinement.hpp"
 #include "editor/scene_edits.hpp"
-#include "editor/scene_preparing_job.hpp"
 #include "editor/selection.hpp"
 #include "panel_layout.hpp"
 #include "render/light_gizmo_pass.hpp"
@@ -31,15 +31,27 @@
 
 namespace rmsc::app {
 
-// What the view shows this frame.
+// What the view shows this frame (copies: the render thread reads it while the document
+// changes).
 struct ViewInput {
     Camera camera;
-    const Scene* scene = nullptr;          // the document's
+    RenderSettings render;                 // the document's
+    std::vector<Light> lights;             // the document's, for their markers
     std::uint64_t revision = 0;            // the document's: a new one renders again
     std::vector<editor::IdRange> selected; // object ids to outline, a range per selected object
     int selectedLight = -1;                // the light drawn in the selection colour
     bool showLights = true;                // draw the lights' markers over the view
     ViewMode mode = ViewMode::Color;
+};
+
+// A revision of the document's scene, compiled (the render thread's UI side takes it from the
+// compile job, editor/scene_preparing_job.hpp). Shared, never changed once made: picking, the
+// warmer and the cell pruning read it on their threads.
+struct CompiledScene {
+    std::uint64_t revision = 0;
+    std::shared_ptr<const PreparedScene> prepared; // null: it did not compile
+    std::shared_ptr<const SdfProgram> bounded;     // its SDF with the bounding hierarchy
+    std::string warning; // what it is drawn without (meshes that do not load)
 };
 
 // What the overlay says about the view.
@@ -60,7 +72,9 @@ struct ViewStatus {
 
 class ViewRenderer {
   public:
-    ViewRenderer();
+    // `warmerWindow`: the hidden window whose context the shader warmer draws on (opened on the
+    // UI thread, as windows must be), or null for none.
+    explicit ViewRenderer(Window* warmerWindow);
     ~ViewRenderer();
     ViewRenderer(const ViewRenderer&) = delete;
     ViewRenderer& operator=(const ViewRenderer&) = delete;
@@ -72,48 +86,48 @@ class ViewRenderer {
     bool useShaders(ShaderFiles files, std::string& error);
     bool hasShaders() const { return renderer_.has_value(); }
 
-    // Compiles `scene` when `revision` is one it has not seen, on preparing_'s worker: it waits
-    // for the result unless no scene was compiled yet or the last one is large (drawn with the
-    // cells map: its compile takes tens of milliseconds) and `wait` is false, in which case a
-    // later call takes it.
-    // The newest result is drawn once chooseSdfMap finds a map for it ready. A scene that does
-    // not compile sets `sceneError` and the last one that did stays.
-    void updateScene(const Scene& scene, std::uint64_t revision, std::string& sceneError,
-                     bool wait);
-    // Draws with the best SDF map that is ready for the uploaded scene and `selection` (whose
-    // subtree stays live), asking the warmer for better ones; `waitForBuilds` waits for them
-    // (replay scripts). Logs each switch with `frameNumber`. Sets `sceneError` when the chosen
-    // map's shaders do not build, clears it when a newer scene is drawn.
-    void chooseSdfMap(const Scene& scene, const editor::Selection& selection, bool waitForBuilds,
-                      int frameNumber, std::string& sceneError);
+    // Takes the newest compiled revision of the document's scene: drawn once chooseSdfMap finds
+    // a map for it ready. One that did not compile leaves the last one that did.
+    void takeScene(const CompiledScene& compiled);
+    // Draws with the best SDF map that is ready for the uploaded scene and the selection's
+    // `live` range (whose subtree stays live), asking the warmer for better ones;
+    // `waitForBuilds` waits for them (replay scripts). Logs each switch with `frameNumber`. Sets
+    // `sceneError` to the message about the scene when it changes: why the chosen map's shaders
+    // do not build, or, when a newer scene is drawn, what it is drawn without (often nothing).
+    void chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, int frameNumber,
+                      std::optional<std::string>& sceneError);
 
-    // Clears the window and draws the view into `viewport`: when the view changed, a quick
-    // render at the scale `adaptive` chooses for `budgetMilliseconds` (the whole image when it
-    // fits); while it is not refined, the next band of the full-resolution image that fits the
-    // budget, shown over the quick render; else the last image. With `refineAll` (a replay
-    // script's window shot) the whole image is rendered now. The lights' markers are drawn over
-    // it every time.
-    void render(const ViewInput& view, const ViewportPixels& viewport,
+    // Clears `framebuffer` (`width` x `height` pixels) and draws the view into it: when the
+    // view changed, a quick render at the scale `adaptive` chooses for `budgetMilliseconds` (the
+    // whole image when it fits); while it is not refined, the next band of the full-resolution
+    // image that fits the budget, shown over the quick render; else the last image. With
+    // `refineAll` (a replay script's window shot) the whole image is rendered now. The lights'
+    // markers are drawn over it every time. True when it rendered the scene (a quick render or
+    // a band), false when it only drew the last image again.
+    bool render(const ViewInput& view, GLuint framebuffer, int width, int height,
                 editor::AdaptiveScale& adaptive, float budgetMilliseconds, bool refineAll);
-    // What the last render() spent rendering the scene (a quick render or a band; 0 when it
-    // only showed the last image): the rest of its frame is what the next frame's budget leaves.
-    float frameRenderMilliseconds() const { return frameRenderMilliseconds_; }
     // The view at `width` x `height` pixels and full resolution: the last render when it is
     // that, or a new render. nullopt with `error` when nothing is rendered yet.
     std::optional<Pixels<std::uint8_t>> capture(const ViewInput& view, int width, int height,
                                                 std::string& error);
 
-    // The newest scene that compiled (what picking casts rays at), or nullptr.
-    const PreparedScene* newestScene() const { return prepared_.get(); }
     // The scene the picture is drawn from (nullptr before the first): its object ids are the
     // id buffer's, which an edit's may not be until its map is ready.
-    const PreparedScene* drawnScene() const { return drawnScene_.get(); }
+    const std::shared_ptr<const PreparedScene>& drawnScene() const { return drawnScene_; }
     // The view shows the whole full-resolution image of what it was last asked to show:
     // nothing to do until something changes.
     bool refined() const { return full_ && refinement_.done(); }
+    // A picture is being refined: the next render() with the same view renders its next band.
+    bool refining() const { return gpuScene_ && full_ && !refinement_.done(); }
+    // render() with `view` would render the scene (not only draw the last image again).
+    bool wouldRender(const ViewInput& view, int width, int height) const;
+    // Something the view waits for comes from a worker: the newest scene's map or cells, or
+    // the maps being built. chooseSdfMap takes it once it is there.
+    bool waitsForBackground() const;
     ViewStatus status() const;
 
   private:
+    bool viewChanged(const ViewInput& view, int width, int height) const;
     void startWarmer();
     // Asks for the cells of the newest scene when it is drawn with the cells map, and takes
     // them once pruned (waiting for them with `wait`): cellGrid_ holds the newest.
@@ -126,8 +140,6 @@ class ViewRenderer {
     std::optional<GpuScene> gpuScene_; // what is drawn
     bool shadowMapsDrawn_ = false;     // renderer_'s shadow maps hold gpuScene_'s (its content
                                        // changes only with a new revision, which renders whole)
-    editor::ScenePreparingJob preparing_;
-    std::uint64_t preparingRevision_ = 0; // the revision last asked for
     // The last scene that compiled (the newest), its SDF without the bounding hierarchy
     // (generated code's), and the same SDF with it, what the interpreter runs. Never changed
     // once made: the warmer and the cell pruning share them with their threads.
@@ -147,7 +159,7 @@ class ViewRenderer {
     std::uint64_t uploadedRevision_ = 0;
     // The SDF map drawn: the best one that is ready; the warmer builds better ones on its
     // hidden window's context meanwhile.
-    std::unique_ptr<Window> warmerWindow_;
+    Window* warmerWindow_ = nullptr;
     std::unique_ptr<ShaderWarmer> warmer_; // after warmerWindow_: goes first
     editor::EditingMapKind drawnMap_ = editor::EditingMapKind::Buffer;
     // What the map choice was made for: the revision, the selection, the warmer's finished maps.
@@ -161,7 +173,6 @@ class ViewRenderer {
     editor::Refinement refinement_;
     float previewScale_ = 1.0f;
     float lastRenderMilliseconds_ = 0.0f;
-    float frameRenderMilliseconds_ = 0.0f;
     // The last quick (or whole) render's cost: at costScale_ it took costMilliseconds_. Only
     // those size the next quick render: the bands' cost per row leaves out what a render costs
     // whatever its size (the shadow maps, the passes' set-up).

@@ -51,13 +51,14 @@ std::unique_ptr<Window> Window::open(int width, int height, const std::string& t
     return std::unique_ptr<Window>(new Window(window));
 }
 
-std::unique_ptr<Window> Window::openHidden(std::string& error) {
+std::unique_ptr<Window> Window::openHidden(std::string& error, const Window* share) {
     if (openWindows == 0) {
         error = "open a window first";
         return nullptr;
     }
     glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    GLFWwindow* window = glfwCreateWindow(1, 1, "rmsc (hidden)", nullptr, nullptr);
+    GLFWwindow* window =
+        glfwCreateWindow(1, 1, "rmsc (hidden)", nullptr, share ? share->window_ : nullptr);
     glfwWindowHint(GLFW_VISIBLE, GLFW_TRUE);
     if (!window) {
         error = "cannot create a second OpenGL 4.5 core context: " + lastGlfwError();

@@ -17,8 +17,9 @@ class Window {
                                         std::string& error);
     // A hidden window whose GL 4.5 core context can be made current on another thread (for
     // background work such as render/shader_warmer.hpp); open() a window first. The context
-    // stays current on no thread.
-    static std::unique_ptr<Window> openHidden(std::string& error);
+    // stays current on no thread. With `share`, its context shares that window's objects
+    // (textures, buffers, sync objects), as the view's render thread does with the UI's.
+    static std::unique_ptr<Window> openHidden(std::string& error, const Window* share = nullptr);
     // Makes this window's context current on the calling thread; releaseCurrent() lets go.
     void makeCurrent();
     static void releaseCurrent();

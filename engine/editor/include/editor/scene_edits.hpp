@@ -76,6 +76,7 @@ Selection selectionForObjectId(const Scene& scene, std::uint32_t objectId);
 struct IdRange {
     std::uint32_t first = 0;
     std::uint32_t last = 0;
+    bool operator==(const IdRange&) const = default;
 };
 IdRange objectIdRange(const Scene& scene, const Selection& selection);
 // Every object has the same id in both scenes (the same meshes and the same SDF tree shape): an

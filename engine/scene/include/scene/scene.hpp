@@ -32,6 +32,8 @@ struct Camera {
     float farPlane = 200.0f;
     CameraProjection projection = CameraProjection::Perspective;
     float orthoHeight = 4.0f; // orthographic: the height of the view in world units
+
+    bool operator==(const Camera&) const = default;
 };
 
 // The sky: what rays that hit nothing see and what lights every surface as ambient light.

@@ -44,6 +44,7 @@ struct SdfLiveRange {
     std::uint32_t first = 1;
     std::uint32_t last = 0;
     bool contains(std::uint32_t id) const { return id >= first && id <= last; }
+    bool operator==(const SdfLiveRange&) const = default;
 };
 
 // GLSL of "generated/sdf_map.glsl" for `program` with effectiveSdfStrategy(program, strategy). The
