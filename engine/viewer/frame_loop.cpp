@@ -88,6 +88,7 @@ int Viewer::run() {
         failures += writeScriptShots(actions);
         if (actions.quit) requestClose(dialogs_, session_.document);
         window_->swapBuffers();
+        gpu_.frameDone();
         frameMilliseconds_ =
             std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - frameStart)
                 .count();

@@ -14,6 +14,13 @@ namespace rmsc::app {
 
 namespace {
 
+// While it refines, the thread wakes the UI for a band at most this often, and lets the frame it
+// woke finish before it starts the next band (at most kYield later): on a machine with few
+// cores a UI frame and a band slow each other down, and a frame per band made the refinement a
+// third slower (docs/performance.md, "UI frame time").
+constexpr std::chrono::milliseconds kBandWake{100};
+constexpr std::chrono::milliseconds kYield{40};
+
 // Asks for the same picture as `b` (its render settings and lights go with the revision; the
 // frame number only names it in the log).
 bool sameView(const ViewFrameRequest& a, const ViewFrameRequest& b) {
@@ -72,6 +79,8 @@ void ViewRenderThread::run() {
     threadWindow_->makeCurrent();
     std::optional<ViewFrameRequest> frame; // the last request: refining goes on with it
     std::optional<ViewFrameRequest> drawn; // the request of the last picture
+    std::chrono::steady_clock::time_point lastWake;
+    std::optional<std::uint64_t> wokeUi; // the UI's frames done when a band woke it
     for (;;) {
         std::uint64_t serial = 0;
         Job job = Job::None;
@@ -89,6 +98,16 @@ void ViewRenderThread::run() {
             else
                 changed_.wait(lock, asked);
             if (stopping_) break;
+            // The next band waits for the UI frame the last one woke (nothing else does).
+            if (wokeUi && !pending_ && (job_ == Job::None || jobTaken_) && refining_) {
+                const std::uint64_t woke = *wokeUi;
+                changed_.wait_for(lock, kYield, [this, woke] {
+                    return stopping_ || pending_.has_value() || (job_ != Job::None && !jobTaken_) ||
+                           uiFramesDone_ > woke;
+                });
+                if (stopping_) break;
+            }
+            wokeUi.reset();
             // A frame the UI posted before it asked for a job first: a capture shows the scene
             // that frame asked for.
             if (pending_) {
@@ -106,8 +125,18 @@ void ViewRenderThread::run() {
             runJob(job);
         } else {
             const bool news = !drawn || !sameView(*drawn, *frame);
-            if (step(*frame, serial, poll) || news)
-                glfwPostEmptyEvent(); // a UI waiting for input shows the new picture
+            const bool rendered = step(*frame, serial, poll);
+            // A UI waiting for input shows the new picture.
+            const auto now = std::chrono::steady_clock::now();
+            const bool band = rendered && !news && view_->refining();
+            if (news || (rendered && !band) || (band && now - lastWake >= kBandWake)) {
+                if (band) {
+                    std::lock_guard lock(mutex_);
+                    wokeUi = uiFramesDone_;
+                }
+                glfwPostEmptyEvent();
+                lastWake = now;
+            }
             drawn = frame;
         }
     }
@@ -359,6 +388,14 @@ void ViewRenderThread::update(const Scene& scene, const ViewFrameRequest& reques
     if (shown.shown) glDeleteSync(shown.shown);
     shown.shown = fence;
     shown.reading = false;
+}
+
+void ViewRenderThread::frameDone() {
+    {
+        std::lock_guard lock(mutex_);
+        ++uiFramesDone_;
+    }
+    changed_.notify_all();
 }
 
 bool ViewRenderThread::refined() const {

@@ -88,6 +88,9 @@ class ViewRenderThread {
     // first): its object ids are the id buffer's, which an edit's may not be until its map is
     // ready.
     const PreparedScene* drawnScene() const { return drawn_.get(); }
+    // The UI frame is on screen (after its swap): a band waiting for it starts.
+    void frameDone();
+
     // The picture shown is the whole full-resolution image of the newest request: nothing to
     // do until something changes.
     bool refined() const;
@@ -140,6 +143,7 @@ class ViewRenderThread {
     std::optional<CompiledScene> compiled_;   // the newest compiled scene not yet taken
     std::uint64_t posted_ = 0, done_ = 0;     // requests posted and finished
     int uiFrame_ = 0;                         // the UI's newest frame
+    std::uint64_t uiFramesDone_ = 0;          // frames the UI has swapped
     Job job_ = Job::None;                     // the job the UI waits for, while it does
     bool jobTaken_ = false, jobDone_ = false;
     ShaderFiles shaderFiles_; // for Job::Shaders
