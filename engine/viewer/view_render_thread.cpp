@@ -229,8 +229,11 @@ bool ViewRenderThread::step(const ViewFrameRequest& request, std::uint64_t seria
         frameNumber = uiFrame_; // the log names the UI frame this happens in
     }
     view_->chooseSdfMap(request.live, request.waitForBuilds, frameNumber, sceneError);
-    if (poll && !view_->wouldRender(request.view, request.width, request.height))
-        return false; // nothing new: the picture shown stays
+    if (poll && !view_->wouldRender(request.view, request.width, request.height)) {
+        // Nothing new to draw: the picture shown stays, and what the map choice said stays.
+        if (sceneError) publishSceneError(std::move(*sceneError));
+        return false;
+    }
     adaptive_.enabled = request.adaptive.enabled;
     adaptive_.targetMilliseconds = request.adaptive.targetMilliseconds;
     const int slot = drawSlot(request.width, request.height);
@@ -247,13 +250,16 @@ bool ViewRenderThread::step(const ViewFrameRequest& request, std::uint64_t seria
         refined_ = view_->refined();
         refining_ = view_->refining();
         drawnPublished_ = view_->drawnScene();
-        if (sceneError) {
-            sceneError_ = std::move(*sceneError);
-            ++sceneErrorStamp_;
-        }
     }
+    if (sceneError) publishSceneError(std::move(*sceneError));
     changed_.notify_all();
     return rendered;
+}
+
+void ViewRenderThread::publishSceneError(std::string message) {
+    std::lock_guard lock(mutex_);
+    sceneError_ = std::move(message);
+    ++sceneErrorStamp_;
 }
 
 void ViewRenderThread::waitForJob(Job job) {

@@ -122,6 +122,8 @@ class ViewRenderThread {
     // Returns whether it rendered the scene (else it only drew the last picture again). A
     // `poll` (no request asked for it) does nothing unless the view would render.
     bool step(const ViewFrameRequest& request, std::uint64_t serial, bool poll);
+    // Thread: what the UI's next update() sets its scene message to.
+    void publishSceneError(std::string message);
     // UI: posts `job` and waits for the thread to finish it.
     void waitForJob(Job job);
     int drawSlot(int width, int height); // thread: a slot to draw into, waited for
