@@ -140,8 +140,8 @@ ScriptActions Viewer::readInput() {
     } else if (queue_.empty() && !ImGui::IsAnyItemActive() && !gesture_.active &&
                !gizmo_.dragging() && !inspector_.playback.playing &&
                (gpu_.refined() || gpu_.pictureComing())) {
-        // Idle, or the render thread refines the view on its own and wakes the loop with each
-        // band: wake for input, the next band, or the file poll.
+        // Idle, or a picture is coming from the render thread, which wakes the loop when it is
+        // there: wake for input, the picture, or the file poll.
         glfwWaitEventsTimeout(0.25);
     } else {
         glfwPollEvents();

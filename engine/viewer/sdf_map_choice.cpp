@@ -19,8 +19,8 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
     }
     updateCells(frameNumber, waitForBuilds);
     const std::size_t built = warmer_ ? warmer_->finishedCount() : 0;
-    if (choiceRevision_ == uploadedRevision_ && choiceLive_.first == live.first &&
-        choiceLive_.last == live.last && choiceBuilt_ == built && choiceCells_ == cellGridRevision_)
+    if (choiceRevision_ == uploadedRevision_ && choiceLive_ == live && choiceBuilt_ == built &&
+        choiceCells_ == cellGridRevision_)
         return;
     choiceRevision_ = uploadedRevision_;
     choiceLive_ = live;

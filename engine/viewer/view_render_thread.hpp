@@ -6,14 +6,15 @@
 // buffer's creation (on llvmpipe, tens to hundreds of milliseconds each).
 //
 // A UI frame posts a request (the camera, the selection, the document's revision) when it asks
-// for another picture or the thread has work to take up; a newer request replaces one not yet
-// taken. The thread takes the newest, does one step of the view
-// with it (a quick render or a band of the refinement, as ViewRenderer::render) and publishes
-// the picture, which the next UI frame shows. While the picture is not refined it goes on with
-// the last request without waiting for another, and wakes the UI with each band, so the UI
-// need not draw frames only to move the refinement on (pictureComing()). A request that waits (a
-// replay script's wait for the shaders or a whole image, a screenshot, new shaders) blocks the UI
-// until its step is done.
+// for another picture or brings a newly compiled scene; a newer request replaces one not yet
+// taken. The thread takes the newest, does one step of the view with it (a quick render or a
+// band of the refinement, as ViewRenderer::render) and publishes the picture, which the next UI
+// frame shows. While the picture is not refined it goes on with the last request without waiting
+// for another, and while the view waits for a worker (a map being built, cells being pruned) it
+// looks for the result on its own; it wakes the UI when it has a new picture (for the bands of a
+// refinement at most every 100 ms), so the UI need not draw frames only to move it on
+// (pictureComing()). A request that waits (a replay script's wait for the shaders, its view or a
+// whole image, a screenshot, new shaders) blocks the UI until its step is done.
 //
 // The pictures go through three textures: the thread draws into one that is neither shown last
 // nor still being read by the UI, and waits for the UI's fence on it before drawing over it.
@@ -59,9 +60,6 @@ class ViewRenderThread {
     ViewRenderThread(const ViewRenderThread&) = delete;
     ViewRenderThread& operator=(const ViewRenderThread&) = delete;
 
-    // Why the thread has no context (no second GL 4.5 context), empty when it has one.
-    const std::string& startError() const { return startError_; }
-
     // Builds the renderer from `files` on the thread (waits for it); see
     // ViewRenderer::useShaders.
     bool useShaders(ShaderFiles files, std::string& error);
@@ -72,7 +70,8 @@ class ViewRenderThread {
     // no scene was compiled yet or the last one is large (drawn with the cells map: its compile
     // takes tens of milliseconds, every frame of a drag), in which case a later frame takes it.
     // Then posts `request` and shows the newest finished picture in `viewport`, after clearing
-    // the window. Waits for this request's step when it waits for builds or refines all.
+    // the window. Waits for this request's step when it waits for builds or its view, or refines
+    // all.
     // `sceneError` is set when the scene does not compile, and set or cleared as the thread's
     // steps find.
     void update(const Scene& scene, const ViewFrameRequest& request, const ViewportPixels& viewport,
@@ -131,8 +130,7 @@ class ViewRenderThread {
     std::unique_ptr<Window> threadWindow_;
     std::unique_ptr<Window> warmerWindow_;
     std::string startError_;
-    // Made on the UI thread (its compile job takes requests there: requestScene), used and
-    // destroyed on the render thread.
+    // Made on the UI thread (no GL there), used and destroyed on the render thread.
     std::unique_ptr<ViewRenderer> view_;
     editor::AdaptiveScale adaptive_; // the thread's
     editor::ScenePreparingJob preparing_;

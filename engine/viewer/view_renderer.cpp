@@ -84,7 +84,7 @@ bool ViewRenderer::render(const ViewInput& view, GLuint framebuffer, int width, 
 
     const int vw = width, vh = height;
     const bool changed = viewChanged(view, vw, vh);
-    const bool rendered = changed || !refinement_.done();
+    const bool rendered = wouldRender(view, vw, vh);
     if (changed) {
         if (!full_ || full_->display.width != vw || full_->display.height != vh)
             full_ = createFrameTargets(vw, vh);
