@@ -15,6 +15,19 @@ constexpr std::size_t kMaxRemembered = 32;
 // The warmer's frame: big enough for every pass to run, small enough to cost nothing.
 constexpr int kWarmFrameSize = 8;
 
+// The scene's settings with its march ended where it starts and every other loop cut to one
+// turn. Step counts and distances are uniforms, so the programs are the ones the view draws
+// with; only their first draw's work goes. llvmpipe rasterizes the draws of all contexts in
+// one queue: the interpreter's full march of the 10,000-shape grid, even in this 8x8 frame,
+// held it 50 to 65 ms, and the UI's frame queued behind it waited as long.
+RenderSettings warmingSettings(RenderSettings settings) {
+    settings.maxSteps = 1;
+    settings.maxDistance = 1e-6f;
+    settings.shadows.steps = 1;
+    settings.ao.samples = std::min(settings.ao.samples, 1);
+    return settings;
+}
+
 } // namespace
 
 ShaderWarmer::ShaderWarmer(ContextBinder bindContext, ShaderFiles files)
@@ -139,7 +152,8 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
             noCells.code = scene->sdf.instructions;
             GpuScene gpu = uploadScene(*scene, SdfStrategy::Buffer, &noCells);
             gpu.sdfMap = sdfMap;
-            renderer->render(gpu, scene->scene.camera, scene->scene.render, *targets);
+            renderer->render(gpu, scene->scene.camera, warmingSettings(scene->scene.render),
+                             *targets);
             glFinish(); // the draws, where the driver finishes the programs
             // What the driver built is in its shader cache now; this context's own copy of it
             // (llvmpipe: the machine code, tens of megabytes for a few maps) is never drawn with.
