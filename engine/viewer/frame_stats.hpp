@@ -13,6 +13,8 @@
 namespace rmsc::app {
 
 struct FrameStats {
+    // The window's first frame, drawn before the window is shown (not a UI frame); < 0: none.
+    float openingMilliseconds = -1.0f;
     // The renderer's counts as last seen (ViewStatus::changes, ::refinements).
     int changes = 0, refinements = 0;
     // Since the last change: frames, their longest and their total milliseconds.
@@ -34,7 +36,7 @@ struct FrameStats {
     int longestSceneFrame = -1;
 };
 
-// Records one frame that took `milliseconds` and showed `status`; returns the log line when it
+// Records one UI frame that took `milliseconds` and showed `status`; returns the log line when it
 // completed a refinement. `now` and `lastInput` are in seconds (glfwGetTime).
 std::optional<std::string> recordFrame(FrameStats& stats, const ViewStatus& status, int frame,
                                        float milliseconds, float targetMilliseconds, double now,

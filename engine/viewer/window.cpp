@@ -33,7 +33,9 @@ std::unique_ptr<Window> Window::open(int width, int height, const std::string& t
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
     GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_TRUE);
     if (!window) {
         error = "cannot create a window with an OpenGL 4.5 core context: " + lastGlfwError();
         if (openWindows == 0) glfwTerminate();
@@ -66,6 +68,14 @@ std::unique_ptr<Window> Window::openHidden(std::string& error, const Window* sha
     }
     ++openWindows;
     return std::unique_ptr<Window>(new Window(window));
+}
+
+void Window::show() {
+    glfwShowWindow(window_);
+}
+
+bool Window::visible() const {
+    return glfwGetWindowAttrib(window_, GLFW_VISIBLE) == GLFW_TRUE;
 }
 
 void Window::makeCurrent() {

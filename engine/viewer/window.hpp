@@ -11,8 +11,9 @@ namespace rmsc {
 
 class Window {
   public:
-    // Opens a `width` x `height` window titled `title` and makes its context current. Returns
-    // nullptr with `error` saying why (no display, no GL 4.5 core) on failure.
+    // Opens a `width` x `height` window titled `title`, hidden until show(), and makes its
+    // context current. Returns nullptr with `error` saying why (no display, no GL 4.5 core) on
+    // failure.
     static std::unique_ptr<Window> open(int width, int height, const std::string& title,
                                         std::string& error);
     // A hidden window whose GL 4.5 core context can be made current on another thread (for
@@ -32,6 +33,8 @@ class Window {
     void setShouldClose(bool close);
     void setTitle(const std::string& title);
     void swapBuffers();
+    void show();
+    bool visible() const; // shown, not hidden (it may still be covered or minimised)
     // Size of the drawable in pixels, and of the window in screen coordinates.
     void framebufferSize(int& width, int& height) const;
     void windowSize(int& width, int& height) const;
