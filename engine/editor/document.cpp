@@ -45,7 +45,7 @@ void Document::commit() {
     history_.resize(position_); // a new edit drops the redo branch
     if (savedPosition_ > position_) savedPosition_ = std::numeric_limits<std::size_t>::max();
     history_.push_back({pendingLabel_, committed_, scene_, committedSelection_, selection,
-                        committedAlso_, alsoSelected});
+                        committedAlso_, alsoSelected, nextStepId_++});
     position_ = history_.size();
     committed_ = scene_;
     committedSelection_ = selection;
@@ -139,28 +139,55 @@ bool Document::save(std::string& error) {
 }
 
 bool Document::saveAs(const std::filesystem::path& path, std::string& error) {
-    commit();
-    namespace fs = std::filesystem;
-    Scene toWrite = scene_;
-    // Every path (meshes, textures, sky, proxies) is written relative to the new file's folder.
-    rebaseScenePaths(toWrite, fs::absolute(path).parent_path());
-    toWrite.file = path;
-    const std::string text = sceneToJson(toWrite);
-    Diagnostics problems;
-    if (!checkSceneText(text, path, problems)) {
-        error = "the scene is not valid, so nothing was written (" + path.string() +
-                " is unchanged):\n" + firstErrors(problems);
-        return false;
-    }
-    if (!saveTextFileAtomically(path, text, true, error)) return false;
-    scene_ = std::move(toWrite);
-    committed_ = scene_;
-    file_ = path;
-    savedPosition_ = position_;
+    const SceneSave save = saveOf(path);
+    if (!writeSceneSave(save, error)) return false;
+    saved(save);
     return true;
 }
 
+SceneSave Document::saveOf(const std::filesystem::path& path) {
+    commit();
+    SceneSave save;
+    save.scene = scene_;
+    // Every path (meshes, textures, sky, proxies) is written relative to the file's folder.
+    rebaseScenePaths(save.scene, std::filesystem::absolute(path).parent_path());
+    save.scene.file = path;
+    save.path = path;
+    save.document = resets_;
+    save.position = position_;
+    save.step = position_ > 0 ? history_[position_ - 1].id : 0;
+    return save;
+}
+
+void Document::saved(const SceneSave& save) {
+    if (save.document != resets_) return; // another scene since
+    const std::filesystem::path folder = std::filesystem::absolute(save.path).parent_path();
+    for (Scene* scene : {&scene_, &committed_}) {
+        rebaseScenePaths(*scene, folder);
+        scene->file = save.path;
+    }
+    file_ = save.path;
+    // Where the history stood, if it still holds that step there (an edit after an undo since
+    // drops it).
+    const bool stands =
+        save.position <= history_.size() &&
+        (save.position == 0 ? save.step == 0 : history_[save.position - 1].id == save.step);
+    savedPosition_ = stands ? save.position : std::numeric_limits<std::size_t>::max();
+}
+
+bool writeSceneSave(const SceneSave& save, std::string& error) {
+    const std::string text = sceneToJson(save.scene);
+    Diagnostics problems;
+    if (!checkSceneText(text, save.path, problems)) {
+        error = "the scene is not valid, so nothing was written (" + save.path.string() +
+                " is unchanged):\n" + firstErrors(problems);
+        return false;
+    }
+    return saveTextFileAtomically(save.path, text, true, error);
+}
+
 void Document::reset(Scene scene, std::filesystem::path file) {
+    ++resets_;
     scene_ = std::move(scene);
     committed_ = scene_;
     file_ = std::move(file);

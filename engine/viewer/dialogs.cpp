@@ -83,7 +83,9 @@ void drawUnsavedChangesDialog(Dialogs& dialogs, EditorSession& session, SceneFil
     if (!beginModal("Unsaved changes", dialogs.askClose)) return;
     ImGui::Text("The scene has unsaved changes.");
     if (ImGui::Button("Save")) {
+        // What follows (quitting, another scene) needs the file written: waited for here.
         saveScene(session, files, messages, dialogs);
+        finishSave(session.document, files, messages, true);
         if (!session.document.dirty()) goOnAfterDiscard(dialogs, session, files, messages);
         ImGui::CloseCurrentPopup();
     }
@@ -230,6 +232,7 @@ void Dialogs::askForFieldFile(FileField& field, const std::filesystem::path& sce
 
 void requestOpen(Dialogs& dialogs, const std::filesystem::path& path, EditorSession& session,
                  SceneFiles& files, Messages& messages) {
+    finishSave(session.document, files, messages, true);
     if (session.document.dirty()) {
         dialogs.askClose = true;
         dialogs.afterDiscard = AfterDiscard::Open;
@@ -239,11 +242,22 @@ void requestOpen(Dialogs& dialogs, const std::filesystem::path& path, EditorSess
     }
 }
 
-void requestClose(Dialogs& dialogs, const editor::Document& document) {
-    if (document.dirty())
+void requestClose(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Messages& messages) {
+    finishSave(session.document, files, messages, true);
+    if (session.document.dirty())
         dialogs.askClose = true;
     else
         dialogs.quitNow = true;
+}
+
+void requestNew(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Messages& messages) {
+    finishSave(session.document, files, messages, true);
+    if (session.document.dirty()) {
+        dialogs.askClose = true;
+        dialogs.afterDiscard = AfterDiscard::New;
+    } else {
+        newScene(session, files, messages);
+    }
 }
 
 void saveScene(EditorSession& session, SceneFiles& files, Messages& messages, Dialogs& dialogs) {

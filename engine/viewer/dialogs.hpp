@@ -48,9 +48,12 @@ struct Dialogs {
     void askForFieldFile(FileField& field, const std::filesystem::path& sceneFolder);
 };
 
-// Closes now, or asks first when there are unsaved changes.
-void requestClose(Dialogs& dialogs, const editor::Document& document);
-// Opens the scene file `path` now, or asks first when there are unsaved changes.
+// Closes now, or asks first when there are unsaved changes (after the save under way, if any,
+// is written: it may leave none).
+void requestClose(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Messages& messages);
+// A new scene now, or asks first when there are unsaved changes (the same).
+void requestNew(Dialogs& dialogs, EditorSession& session, SceneFiles& files, Messages& messages);
+// Opens the scene file `path` now, or asks first when there are unsaved changes (the same).
 void requestOpen(Dialogs& dialogs, const std::filesystem::path& path, EditorSession& session,
                  SceneFiles& files, Messages& messages);
 // Saves to the scene's file, or asks for one when it has none yet.

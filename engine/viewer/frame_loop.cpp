@@ -86,10 +86,10 @@ int Viewer::run() {
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         failures += writeScriptShots(actions);
-        if (actions.quit) requestClose(dialogs_, session_.document);
+        if (actions.quit) requestClose(dialogs_, session_, files_, messages_);
         // The window opens hidden and is shown with its first frame: that frame's one-time work
         // (Dear ImGui's font and program, the driver's first draw and first present into the
-        // window: 50 to 75 ms on llvmpipe) is done before anyone can see it or give it input.
+        // window: 50 to 90 ms on llvmpipe) is done before anyone can see it or give it input.
         // It is the window's opening, not a UI frame.
         const bool opening = !window_->visible();
         if (opening) window_->show();
@@ -125,6 +125,7 @@ int Viewer::run() {
     if (options_.stats)
         std::fprintf(stderr, "rmsc view: %s\n",
                      frameSummary(stats_, view_.adaptive.targetMilliseconds).c_str());
+    finishSave(session_.document, files_, messages_, true);
     if (!session_.document.dirty())
         removeRecoveryFile(files_, session_.document.file()); // closed cleanly
     return failures ? kExitSystem : kExitOk;
@@ -144,13 +145,18 @@ ScriptActions Viewer::readInput() {
         const bool held = scriptHoldSince_ >= 0.0;
         if (held && (scriptWaitsForExport_ ? !export_.job.running() : gpu_.refined()))
             scriptHoldSince_ = -1.0;
+        // A save started in the last frame is taken here, waited for if need be (between two
+        // frames: a frame's own work is what it measures), so a replay goes the same whatever
+        // the machine's speed.
+        finishSave(session_.document, files_, messages_, true);
         if (!held) playScriptFrame(*script_, scriptFrame_++, glfwGetTime(), queue_, scriptMods_);
     } else if (queue_.empty() && !ImGui::IsAnyItemActive() && !gesture_.active &&
                !gizmo_.dragging() && !inspector_.playback.playing &&
                (gpu_.refined() || gpu_.pictureComing())) {
         // Idle, or a picture is coming from the render thread, which wakes the loop when it is
-        // there: wake for input, the picture, or the file poll.
-        glfwWaitEventsTimeout(0.25);
+        // there: wake for input, the picture, or the file poll (soon while a save is written,
+        // to say it is done).
+        glfwWaitEventsTimeout(files_.save.underWay() ? 0.02 : 0.25);
     } else {
         glfwPollEvents();
     }
@@ -169,7 +175,7 @@ ScriptActions Viewer::readInput() {
     input_.finishEvents();
     if (window_->shouldClose()) {
         window_->setShouldClose(false);
-        requestClose(dialogs_, session_.document);
+        requestClose(dialogs_, session_, files_, messages_);
     }
     return actions;
 }
@@ -262,6 +268,7 @@ void Viewer::commitFinishedEdits() {
 }
 
 void Viewer::pollFiles() {
+    finishSave(session_.document, files_, messages_, false);
     const double t = now();
     if (t - lastPoll_ < 1.0) return;
     lastPoll_ = t;
@@ -287,12 +294,14 @@ void Viewer::updateView(bool waitForBuilds, bool waitForView, bool refineAll) {
     request.refineAll = refineAll;
     request.waitForView = waitForView;
     request.frameNumber = frameNumber_;
-    gpu_.update(document.scene(), request, viewport, messages_.sceneError);
+    const bool waitedForCompile =
+        gpu_.update(document.scene(), request, viewport, messages_.sceneError);
     if (!waitForBuilds && !waitForView && !refineAll)
         recordSceneWork(
             stats_, frameNumber_,
             std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - start)
-                .count());
+                .count(),
+            waitedForCompile);
 }
 
 int Viewer::writeScriptShots(const ScriptActions& actions) {

@@ -38,7 +38,8 @@ std::optional<std::string> recordFrame(FrameStats& stats, const ViewStatus& stat
     return std::string(line);
 }
 
-void recordSceneWork(FrameStats& stats, int frame, float milliseconds) {
+void recordSceneWork(FrameStats& stats, int frame, float milliseconds, bool waitedForCompile) {
+    if (waitedForCompile && stats.firstCompileWaitFrame < 0) stats.firstCompileWaitFrame = frame;
     if (milliseconds <= stats.longestSceneMilliseconds) return;
     stats.longestSceneMilliseconds = milliseconds;
     stats.longestSceneFrame = frame;
@@ -55,6 +56,12 @@ std::string frameSummary(const FrameStats& stats, float targetMilliseconds) {
                   stats.overTarget, targetMilliseconds, stats.longestSceneMilliseconds,
                   stats.longestSceneFrame);
     std::string summary(line);
+    if (stats.firstCompileWaitFrame >= 0)
+        std::snprintf(line, sizeof line, "; first wait for a compile: frame %d",
+                      stats.firstCompileWaitFrame);
+    else
+        std::snprintf(line, sizeof line, "; no wait for a compile");
+    summary += line;
     for (std::size_t i = 0; i < stats.overTargetFrames.size(); ++i) {
         std::snprintf(line, sizeof line, "%s frame %d %.1f ms", i == 0 ? "; over:" : ",",
                       stats.overTargetFrames[i].first, stats.overTargetFrames[i].second);

@@ -34,6 +34,9 @@ struct FrameStats {
     // cells, uploading it, building shaders it had to build there): work that blocks the frame.
     float longestSceneMilliseconds = 0.0f;
     int longestSceneFrame = -1;
+    // The first frame that waited for the scene's compile (a small scene's, after an edit; never
+    // the first frame, which draws on without it); -1: none.
+    int firstCompileWaitFrame = -1;
 };
 
 // Records one UI frame that took `milliseconds` and showed `status`; returns the log line when it
@@ -41,8 +44,9 @@ struct FrameStats {
 std::optional<std::string> recordFrame(FrameStats& stats, const ViewStatus& status, int frame,
                                        float milliseconds, float targetMilliseconds, double now,
                                        double lastInput);
-// Records that frame `frame` spent `milliseconds` on the scene (see longestSceneMilliseconds).
-void recordSceneWork(FrameStats& stats, int frame, float milliseconds);
+// Records that frame `frame` spent `milliseconds` on the scene (see longestSceneMilliseconds),
+// and whether it waited for the scene's compile.
+void recordSceneWork(FrameStats& stats, int frame, float milliseconds, bool waitedForCompile);
 // The line for every frame, at exit.
 std::string frameSummary(const FrameStats& stats, float targetMilliseconds);
 

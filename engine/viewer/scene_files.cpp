@@ -73,19 +73,32 @@ void newScene(EditorSession& session, SceneFiles& files, Messages& messages) {
 
 void saveSceneAs(const std::filesystem::path& path, editor::Document& document, SceneFiles& files,
                  Messages& messages) {
-    std::string error;
-    const std::filesystem::path previousFile = document.file();
-    if (!document.saveAs(path, error)) {
-        messages.fileError = "Save failed; your edits are kept in memory.\n" + error;
-        std::fprintf(stderr, "rmsc view: save failed: %s\n", error.c_str());
-        return;
+    finishSave(document, files, messages, true); // one at a time
+    files.savedFrom = document.file();
+    files.save.start(document.saveOf(path));
+}
+
+bool finishSave(editor::Document& document, SceneFiles& files, Messages& messages, bool wait) {
+    std::optional<editor::SaveOutcome> outcome = files.save.take(wait);
+    if (!outcome) return false;
+    const std::filesystem::path& path = outcome->save.path;
+    if (!outcome->written) {
+        messages.fileError = "Save failed; your edits are kept in memory.\n" + outcome->error;
+        std::fprintf(stderr, "rmsc view: save failed: %s\n", outcome->error.c_str());
+        return false;
     }
-    removeRecoveryFile(files, previousFile); // the edits are safe in the file now
-    removeRecoveryFile(files, path);
+    document.saved(outcome->save);
+    if (!document.dirty()) { // the edits are safe in the file now
+        removeRecoveryFile(files, files.savedFrom);
+        removeRecoveryFile(files, path);
+    } else {
+        files.recoveryRevision = 0; // the edits since: to the recovery file of the new path
+    }
     messages.fileError.clear();
     files.watcher = editor::FileWatcher(path); // our own write is not an external change
     rememberFile(files, path, messages);
     messages.notice("saved " + path.string());
+    return true;
 }
 
 void writeRecoveryFile(const editor::Document& document, SceneFiles& files, Messages& messages,
@@ -108,7 +121,8 @@ void removeRecoveryFile(SceneFiles& files, const std::filesystem::path& sceneFil
 }
 
 bool reloadChangedSceneFile(EditorSession& session, SceneFiles& files, Messages& messages) {
-    if (files.watcher.path().empty() || !files.watcher.changed()) return false;
+    if (files.save.underWay() || files.watcher.path().empty() || !files.watcher.changed())
+        return false;
     editor::Document& document = session.document;
     const std::filesystem::path& path = files.watcher.path();
     Diagnostics diagnostics;

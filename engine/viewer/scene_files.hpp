@@ -6,6 +6,7 @@
 
 #include "editor/file_watcher.hpp"
 #include "editor/recovery_job.hpp"
+#include "editor/save_job.hpp"
 #include "editor_session.hpp"
 #include "messages.hpp"
 
@@ -20,6 +21,8 @@ struct SceneFiles {
     std::uint64_t recoveryRevision = 0;        // document revision last given to the recovery file
     double lastRecoveryWrite = -1e9;           // seconds, on the clock `now` is given in
     editor::RecoveryJob recovery;              // writes it on a worker
+    editor::SaveJob save;                      // writes the scene file on a worker
+    std::filesystem::path savedFrom;           // the document's file when that save began
     std::filesystem::path recentFile;          // where the recent files are kept ("" = nowhere)
     std::vector<std::filesystem::path> recent; // newest first
 };
@@ -43,9 +46,15 @@ void openSceneFile(const std::filesystem::path& path, EditorSession& session, Sc
                    Messages& messages);
 // New: an empty scene without a file.
 void newScene(EditorSession& session, SceneFiles& files, Messages& messages);
-// Saves to `path` and removes the recovery files; a failed save keeps the edits and says why.
+// Starts saving to `path` on a worker (after the save under way, if any, is finished);
+// finishSave ends it. The edits go on meanwhile.
 void saveSceneAs(const std::filesystem::path& path, editor::Document& document, SceneFiles& files,
                  Messages& messages);
+// Ends the save under way once it is written (waiting for it with `wait`): the document is clean
+// where it was saved (editor::Document::saved) and, when nothing was edited since, the recovery
+// files go; the file is watched and remembered. A failed save keeps the edits and says why.
+// Returns true when a save ended here and succeeded.
+bool finishSave(editor::Document& document, SceneFiles& files, Messages& messages, bool wait);
 // Unsaved edits to the recovery file, at most every 5 seconds of `now`, on a worker; says in
 // `messages` when an earlier write failed.
 void writeRecoveryFile(const editor::Document& document, SceneFiles& files, Messages& messages,
@@ -53,7 +62,8 @@ void writeRecoveryFile(const editor::Document& document, SceneFiles& files, Mess
 // Removes the recovery file of `sceneFile`, after the write under way (none lands after it).
 void removeRecoveryFile(SceneFiles& files, const std::filesystem::path& sceneFile);
 // Reloads the scene file when it changed on disk (or opens it, when it did not open at start).
-// Returns true when it changed but there are unsaved edits: the user is to be asked.
+// Returns true when it changed but there are unsaved edits: the user is to be asked. Not while
+// a save is under way: its own write is no change.
 bool reloadChangedSceneFile(EditorSession& session, SceneFiles& files, Messages& messages);
 
 } // namespace rmsc::app

@@ -310,7 +310,7 @@ std::optional<Pixels<std::uint8_t>> ViewRenderThread::capture(const ViewInput& v
     return std::move(captured_);
 }
 
-void ViewRenderThread::update(const Scene& scene, const ViewFrameRequest& request,
+bool ViewRenderThread::update(const Scene& scene, const ViewFrameRequest& request,
                               const ViewportPixels& viewport, std::string& sceneError) {
     bool wait = request.waitForBuilds;
     if (request.view.revision != requestedRevision_) {
@@ -376,7 +376,7 @@ void ViewRenderThread::update(const Scene& scene, const ViewFrameRequest& reques
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (slot < 0) return;
+    if (slot < 0) return wait;
     Slot& shown = slots_[std::size_t(slot)];
     if (!shown.readFbo) shown.readFbo = gl::createFramebuffer();
     if (shown.readGeneration != generation) {
@@ -394,6 +394,7 @@ void ViewRenderThread::update(const Scene& scene, const ViewFrameRequest& reques
     if (shown.shown) glDeleteSync(shown.shown);
     shown.shown = fence;
     shown.reading = false;
+    return wait;
 }
 
 void ViewRenderThread::frameDone() {

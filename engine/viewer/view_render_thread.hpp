@@ -73,8 +73,8 @@ class ViewRenderThread {
     // the window. Waits for this request's step when it waits for builds or its view, or refines
     // all.
     // `sceneError` is set when the scene does not compile, and set or cleared as the thread's
-    // steps find.
-    void update(const Scene& scene, const ViewFrameRequest& request, const ViewportPixels& viewport,
+    // steps find. Returns whether it waited for the scene's compile.
+    bool update(const Scene& scene, const ViewFrameRequest& request, const ViewportPixels& viewport,
                 std::string& sceneError);
 
     // The view at `width` x `height` pixels and full resolution (waits for it).

@@ -64,12 +64,7 @@ void Viewer::carryOut(ViewerCommands& commands) {
             groupSelection(document, SdfOp::Union);
             break;
         case ViewerCommand::NewScene:
-            if (document.dirty()) {
-                dialogs_.askClose = true;
-                dialogs_.afterDiscard = AfterDiscard::New;
-            } else {
-                newScene(session_, files_, messages_);
-            }
+            requestNew(dialogs_, session_, files_, messages_);
             break;
         case ViewerCommand::Open:
             dialogs_.askForPath(PathPurpose::Open, document.file().empty()
@@ -120,7 +115,7 @@ void Viewer::carryOut(ViewerCommands& commands) {
             break;
         case ViewerCommand::Quit:
             dialogs_.afterDiscard = AfterDiscard::Quit;
-            requestClose(dialogs_, document);
+            requestClose(dialogs_, session_, files_, messages_);
             break;
         case ViewerCommand::FrameSelection:
             frameSelection(session_);

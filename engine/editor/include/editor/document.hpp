@@ -21,6 +21,24 @@ namespace rmsc::editor {
 // A scene to start from: one light, no objects (what "New" and a failed load give).
 Scene emptyScene();
 
+// A save asked for (Document::saveOf): the scene as it was then, its paths relative to `path`'s
+// folder, and where the document's history stood. Written by writeSceneSave, on any thread, and
+// then given back to Document::saved.
+struct SceneSave {
+    Scene scene;
+    std::filesystem::path path;
+    std::uint64_t document = 0; // which scene of the Document (reset() starts another)
+    std::size_t position = 0;   // its history's position
+    std::uint64_t step = 0;     // the id of the step before that position (0: none)
+};
+
+// Writes `save.scene` to `save.path`: the text (sceneToJson) is checked first as `rmsc validate`
+// would check it (editor/scene_check.hpp), so an invalid scene is not written and `error` names
+// its first errors by JSON pointer; then it is written atomically, the previous file kept as
+// FILE.bak. On failure returns false with `error` saying why; the old file is kept. GL-free and
+// touches nothing else: it may run on any thread.
+bool writeSceneSave(const SceneSave& save, std::string& error);
+
 class Document {
   public:
     Document();
@@ -65,12 +83,18 @@ class Document {
     // Increments whenever the scene changes (edit, undo, redo, load): renderers compare it.
     std::uint64_t revision() const { return revision_; }
 
-    // Writes sceneToJson atomically, keeping the previous file as FILE.bak. The text is checked
-    // first as `rmsc validate` would check it (editor/scene_check.hpp): an invalid scene is not
-    // written, and `error` names its first errors by JSON pointer. On failure returns false with
-    // `error` saying why; the scene, its edits and the old file are kept.
+    // Saves at once: saveOf, writeSceneSave, saved. On failure returns false with `error`
+    // saying why; the scene, its edits and the old file are kept.
     bool save(std::string& error);
     bool saveAs(const std::filesystem::path& path, std::string& error);
+    // A save of the scene as it is now to `path` (the pending change committed first), for
+    // writeSceneSave to write, on another thread if need be, while the editing goes on.
+    SceneSave saveOf(const std::filesystem::path& path);
+    // `save` was written: the document's file is its path from now on (the scene's paths read
+    // from its folder), and the document is clean where its history stood when the save was
+    // asked for (dirty after edits made since, clean again after undoing them). Nothing
+    // changes when the document holds another scene since (reset()).
+    void saved(const SceneSave& save);
 
     // Replaces everything (New, Open, reload): history cleared, clean.
     void reset(Scene scene, std::filesystem::path file);
@@ -84,6 +108,7 @@ class Document {
         Scene before, after;
         Selection selectionBefore, selectionAfter;
         std::vector<Selection> alsoBefore, alsoAfter;
+        std::uint64_t id = 0; // names it for SceneSave::step (never 0)
     };
     // Drops what no longer exists and repeats from alsoSelected; an empty active selection
     // takes the last of them.
@@ -99,6 +124,8 @@ class Document {
     bool pending_ = false;
     std::string pendingLabel_;
     std::uint64_t revision_ = 1;
+    std::uint64_t nextStepId_ = 1;
+    std::uint64_t resets_ = 0; // reset()s so far: SceneSave::document
 };
 
 // Loads a scene file for editing (parse only: meshes are loaded by the renderer).
