@@ -276,8 +276,11 @@ void drawHierarchyPanel(editor::Document& document, const PanelLayout& layout,
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(0, top));
     ImGui::SetNextWindowSize(ImVec2(layout.leftPanelWidth, io.DisplaySize.y - top));
+    // A deep tree's rows go past the panel's right edge (tree_4096's leaves are 12 levels in):
+    // they scroll into view sideways.
     ImGui::Begin("Scene", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_HorizontalScrollbar);
     drawAddButtons(document, place, commands);
     ImGui::Separator();
     drawSdfTree(document);
