@@ -88,7 +88,9 @@ bool finishSave(editor::Document& document, SceneFiles& files, Messages& message
         return false;
     }
     document.saved(outcome->save);
-    if (!document.dirty()) { // the edits are safe in the file now
+    messages.notice("saved " + path.string());
+    if (document.file() != path) return true; // another scene since: nothing of it was saved
+    if (!document.dirty()) {                  // the edits are safe in the file now
         removeRecoveryFile(files, files.savedFrom);
         removeRecoveryFile(files, path);
     } else {
@@ -97,7 +99,6 @@ bool finishSave(editor::Document& document, SceneFiles& files, Messages& message
     messages.fileError.clear();
     files.watcher = editor::FileWatcher(path); // our own write is not an external change
     rememberFile(files, path, messages);
-    messages.notice("saved " + path.string());
     return true;
 }
 
