@@ -4,13 +4,11 @@
 #include "editor/document.hpp"
 #include "editor/save_job.hpp"
 #include "editor/scene_edits.hpp"
+#include "temp_folder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 using namespace rmsc;
 using namespace rmsc::editor;
@@ -18,25 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class SaveJobTest : public ::testing::Test {
-  protected:
-    fs::path folder;
-    void SetUp() override {
-        folder = fs::temp_directory_path() /
-                 ("rmsc-save-" + std::to_string(::getpid()) + "-" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(folder);
-        fs::create_directories(folder);
-    }
-    void TearDown() override { fs::remove_all(folder); }
-};
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using SaveJobTest = rmsc::test::TempFolderTest;
 
 void setExposure(Document& document, float exposure) {
     document.apply("Exposure", [=](Scene& s, Selection&) { s.render.exposure = exposure; });
@@ -53,7 +33,7 @@ float savedExposure(const fs::path& path) {
 } // namespace
 
 TEST_F(SaveJobTest, TheDocumentIsCleanWhereItWasSavedWhateverWasEditedMeanwhile) {
-    const fs::path path = folder / "scene.json";
+    const fs::path path = folder_ / "scene.json";
     Document doc(emptyScene());
     setExposure(doc, 2.0f);
     const SceneSave save = doc.saveOf(path);
@@ -72,7 +52,7 @@ TEST_F(SaveJobTest, TheDocumentIsCleanWhereItWasSavedWhateverWasEditedMeanwhile)
 }
 
 TEST_F(SaveJobTest, AnEditOnAnotherBranchIsNotTakenForTheSavedOne) {
-    const fs::path path = folder / "scene.json";
+    const fs::path path = folder_ / "scene.json";
     Document doc(emptyScene());
     setExposure(doc, 2.0f);
     const SceneSave save = doc.saveOf(path);
@@ -89,7 +69,7 @@ TEST_F(SaveJobTest, AnEditOnAnotherBranchIsNotTakenForTheSavedOne) {
 }
 
 TEST_F(SaveJobTest, ASaveOfASceneNoLongerOpenChangesNothing) {
-    const fs::path path = folder / "scene.json";
+    const fs::path path = folder_ / "scene.json";
     Document doc(emptyScene());
     setExposure(doc, 2.0f);
     const SceneSave save = doc.saveOf(path);
@@ -103,7 +83,7 @@ TEST_F(SaveJobTest, ASaveOfASceneNoLongerOpenChangesNothing) {
 }
 
 TEST_F(SaveJobTest, SavesOnTheWorkerOneAtATime) {
-    const fs::path path = folder / "scene.json";
+    const fs::path path = folder_ / "scene.json";
     Document doc(emptyScene());
     setExposure(doc, 2.0f);
     SaveJob job;
@@ -111,13 +91,13 @@ TEST_F(SaveJobTest, SavesOnTheWorkerOneAtATime) {
     EXPECT_FALSE(job.take(true)) << "nothing to wait for";
     ASSERT_TRUE(job.start(doc.saveOf(path)));
     EXPECT_TRUE(job.underWay());
-    EXPECT_FALSE(job.start(doc.saveOf(folder / "other.json"))) << "one at a time";
+    EXPECT_FALSE(job.start(doc.saveOf(folder_ / "other.json"))) << "one at a time";
     std::optional<SaveOutcome> outcome = job.take(true);
     ASSERT_TRUE(outcome);
     EXPECT_TRUE(outcome->written) << outcome->error;
     EXPECT_FALSE(job.underWay());
     EXPECT_FALSE(job.take(true)) << "taken once";
-    EXPECT_FALSE(fs::exists(folder / "other.json")) << "the refused save wrote nothing";
+    EXPECT_FALSE(fs::exists(folder_ / "other.json")) << "the refused save wrote nothing";
     doc.saved(outcome->save);
     EXPECT_FALSE(doc.dirty());
     EXPECT_EQ(savedExposure(path), 2.0f);
@@ -130,18 +110,18 @@ TEST_F(SaveJobTest, SavesOnTheWorkerOneAtATime) {
         EXPECT_TRUE(job.underWay());
     EXPECT_TRUE(polled->written) << polled->error;
     EXPECT_EQ(savedExposure(path), 3.0f);
-    EXPECT_NE(readFile(path.string() + ".bak").find("\"exposure\": 2"), std::string::npos)
+    EXPECT_NE(read(path.string() + ".bak").find("\"exposure\": 2"), std::string::npos)
         << "the file before it kept as the backup";
 }
 
 TEST_F(SaveJobTest, AFailedSaveSaysWhyAndChangesNothing) {
-    const fs::path path = folder / "scene.json";
+    const fs::path path = folder_ / "scene.json";
     Document doc(emptyScene());
     std::string error;
     ASSERT_TRUE(doc.saveAs(path, error)) << error;
-    const std::string before = readFile(path);
+    const std::string before = read(path);
     setExposure(doc, 5.0f);
-    const fs::path blocked = folder / "blocked.json"; // a folder: cannot be replaced
+    const fs::path blocked = folder_ / "blocked.json"; // a folder: cannot be replaced
     fs::create_directories(blocked);
     SaveJob job;
     ASSERT_TRUE(job.start(doc.saveOf(blocked)));
@@ -152,5 +132,5 @@ TEST_F(SaveJobTest, AFailedSaveSaysWhyAndChangesNothing) {
     // The viewer gives a failed save nothing back: the document is as it was.
     EXPECT_TRUE(doc.dirty());
     EXPECT_EQ(doc.file(), path);
-    EXPECT_EQ(readFile(path), before);
+    EXPECT_EQ(read(path), before);
 }
