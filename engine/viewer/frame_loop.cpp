@@ -91,7 +91,7 @@ int Viewer::run() {
         // (Dear ImGui's font and program, the driver's first draw and first present into the
         // window: 50 to 90 ms on llvmpipe) is done before anyone can see it or give it input.
         // It is the window's opening, not a UI frame.
-        const bool opening = !window_->visible();
+        const bool opening = !window_->shown();
         if (opening) window_->show();
         window_->swapBuffers();
         gpu_.frameDone();

@@ -72,10 +72,7 @@ std::unique_ptr<Window> Window::openHidden(std::string& error, const Window* sha
 
 void Window::show() {
     glfwShowWindow(window_);
-}
-
-bool Window::visible() const {
-    return glfwGetWindowAttrib(window_, GLFW_VISIBLE) == GLFW_TRUE;
+    shown_ = true;
 }
 
 void Window::makeCurrent() {

@@ -34,7 +34,9 @@ class Window {
     void setTitle(const std::string& title);
     void swapBuffers();
     void show();
-    bool visible() const; // shown, not hidden (it may still be covered or minimised)
+    // show() was called (the window may still be covered or minimised). Kept here, not asked
+    // of the window system: on X11 that is a round trip, and the frame loop asks every frame.
+    bool shown() const { return shown_; }
     // Size of the drawable in pixels, and of the window in screen coordinates.
     void framebufferSize(int& width, int& height) const;
     void windowSize(int& width, int& height) const;
@@ -42,6 +44,7 @@ class Window {
   private:
     explicit Window(GLFWwindow* window) : window_(window) {}
     GLFWwindow* window_ = nullptr;
+    bool shown_ = false;
 };
 
 } // namespace rmsc
