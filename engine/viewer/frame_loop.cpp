@@ -236,7 +236,7 @@ void Viewer::drawUi() {
         drawMenuBarTitle(session_.document);
         ImGui::EndMainMenuBar();
     }
-    drawHierarchyPanel(session_.document, layout_, place, commands);
+    drawHierarchyPanel(session_.document, hierarchy_, layout_, place, commands);
     carryOut(commands);
     drawInspectorPanel(session_, inspector_, view_, layout_, commands);
     carryOut(commands);

@@ -18,6 +18,7 @@
 #include "frame_stats.hpp"
 #include "gesture_controls.hpp"
 #include "gizmo_controls.hpp"
+#include "hierarchy_panel.hpp"
 #include "input_state.hpp"
 #include "inspector.hpp"
 #include "messages.hpp"
@@ -97,6 +98,7 @@ class Viewer {
     Dialogs dialogs_;
     ExportUi export_; // the export dialog and the export running on its thread
     PanelLayout layout_;
+    HierarchyPanelState hierarchy_;
     InspectorState inspector_;
     ViewSettings view_;
     ViewportGesture gesture_;

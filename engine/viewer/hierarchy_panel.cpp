@@ -12,6 +12,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <optional>
 #include <string>
@@ -106,6 +107,43 @@ void skipRows(int rows) {
 void drawSdfNode(const SdfNode& node, std::vector<int>& path, const editor::Document& document,
                  std::optional<Selection>& clicked, std::optional<PendingMove>& move);
 
+// Opens the groups above the node at `path` and returns its row (the root's is 0), with the
+// root's id pushed as drawSdfTree has it. nullopt when the path names no node.
+std::optional<int> openRowOf(const Scene& scene, const std::vector<int>& path) {
+    if (!scene.sdf || !editor::findSdfNode(scene, path)) return std::nullopt;
+    const SdfNode* node = &*scene.sdf;
+    int row = 0;
+    for (const int index : path) {
+        ImGui::GetStateStorage()->SetInt(ImGui::GetID(kNodeId), 1);
+        ImGui::PushID(kNodeId); // as TreeNodeEx pushes it for the children
+        row += 1;               // the group's own row
+        for (int i = 0; i < index; ++i) {
+            ImGui::PushID(i);
+            row += subtreeRows(node->children[std::size_t(i)]);
+            ImGui::PopID();
+        }
+        ImGui::PushID(index);
+        node = &node->children[std::size_t(index)];
+    }
+    for (std::size_t pushed = 0; pushed < 2 * path.size(); ++pushed)
+        ImGui::PopID();
+    return row;
+}
+
+// Scrolls the panel so that the row `row` rows below `top` (window coordinates, as
+// GetCursorPos), `depth` levels in, is in view: to its middle when it is not.
+void scrollToRow(float top, int row, int depth) {
+    const float step = ImGui::GetTextLineHeightWithSpacing();
+    const float y = top + float(row) * step;
+    const float height = ImGui::GetWindowHeight();
+    if (y < ImGui::GetScrollY() || y + 2.0f * step > ImGui::GetScrollY() + height)
+        ImGui::SetScrollY(y - 0.5f * (height - step));
+    const float indent = ImGui::GetStyle().IndentSpacing;
+    const float x = ImGui::GetCursorPosX() + float(depth) * indent;
+    if (x < ImGui::GetScrollX() || x > ImGui::GetScrollX() + 0.5f * ImGui::GetWindowWidth())
+        ImGui::SetScrollX(std::max(0.0f, x - 2.0f * indent));
+}
+
 // The children of an open group, from `path`: those above or below what the window shows are
 // skipped (a non-framed tree node's row is a text line high, so they take the same room).
 void drawSdfChildren(const SdfNode& group, std::vector<int>& path, const editor::Document& document,
@@ -178,7 +216,7 @@ void drawSdfNode(const SdfNode& node, std::vector<int>& path, const editor::Docu
     }
 }
 
-void drawSdfTree(editor::Document& document) {
+void drawSdfTree(editor::Document& document, HierarchyPanelState& state) {
     std::optional<PendingMove> move;
     std::optional<Selection> clicked;
     const Scene& scene = document.scene();
@@ -186,6 +224,15 @@ void drawSdfTree(editor::Document& document) {
     if (scene.sdf) {
         std::vector<int> path;
         ImGui::PushID(-1); // the root's index
+        // A new active selection is brought into view (not while a row is dragged: the drop
+        // selects the moved node, in view already).
+        if (document.selection != state.revealed && !ImGui::GetDragDropPayload()) {
+            state.revealed = document.selection;
+            const std::vector<int>& selected = document.selection.sdfPath;
+            if (document.selection.kind == SelectionKind::Sdf)
+                if (const std::optional<int> row = openRowOf(scene, selected))
+                    scrollToRow(ImGui::GetCursorPosY(), *row, int(selected.size()));
+        }
         drawSdfNode(*scene.sdf, path, document, clicked, move);
         ImGui::PopID();
     } else {
@@ -270,8 +317,9 @@ void drawHierarchyHelp() {
 
 } // namespace
 
-void drawHierarchyPanel(editor::Document& document, const PanelLayout& layout,
-                        const NewShapePlace& place, ViewerCommands& commands) {
+void drawHierarchyPanel(editor::Document& document, HierarchyPanelState& state,
+                        const PanelLayout& layout, const NewShapePlace& place,
+                        ViewerCommands& commands) {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
     ImGui::SetNextWindowPos(ImVec2(0, top));
@@ -283,7 +331,7 @@ void drawHierarchyPanel(editor::Document& document, const PanelLayout& layout,
                      ImGuiWindowFlags_HorizontalScrollbar);
     drawAddButtons(document, place, commands);
     ImGui::Separator();
-    drawSdfTree(document);
+    drawSdfTree(document, state);
     drawMeshAndLightLists(document);
     drawHierarchyHelp();
     ImGui::End();

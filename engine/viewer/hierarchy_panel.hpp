@@ -10,8 +10,17 @@
 
 namespace rmsc::app {
 
+// What the panel keeps from one frame to the next.
+struct HierarchyPanelState {
+    // The active selection the panel last brought into view. A new one (a click in the view, an
+    // undo, a new shape) has its groups opened and its row scrolled into view: in a tree of
+    // thousands of rows the selected one is otherwise somewhere out of sight.
+    editor::Selection revealed;
+};
+
 // New shapes go where `place` says.
-void drawHierarchyPanel(editor::Document& document, const PanelLayout& layout,
-                        const NewShapePlace& place, ViewerCommands& commands);
+void drawHierarchyPanel(editor::Document& document, HierarchyPanelState& state,
+                        const PanelLayout& layout, const NewShapePlace& place,
+                        ViewerCommands& commands);
 
 } // namespace rmsc::app

@@ -265,7 +265,8 @@ def large_scene_run(rmsc, source, tmp, xvfb_run, check):
     """The fourth run (tests/e2e/viewer_large_script.txt): a shape of the 10,000-shape grid moved,
     drawn with the cells map, whose cells are pruned again from the kept state; then the Scene
     panel scrolled and the row under the mouse moved too (the panel draws only the rows it shows:
-    the rows above take their room without being drawn)."""
+    the rows above take their room without being drawn); last, a shape clicked in the view, whose
+    row the panel brings into view, and the row below it, clicked in the panel."""
     folder = os.path.join(tmp, "large")
     os.makedirs(folder)
     scene = os.path.join(folder, "scene.json")
@@ -294,10 +295,15 @@ def large_scene_run(rmsc, source, tmp, xvfb_run, check):
     changed = [i for i, (a, b) in enumerate(zip(before, after))
                if a["shape"] != b["shape"] or
                any(abs(x - y) > 1e-6 for x, y in zip(a["position"], b["position"]))]
-    # Child 39: the panel's rows are 17 pixels apart from y 113, scrolled by 650 pixels.
-    check("only the first shape and the one clicked in the scrolled panel moved",
-          changed == [0, 39], changed[:10])
-    for i in (0, 39):
+    # Child 39: the panel's rows are 17 pixels apart from y 113, scrolled by 650 pixels. Then the
+    # shape clicked in the view (child k, wherever it is in the list) and, below its row in the
+    # panel, child k + 1. Had the panel stayed where the wheel left it, the row clicked there
+    # would be child 42 (a build without the panel's reveal moved 42 and k), not next to k.
+    check("the first shape, the one clicked in the scrolled panel, the one clicked in the view and "
+          "the one below it in the panel moved",
+          len(changed) == 4 and changed[:2] == [0, 39] and changed[3] == changed[2] + 1 and
+          changed[2] > 60, changed[:10])
+    for i in changed:
         p, q = before[i]["position"], after[i]["position"]
         check(f"shape {i} moved along +X only", q[0] > p[0] + 0.01 and abs(q[1] - p[1]) < 1e-6 and
               abs(q[2] - p[2]) < 1e-6, (p, q))
