@@ -99,6 +99,44 @@ TEST(SdfStrategies, CellsOfAUnionOfShapesAndBakedDrawTheSameImage) {
                      "strategy_cells_profiles_on_a_floor");
 }
 
+// A smooth-CSG tree drawn with cells runs the interpreter on each cell's postfix list, and
+// reads the surface at a hit from the list of the hit's cell (common/sdf_interpreter.glsl):
+// colours blended by smooth operations across three materials, a subtraction's and an
+// intersection's sides, a chamfer and a distance modifier; it must draw what generated code
+// draws. (The grids' lean loop has its own test above.)
+TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
+    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+        "camera": {"position": [0.4, 1.6, 4.2], "target": [0, 0.4, 0], "fov": 45},
+        "materials": {"a": {"base_color": "#e76f51", "roughness": 0.3},
+                      "b": {"base_color": "#2a9d8f", "metallic": 0.6},
+                      "c": {"base_color": "#e9c46a", "emissive": [0.2, 0.1, 0.0]}},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+        "sdf": {"children": [
+          {"shape": "plane", "normal": [0, 1, 0], "offset": 0, "material": "b"},
+          {"op": "smooth_union", "smoothness": 0.35, "children": [
+            {"shape": "sphere", "radius": 0.45, "position": [-0.8, 0.45, 0], "material": "a"},
+            {"op": "smooth_union", "smoothness": 0.25, "children": [
+              {"shape": "sphere", "radius": 0.4, "position": [-0.2, 0.6, 0.1], "material": "c"},
+              {"shape": "box", "half_extents": [0.3, 0.2, 0.3], "position": [-0.5, 0.2, 0.5],
+               "material": "b", "modifiers": [{"type": "round", "radius": 0.05}]}]}]},
+          {"op": "smooth_subtraction", "smoothness": 0.1, "children": [
+            {"shape": "box", "half_extents": [0.35, 0.35, 0.35], "position": [0.7, 0.35, 0],
+             "material": "c"},
+            {"shape": "sphere", "radius": 0.3, "position": [0.7, 0.6, 0.3], "material": "a"}]},
+          {"op": "intersection", "children": [
+            {"shape": "sphere", "radius": 0.4, "position": [1.5, 0.4, -0.4], "material": "a"},
+            {"shape": "box", "half_extents": [0.3, 0.3, 0.3], "position": [1.5, 0.4, -0.4],
+             "material": "b"}]},
+          {"op": "chamfer_union", "smoothness": 0.15, "children": [
+            {"shape": "sphere", "radius": 0.3, "position": [0.1, 0.3, -0.9], "material": "b"},
+            {"shape": "sphere", "radius": 0.3, "position": [0.5, 0.3, -0.9], "material": "c"}]}
+        ]}})");
+    ASSERT_EQ(generateSdfMap(prepared.sdf, SdfStrategy::Cells).find("SDF_CELLS_LEAN"),
+              std::string::npos);
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
+                     "strategy_cells_smooth_tree");
+}
+
 TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
     PreparedScene prepared = openRepositoryScene("samples/scenes/csg.json");
     Renderer& renderer = sharedRenderer();
