@@ -130,11 +130,11 @@ std::optional<int> openRowOf(const Scene& scene, const std::vector<int>& path) {
     return row;
 }
 
-// Scrolls the panel so that the row `row` rows below `top` (window coordinates, as
-// GetCursorPos), `depth` levels in, is in view: to its middle when it is not.
-void scrollToRow(float top, int row, int depth) {
+// Scrolls the panel so that the row `row` rows below the cursor, `depth` levels in, is in view:
+// to its middle when it is not (a row's height is left below it for the horizontal scrollbar).
+void scrollToRow(int row, int depth) {
     const float step = ImGui::GetTextLineHeightWithSpacing();
-    const float y = top + float(row) * step;
+    const float y = ImGui::GetCursorPosY() + float(row) * step;
     const float height = ImGui::GetWindowHeight();
     if (y < ImGui::GetScrollY() || y + 2.0f * step > ImGui::GetScrollY() + height)
         ImGui::SetScrollY(y - 0.5f * (height - step));
@@ -231,7 +231,7 @@ void drawSdfTree(editor::Document& document, HierarchyPanelState& state) {
             const std::vector<int>& selected = document.selection.sdfPath;
             if (document.selection.kind == SelectionKind::Sdf)
                 if (const std::optional<int> row = openRowOf(scene, selected))
-                    scrollToRow(ImGui::GetCursorPosY(), *row, int(selected.size()));
+                    scrollToRow(*row, int(selected.size()));
         }
         drawSdfNode(*scene.sdf, path, document, clicked, move);
         ImGui::PopID();

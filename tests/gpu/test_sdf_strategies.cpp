@@ -131,8 +131,9 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
             {"shape": "sphere", "radius": 0.3, "position": [0.1, 0.3, -0.9], "material": "b"},
             {"shape": "sphere", "radius": 0.3, "position": [0.5, 0.3, -0.9], "material": "c"}]}
         ]}})");
-    ASSERT_EQ(generateSdfMap(prepared.sdf, SdfStrategy::Cells).find("SDF_CELLS_LEAN"),
-              std::string::npos);
+    const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
+    ASSERT_NE(map.find("common/sdf_cells.glsl"), std::string::npos); // cells, not a fallback
+    ASSERT_EQ(map.find("SDF_CELLS_LEAN"), std::string::npos);
     expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
                      "strategy_cells_smooth_tree");
 }
