@@ -72,3 +72,10 @@ float windowDepth(vec3 worldPosition) {
     float ndcZ = clip.z / clip.w;
     return frame.viewport.w > 0.5 ? ndcZ : ndcZ * 0.5 + 0.5;
 }
+
+// A zero the shader compiler cannot see through (the frame's step budget is at least 1). Loops
+// that start at SDF_ZERO are neither unrolled nor is their body inlined once per iteration, so
+// the scene's map is compiled once per loop instead of once per tap: the "ZERO" idiom from
+// Inigo Quilez's Shadertoy work, see "Normals for an SDF",
+// https://iquilezles.org/articles/normalsSDF/ (section "Non-inlining the normal").
+#define SDF_ZERO min(int(frame.march.x), 0)

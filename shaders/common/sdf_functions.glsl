@@ -77,6 +77,22 @@ vec3 sdfAffine(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
     return vec3(dot(r0, p4), dot(r1, p4), dot(r2, p4));
 }
 
+// Vertex k (0 to 3) of the tetrahedron a normal's four taps stand on: (1, -1, -1), (-1, -1, 1),
+// (-1, 1, -1), (1, 1, 1). The gradient of a field f at p is about the sum of the vertices
+// weighted by f(p + h * vertex): the tetrahedron technique, Inigo Quilez, "Normals for an SDF",
+// https://iquilezles.org/articles/normalsSDF/.
+vec3 sdfTetrahedronVertex(int k) {
+    return 2.0 * vec3(((k + 3) >> 1) & 1, (k >> 1) & 1, k & 1) - 1.0;
+}
+
+// The unit normal from the four taps (tap k at vertex k), up when they do not say.
+vec3 sdfTetrahedronNormal(vec4 taps) {
+    vec3 n = vec3(0.0);
+    for (int k = 0; k < 4; ++k) n += sdfTetrahedronVertex(k) * taps[k];
+    float len = length(n);
+    return len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
+}
+
 // Smooth minimum of a and b over a blend region |a - b| < k, and in h how much of a it takes
 // (1 where a is far below b, 0 where b is far below a). blend 0: the quadratic polynomial,
 // blend 1: a circular arc; both from Inigo Quilez, "Smooth minimum",

@@ -137,17 +137,31 @@ float sdfDistance(vec3 p) {
 }
 
 // The same program as sdfDistance, carrying the material and object id (see
-// sdfCombineSurfaces). Evaluated once per hit.
-SdfSurface sdfSurface(vec3 p) {
+// sdfCombineSurfaces). Evaluated once per hit. With `withTaps` (a constant at each call, so the
+// compiler drops what the call does not use) the program also runs at the normal's four taps
+// p + h * sdfTetrahedronVertex(k), in `taps`: every instruction applied to the five points at
+// once, from one descent, so the normal costs no list of its own. Where the program is a
+// cell's list (common/sdf_cells.glsl) the taps read that list even where they lie outside the
+// cell: the list equals the whole program inside the cell (engine/sdf/cell_pruning.hpp), so the
+// gradient at p, which the taps' differences measure, is the whole program's there; what the
+// cell dropped only changes the field beyond the cell, and with it not the gradient at p.
+SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     uint base, count;
     sdfProgramRange(p, base, count);
+    taps = vec4(SDF_FAR);
     if (count == 0u) return sdfEmptySurface(p);
     SdfSurface stack[SDF_MAX_STACK];
+    vec4 tapStack[SDF_MAX_STACK];
     int top = 0;
     vec3 saved[SDF_MAX_POINT_STACK];
+    vec3 savedTaps[4 * SDF_MAX_POINT_STACK];
     int savedTop = 0;
+    vec3 t0 = p + h * sdfTetrahedronVertex(0), t1 = p + h * sdfTetrahedronVertex(1);
+    vec3 t2 = p + h * sdfTetrahedronVertex(2), t3 = p + h * sdfTetrahedronVertex(3);
     SdfSurface best = sdfEmptySurface(p); // what SDF_OPCODE_ACCUMULATE unites into
-    stack[0] = best;                      // (read only if the program pushes nothing)
+    vec4 bestTaps = vec4(SDF_FAR);
+    stack[0] = best; // (read only if the program pushes nothing)
+    tapStack[0] = bestTaps;
     for (uint n = 0u; n < count; ++n) {
         uint i = SDF_PROGRAM_AT(base + n);
         uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
@@ -155,6 +169,7 @@ SdfSurface sdfSurface(vec3 p) {
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), head.w, head.z,
                                             sdfInstructionPoint(i, p));
+            if (withTaps) tapStack[top] = sdfLeafDistances(i, t0, t1, t2, t3);
             ++top;
         }
 #if SDF_HAS_BOUNDS
@@ -163,38 +178,100 @@ SdfSurface sdfSurface(vec3 p) {
         } else if (op == SDF_OPCODE_ACCUMULATE) {
             --top;
             if (stack[top].distance < best.distance) best = stack[top];
+            if (withTaps) bestTaps = min(bestTaps, tapStack[top]);
         } // SDF_OPCODE_SEED_BEST: surfaces are not seeded (`best` must be a part's surface)
 #endif
 #if SDF_HAS_POINT_FRAMES
         else if (op == SDF_OPCODE_PUSH_POINT) {
             saved[savedTop] = p;
-            ++savedTop;
             p = sdfInstructionPoint(i, p);
+            if (withTaps) {
+                savedTaps[4 * savedTop] = t0;
+                savedTaps[4 * savedTop + 1] = t1;
+                savedTaps[4 * savedTop + 2] = t2;
+                savedTaps[4 * savedTop + 3] = t3;
+                t0 = sdfInstructionPoint(i, t0);
+                t1 = sdfInstructionPoint(i, t1);
+                t2 = sdfInstructionPoint(i, t2);
+                t3 = sdfInstructionPoint(i, t3);
+            }
+            ++savedTop;
         } else if (op == SDF_OPCODE_POP_POINT) {
             --savedTop;
             p = saved[savedTop];
+            if (withTaps) {
+                t0 = savedTaps[4 * savedTop];
+                t1 = savedTaps[4 * savedTop + 1];
+                t2 = savedTaps[4 * savedTop + 2];
+                t3 = savedTaps[4 * savedTop + 3];
+            }
         }
 #endif
 #if SDF_HAS_POINT_MODIFIERS
         else if (op == SDF_OPCODE_POINT_MODIFIER) {
             p = sdfInstructionPointModifier(i, p);
+            if (withTaps) {
+                for (int k = SDF_ZERO; k < 4; ++k) {
+                    vec3 moved = sdfInstructionPointModifier(
+                        i, k == 0 ? t0 : k == 1 ? t1 : k == 2 ? t2 : t3);
+                    t0 = k == 0 ? moved : t0;
+                    t1 = k == 1 ? moved : t1;
+                    t2 = k == 2 ? moved : t2;
+                    t3 = k == 3 ? moved : t3;
+                }
+            }
         }
 #endif
 #if SDF_HAS_DISTANCE_MODIFIERS
         else if (op == SDF_OPCODE_DISTANCE_MODIFIER) {
-            stack[top - 1].distance = sdfDistanceModifierUsed(
-                head.y, stack[top - 1].distance, p, sdfInstructionParams(i, 0));
+            vec4 params = sdfInstructionParams(i, 0);
+            stack[top - 1].distance =
+                sdfDistanceModifierUsed(head.y, stack[top - 1].distance, p, params);
+            if (withTaps) {
+                vec4 d = tapStack[top - 1];
+                for (int k = SDF_ZERO; k < 4; ++k)
+                    d[k] = sdfDistanceModifierUsed(
+                        head.y, d[k], k == 0 ? t0 : k == 1 ? t1 : k == 2 ? t2 : t3, params);
+                tapStack[top - 1] = d;
+            }
         }
 #endif
 #if SDF_HAS_COMBINE
         else if (op == SDF_OPCODE_COMBINE) {
             float w;
-            float d = sdfCombineUsed(head.y, stack[top - 2].distance,
-                                     stack[top - 1].distance, sdfInstructionParams(i, 0), w);
+            vec4 params = sdfInstructionParams(i, 0);
+            float d = sdfCombineUsed(head.y, stack[top - 2].distance, stack[top - 1].distance,
+                                     params, w);
             stack[top - 2] = sdfBlendSurfaces(stack[top - 2], stack[top - 1], d, w);
+            if (withTaps) {
+                vec4 a = tapStack[top - 2], b = tapStack[top - 1];
+                for (int k = SDF_ZERO; k < 4; ++k)
+                    a[k] = sdfCombineUsed(head.y, a[k], b[k], params, w);
+                tapStack[top - 2] = a;
+            }
             --top;
         }
 #endif
     }
-    return top == 0 ? best : stack[0];
+    if (top == 0) {
+        taps = bestTaps;
+        return best;
+    }
+    taps = tapStack[0];
+    return stack[0];
+}
+
+SdfSurface sdfSurface(vec3 p) {
+    vec4 taps;
+    return sdfSurfaceRead(p, 0.0, false, taps);
+}
+
+// The surface at a hit and its unit normal in one pass (see sdfSurfaceRead; common/
+// sdf_scene.glsl has the fallback of other maps).
+#define SDF_HAS_SURFACE_AND_NORMAL 1
+SdfSurface sdfSurfaceAndNormal(vec3 p, float h, out vec3 normal) {
+    vec4 taps;
+    SdfSurface surface = sdfSurfaceRead(p, h, true, taps);
+    normal = sdfTetrahedronNormal(taps);
+    return surface;
 }

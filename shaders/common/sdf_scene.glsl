@@ -21,13 +21,6 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
 }
 #endif
 
-// A zero the shader compiler cannot see through (the frame's step budget is at least 1). Loops
-// that start at SDF_ZERO are neither unrolled nor is their body inlined once per iteration, so
-// the scene's map is compiled once per loop instead of once per tap: the "ZERO" idiom from
-// Inigo Quilez's Shadertoy work, see "Normals for an SDF",
-// https://iquilezles.org/articles/normalsSDF/ (section "Non-inlining the normal").
-#define SDF_ZERO min(int(frame.march.x), 0)
-
 // The field whose gradient is the normal at a hit: the scene's distance, or the one the map
 // names (SDF_SURFACE_FIELD: the nearest shape of a union of shapes, which sdfSurface found;
 // common/sdf_cells.glsl). At the hit a union's gradient is its nearest shape's, and one shape
@@ -37,17 +30,24 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
 #endif
 
 // The unit normal at a hit p whose sdfSurface(p) was the last one read: the gradient of
-// SDF_SURFACE_FIELD by the tetrahedron technique, 4 evaluations at p + h * (+-1, +-1, +-1)
-// (Inigo Quilez, "Normals for an SDF", the same article), in a loop that is not unrolled.
+// SDF_SURFACE_FIELD from its values at the tetrahedron's taps p + h * sdfTetrahedronVertex(k)
+// (common/sdf_functions.glsl), in a loop that is not unrolled.
 vec3 sdfSurfaceNormal(vec3 p, float h) {
-    vec3 n = vec3(0.0);
-    for (int i = SDF_ZERO; i < 4; ++i) {
-        vec3 e = 2.0 * vec3(((i + 3) >> 1) & 1, (i >> 1) & 1, i & 1) - 1.0;
-        n += e * SDF_SURFACE_FIELD(p + e * h);
-    }
-    float len = length(n);
-    return len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
+    vec4 taps;
+    for (int k = SDF_ZERO; k < 4; ++k) taps[k] = SDF_SURFACE_FIELD(p + h * sdfTetrahedronVertex(k));
+    return sdfTetrahedronNormal(taps);
 }
+
+// The surface at a hit p and its unit normal, h the normal's tap offset. Maps that can read both
+// in one pass define their own (SDF_HAS_SURFACE_AND_NORMAL: the interpreter, common/
+// sdf_interpreter.glsl); otherwise the surface, then the normal's four taps.
+#ifndef SDF_HAS_SURFACE_AND_NORMAL
+SdfSurface sdfSurfaceAndNormal(vec3 p, float h, out vec3 normal) {
+    SdfSurface surface = sdfSurface(p);
+    normal = sdfSurfaceNormal(p, h);
+    return surface;
+}
+#endif
 
 // Over-relaxed sphere tracing (Keinert, Schäfer, Korndörfer, Ganse and Stamminger, "Enhanced
 // Sphere Tracing", Eurographics 2014 short papers, section 3.1) on top of sphere tracing (Hart

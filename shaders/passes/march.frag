@@ -42,8 +42,9 @@ void main() {
     if (tMin < tMax &&
         sdfMarch(ro, rd, tMin, tMax, int(frame.march.x), frame.march.z, frame.march.w, t, steps)) {
         vec3 p = ro + rd * t;
-        SdfSurface surface = sdfSurface(p);
-        vec3 normal = sdfSurfaceNormal(p, max(frame.march.z * max(t, 1.0), 1e-5));
+        vec3 normal;
+        SdfSurface surface =
+            sdfSurfaceAndNormal(p, max(frame.march.z * max(t, 1.0), 1e-5), normal);
         SurfacePoint s;
         s.position = p;
         s.normal = normal;

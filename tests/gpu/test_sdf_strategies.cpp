@@ -138,6 +138,23 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
                      "strategy_cells_smooth_tree");
 }
 
+// Every point and distance modifier of the samples drawn with cells runs the interpreter's
+// surface read, which also carries the normal's four taps through the modifiers and frames
+// (sdfSurfaceRead, common/sdf_interpreter.glsl): it must draw what generated code draws. Without
+// the scene's soft shadows and AO: in far cells they read the cells' constants, which are below
+// the distance, so the penumbrae differ (README, "How a frame is made").
+TEST(SdfStrategies, CellsOfModifiedShapesAndBakedDrawTheSameImage) {
+    PreparedScene prepared = openRepositoryScene("samples/scenes/modifiers.json");
+    prepared.scene.render.shadows.enabled = false;
+    prepared.scene.render.ao.samples = 0;
+    const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
+    ASSERT_NE(map.find("common/sdf_cells.glsl"), std::string::npos);
+    ASSERT_NE(map.find("#define SDF_HAS_POINT_MODIFIERS 1"), std::string::npos) << map;
+    ASSERT_NE(map.find("#define SDF_HAS_DISTANCE_MODIFIERS 1"), std::string::npos) << map;
+    ASSERT_NE(map.find("#define SDF_HAS_POINT_FRAMES 1"), std::string::npos) << map;
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells, "strategy_cells_modifiers");
+}
+
 TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
     PreparedScene prepared = openRepositoryScene("samples/scenes/csg.json");
     Renderer& renderer = sharedRenderer();
