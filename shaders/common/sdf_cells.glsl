@@ -136,27 +136,31 @@ bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 // value, so an iteration is a shape. The whole program's list, for points outside the grid, is
 // written the same way: its box tests and shapes, without the Accumulate after each part.
 
-float sdfListDistance(vec3 p, uint base, uint count) {
+// Also the numbers of the list's last instruction (a cell's plane, sdfDistanceAlong).
+float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData last) {
     float best = SDF_FAR;
     for (uint n = 0u; n < count; ++n) {
         uint i = SDF_PROGRAM_AT(base + n);
-        uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+        SdfInstructionData data = sdfInstructionData(i); // read once: SdfInstructionData
+        last = data;
+        uvec4 head = data.head; // opcode, kind, material, id
         uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
-            best = min(best, sdfLeafDistance(i, p));
+            best = min(best, sdfLeafDistanceOf(data, p));
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best) n += head.y;
+            if (sdfBoundDistanceOf(data, p) >= best) n += head.y;
         } else if (op == SDF_OPCODE_SEED_BEST) {
-            best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0),
-                                             sdfInstructionParams(i, 1),
-                                             sdfInstructionParams(i, 2),
-                                             sdfInstructionMisc(i).x));
+            best = min(best, sdfSeedDistanceOf(data, p));
         }
 #endif
     }
     return best;
+}
+float sdfListDistance(vec3 p, uint base, uint count) {
+    SdfInstructionData last;
+    return sdfListDistanceLast(p, base, count, last);
 }
 
 float sdfDistance(vec3 p) {
@@ -199,14 +203,14 @@ SdfSurface sdfSurface(vec3 p) {
 #endif
 
 #ifdef SDF_CELLS_PLANES // (engine/sdf/glsl_codegen.cpp: the scene has a plane)
-// The rate at which plane instruction i's field changes along the unit direction rd: sdPlane
-// (common/sdf_primitives.glsl) of the frame's point, dot(q, normal) / |normal| - offset, times
-// the distance scale, where q changes by the frame's linear part applied to rd.
-float sdfPlaneSlope(uint i, vec3 rd) {
-    vec3 dq = vec3(dot(sdfInstructionRow(i, 0).xyz, rd), dot(sdfInstructionRow(i, 1).xyz, rd),
-                   dot(sdfInstructionRow(i, 2).xyz, rd));
-    vec3 normal = sdfInstructionParams(i, 0).xyz;
-    return dot(dq, normal) / max(length(normal), 1e-6) * sdfInstructionMisc(i).x;
+// The rate at which a plane instruction's field (its numbers `plane`) changes along the unit
+// direction rd: sdPlane (common/sdf_primitives.glsl) of the frame's point, dot(q, normal) /
+// |normal| - offset, times the distance scale, where q changes by the frame's linear part
+// applied to rd.
+float sdfPlaneSlope(SdfInstructionData plane, vec3 rd) {
+    vec3 dq = vec3(dot(plane.r0.xyz, rd), dot(plane.r1.xyz, rd), dot(plane.r2.xyz, rd));
+    vec3 normal = plane.a0.xyz;
+    return dot(dq, normal) / max(length(normal), 1e-6) * plane.misc.x;
 }
 
 // sdfDistance at p = ro + t rd, and `advance`: how far along the unit direction rd from p the
@@ -228,13 +232,14 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
     bool affine;
     vec4 cell;
     sdfProgramCell(p, base, count, affine, cell);
-    float d = sdfListDistance(p, base, count);
+    SdfInstructionData last; // an affine cell's list is its plane: the numbers the list read
+    float d = sdfListDistanceLast(p, base, count, last);
     advance = 0.0;
     if (affine) {
         vec3 towards = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
         vec3 far = (cell.xyz + step(vec3(0.0), towards) * cell.w - p) / towards;
         float exit = max(min(min(far.x, far.y), far.z), 0.0);
-        float slope = sdfPlaneSlope(SDF_PROGRAM_AT(base), rd);
+        float slope = sdfPlaneSlope(last, rd);
         // d + slope s = landing max(t + s, 1), solved for s.
         float landing = (1.0 + 0.5 * slope) * epsilon;
         float s = (d - landing * t) / (landing - slope);

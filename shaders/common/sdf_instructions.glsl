@@ -40,13 +40,40 @@ float sdfLeafLocalDistance(uvec4 head, vec3 q, vec4 a, vec4 b, vec4 c) {
 #endif
 }
 
-// Distance of the shape or profile instruction i at world point p: the primitive evaluated at
-// the local point, scaled back to world units.
+// The numbers of an instruction: its head (opcode, kind, material, id), its three parameter
+// rows, its frame's rows (world to local) and misc (x: the distance scale). A step of the
+// interpreters reads them once, before its branches: llvmpipe runs the code of every branch
+// whether or not a pixel takes it, so a read inside each branch cost a read for each branch at
+// every step (a tenth of the 4,096-sphere tree's frame; docs/performance.md). On a GPU whose
+// lanes agree on a branch, a step now also reads what its branch does not use (not measured on
+// one yet).
+struct SdfInstructionData {
+    uvec4 head;
+    vec4 a0, a1, a2;
+    vec4 r0, r1, r2;
+    vec4 misc;
+};
+SdfInstructionData sdfInstructionData(uint i) {
+    return SdfInstructionData(sdfInstructionHead(i), sdfInstructionParams(i, 0),
+                              sdfInstructionParams(i, 1), sdfInstructionParams(i, 2),
+                              sdfInstructionRow(i, 0), sdfInstructionRow(i, 1),
+                              sdfInstructionRow(i, 2), sdfInstructionMisc(i));
+}
+
+// The point moved into an instruction's frame (its numbers `data`).
+vec3 sdfInstructionPointOf(SdfInstructionData data, vec3 p) {
+    return sdfAffine(data.r0, data.r1, data.r2, p);
+}
+
+// Distance of a shape or profile instruction (its numbers `data`) at world point p: the
+// primitive evaluated at the local point, scaled back to world units.
+float sdfLeafDistanceOf(SdfInstructionData data, vec3 p) {
+    return sdfLeafLocalDistance(data.head, sdfInstructionPointOf(data, p), data.a0, data.a1,
+                                data.a2) *
+           data.misc.x;
+}
 float sdfLeafDistance(uint i, vec3 p) {
-    return sdfLeafLocalDistance(sdfInstructionHead(i), sdfInstructionPoint(i, p),
-                                sdfInstructionParams(i, 0), sdfInstructionParams(i, 1),
-                                sdfInstructionParams(i, 2)) *
-           sdfInstructionMisc(i).x;
+    return sdfLeafDistanceOf(sdfInstructionData(i), p);
 }
 
 // sdfLeafDistance at four points at once (a normal's taps), the instruction read once, in a loop
@@ -64,15 +91,22 @@ vec4 sdfLeafDistances(uint i, vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
     return d * sdfInstructionMisc(i).x;
 }
 
-// A BoundSkip instruction's box distance at p.
+// A BoundSkip instruction's box distance at p, and a SeedBest's bound (its numbers `data`).
+float sdfBoundDistanceOf(SdfInstructionData data, vec3 p) {
+    return sdfBoxDistance(p, data.a0.xyz, data.a1.xyz, data.misc.x);
+}
 float sdfBoundDistance(uint i, vec3 p) {
-    return sdfBoxDistance(p, sdfInstructionParams(i, 0).xyz, sdfInstructionParams(i, 1).xyz,
-                          sdfInstructionMisc(i).x);
+    return sdfBoundDistanceOf(sdfInstructionData(i), p);
+}
+float sdfSeedDistanceOf(SdfInstructionData data, vec3 p) {
+    return sdfSeedDistance(p, data.a0, data.a1, data.a2, data.misc.x);
 }
 
 #if SDF_HAS_POINT_MODIFIERS
+vec3 sdfInstructionPointModifierOf(SdfInstructionData data, vec3 p) {
+    return sdfPointModifierUsed(data.head.y, p, data.a0, data.a1, data.a2);
+}
 vec3 sdfInstructionPointModifier(uint i, vec3 p) {
-    return sdfPointModifierUsed(sdfInstructionHead(i).y, p, sdfInstructionParams(i, 0),
-                            sdfInstructionParams(i, 1), sdfInstructionParams(i, 2));
+    return sdfInstructionPointModifierOf(sdfInstructionData(i), p);
 }
 #endif

@@ -18,18 +18,16 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #define SDF_PROGRAM_AT(n) (n)
 #endif
 
-// One instruction of sdfDistance (the loop body, repeated to unroll the loop). The point stack
+// One instruction of sdfDistance (the loop body, repeated to unroll the loop), its numbers read
+// once for every branch (SdfInstructionData). The point stack
 // is handled inline (an array passed to a function would be copied in and out on every call).
 // Each opcode the program does not use is left out (SDF_HAS_*, common/sdf_instructions.glsl).
 #if SDF_HAS_BOUNDS
 #define SDF_DISTANCE_STEP_BOUNDS \
     else if (op == SDF_OPCODE_BOUND_SKIP) { \
-        if (sdfBoundDistance(i, p) >= best) n += head.y; \
+        if (sdfBoundDistanceOf(data, p) >= best) n += head.y; \
     } else if (op == SDF_OPCODE_SEED_BEST) { \
-        best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0), \
-                                         sdfInstructionParams(i, 1), \
-                                         sdfInstructionParams(i, 2), \
-                                         sdfInstructionMisc(i).x)); \
+        best = min(best, sdfSeedDistanceOf(data, p)); \
     } else if (op == SDF_OPCODE_ACCUMULATE) { \
         --top; \
         best = min(best, stack[top]); \
@@ -42,7 +40,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
     else if (op == SDF_OPCODE_PUSH_POINT) { \
         saved[savedTop] = p; \
         ++savedTop; \
-        p = sdfInstructionPoint(i, p); \
+        p = sdfInstructionPointOf(data, p); \
     } else if (op == SDF_OPCODE_POP_POINT) { \
         --savedTop; \
         p = saved[savedTop]; \
@@ -53,7 +51,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_POINT_MODIFIERS
 #define SDF_DISTANCE_STEP_POINT_MODIFIERS \
     else if (op == SDF_OPCODE_POINT_MODIFIER) { \
-        p = sdfInstructionPointModifier(i, p); \
+        p = sdfInstructionPointModifierOf(data, p); \
     }
 #else
 #define SDF_DISTANCE_STEP_POINT_MODIFIERS
@@ -61,8 +59,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_DISTANCE_MODIFIERS
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS \
     else if (op == SDF_OPCODE_DISTANCE_MODIFIER) { \
-        stack[top - 1] = sdfDistanceModifierUsed(head.y, stack[top - 1], p, \
-                                                 sdfInstructionParams(i, 0)); \
+        stack[top - 1] = sdfDistanceModifierUsed(head.y, stack[top - 1], p, data.a0); \
     }
 #else
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS
@@ -73,8 +70,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
         float weightA; \
         float b = stack[top - 1]; \
         float a = stack[top - 2]; \
-        stack[top - 2] = \
-            sdfCombineUsed(head.y, a, b, sdfInstructionParams(i, 0), weightA); \
+        stack[top - 2] = sdfCombineUsed(head.y, a, b, data.a0, weightA); \
         --top; \
     }
 #else
@@ -83,10 +79,12 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #define SDF_DISTANCE_STEP \
     if (n < count) { \
         uint i = SDF_PROGRAM_AT(base + n); \
-        uvec4 head = sdfInstructionHead(i); /* opcode, kind, material, id */ \
+        SdfInstructionData data = sdfInstructionData(i); \
+        last = data; \
+        uvec4 head = data.head; /* opcode, kind, material, id */ \
         uint op = head.x; \
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) { \
-            stack[top] = sdfLeafDistance(i, p); \
+            stack[top] = sdfLeafDistanceOf(data, p); \
             ++top; \
         } \
         SDF_DISTANCE_STEP_BOUNDS \
@@ -97,8 +95,9 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
     } \
     ++n;
 
-// The distance at p of the program's list `base` to `base + count` (see sdfProgramRange).
-float sdfListDistance(vec3 p, uint base, uint count) {
+// The distance at p of the program's list `base` to `base + count` (see sdfProgramRange), and
+// the numbers of its last instruction (a cell's plane, common/sdf_cells.glsl).
+float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData last) {
     if (count == 0u) return SDF_FAR;
     float stack[SDF_MAX_STACK];
     int top = 0; // number of entries on the stack
@@ -120,6 +119,10 @@ float sdfListDistance(vec3 p, uint base, uint count) {
 #endif
     }
     return top == 0 ? best : stack[0];
+}
+float sdfListDistance(vec3 p, uint base, uint count) {
+    SdfInstructionData last;
+    return sdfListDistanceLast(p, base, count, last);
 }
 
 // The scene distance at p (world units; negative inside). Used by the march loop.

@@ -13,19 +13,17 @@ bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 // (see common/sdf_interpreter.glsl).
 #define SDF_PARTS_STEP \
     if (i < count) { \
-        uvec4 head = sdfInstructionHead(i); /* opcode, kind, material, id */ \
+        SdfInstructionData data = sdfInstructionData(i); /* read once: SdfInstructionData */ \
+        uvec4 head = data.head; /* opcode, kind, material, id */ \
         uint op = head.x; \
         if (op == SDF_OPCODE_BOUND_SKIP) { \
-            if (sdfBoundDistance(i, p) >= best) i += head.y; \
+            if (sdfBoundDistanceOf(data, p) >= best) i += head.y; \
             i += 1u; \
         } else if (op == SDF_OPCODE_SEED_BEST) { \
-            best = min(best, sdfSeedDistance(p, sdfInstructionParams(i, 0), \
-                                             sdfInstructionParams(i, 1), \
-                                             sdfInstructionParams(i, 2), \
-                                             sdfInstructionMisc(i).x)); \
+            best = min(best, sdfSeedDistanceOf(data, p)); \
             i += 1u; \
         } else { \
-            float d = sdfLeafDistance(i, p); \
+            float d = sdfLeafDistanceOf(data, p); \
             if (d < best) { \
                 best = d; \
                 nearest = i; \
