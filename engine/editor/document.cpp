@@ -107,6 +107,7 @@ bool Document::undo() {
     if (!canUndo()) return false;
     const Step& step = history_[--position_];
     scene_ = step.before;
+    placeInFile(scene_);
     selection = step.selectionBefore;
     alsoSelected = step.alsoBefore;
     committed_ = scene_;
@@ -121,6 +122,7 @@ bool Document::redo() {
     if (!canRedo()) return false;
     const Step& step = history_[position_++];
     scene_ = step.after;
+    placeInFile(scene_);
     selection = step.selectionAfter;
     alsoSelected = step.alsoAfter;
     committed_ = scene_;
@@ -128,6 +130,12 @@ bool Document::redo() {
     committedAlso_ = alsoSelected;
     ++revision_;
     return true;
+}
+
+void Document::placeInFile(Scene& scene) const {
+    if (file_.empty() || scene.file == file_) return;
+    rebaseScenePaths(scene, std::filesystem::absolute(file_).parent_path());
+    scene.file = file_;
 }
 
 bool Document::save(std::string& error) {

@@ -146,6 +146,45 @@ TEST_F(ScenePaths, SaveAsIntoASiblingFolderKeepsEveryPath) {
     EXPECT_EQ(after, before);
 }
 
+// Undo and redo across a Save As into another folder keep the scene in the new file: a step
+// from before the save holds the old file and paths written for it, and a path typed after the
+// undo must resolve from the folder the document is saved in (the next save writes it there).
+TEST_F(ScenePaths, UndoAndRedoAfterSaveAsKeepTheNewFolder) {
+    const fs::path a = folder_ / "A";
+    const fs::path b = folder_ / "B";
+    fs::create_directories(a / "files");
+    fs::create_directories(b);
+    fs::copy_file(kAssets / "textures" / "bricks_color.png", a / "files" / "bricks.png");
+    write(a / "scene.json", R"({"version": 1,
+        "materials": {"m": {"base_color_texture": "files/bricks.png"}},
+        "sdf": {"shape": "sphere", "material": "m"}})");
+    Diagnostics diagnostics;
+    std::optional<Scene> loaded = editor::loadSceneForEditing(a / "scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.format();
+    ASSERT_TRUE(prepareScene(*loaded, diskFileSource(), diagnostics)) << diagnostics.format();
+    editor::Document document(*loaded, a / "scene.json");
+    document.apply("exposure",
+                   [](Scene& scene, editor::Selection&) { scene.render.exposure = 2.0f; });
+    std::string error;
+    ASSERT_TRUE(document.saveAs(b / "scene.json", error)) << error;
+
+    const auto expectInB = [&](const char* after) {
+        SCOPED_TRACE(after);
+        const Scene& scene = document.scene();
+        EXPECT_EQ(scene.file, b / "scene.json");
+        EXPECT_EQ(scene.materials[0].baseColorTexture.file, "../A/files/bricks.png");
+        EXPECT_EQ(scene.materials[0].baseColorTexture.path,
+                  (a / "files" / "bricks.png").lexically_normal());
+        EXPECT_EQ(resolveScenePath(scene, "typed.png"), (b / "typed.png").lexically_normal());
+    };
+    ASSERT_TRUE(document.undo());
+    EXPECT_EQ(document.scene().render.exposure, 1.0f);
+    expectInB("undo");
+    ASSERT_TRUE(document.redo());
+    EXPECT_EQ(document.scene().render.exposure, 2.0f);
+    expectInB("redo");
+}
+
 // Absolute files stay absolute; relative ones follow the folder.
 TEST(ScenePathsRebase, AbsoluteFilesStayAbsolute) {
     Scene scene;

@@ -113,6 +113,10 @@ class Document {
     // Drops what no longer exists and repeats from alsoSelected; an empty active selection
     // takes the last of them.
     void tidySelection();
+    // A step from before a Save As into another folder holds the scene as it was written for
+    // the old file: undo and redo rewrite its paths for the document's file, as saved() did the
+    // scene's, so a path typed after them resolves from the folder the document is saved in.
+    void placeInFile(Scene& scene) const;
     Scene scene_;
     Scene committed_;              // the scene after the last step (what undo returns from)
     Selection committedSelection_; // the selection when the pending change began (undo restores)
