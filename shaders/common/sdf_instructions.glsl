@@ -76,19 +76,18 @@ float sdfLeafDistance(uint i, vec3 p) {
     return sdfLeafDistanceOf(sdfInstructionData(i), p);
 }
 
-// sdfLeafDistance at four points at once (a normal's taps), the instruction read once, in a loop
-// that is not unrolled (the primitive dispatch compiled once).
-vec4 sdfLeafDistances(uint i, vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
-    uvec4 head = sdfInstructionHead(i);
-    vec4 r0 = sdfInstructionRow(i, 0), r1 = sdfInstructionRow(i, 1), r2 = sdfInstructionRow(i, 2);
-    vec4 a = sdfInstructionParams(i, 0), b = sdfInstructionParams(i, 1);
-    vec4 c = sdfInstructionParams(i, 2);
+// Point k of four (a normal's taps), without an array: llvmpipe would keep one in memory.
+vec3 sdfTapPoint(int k, vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
+    return k == 0 ? t0 : k == 1 ? t1 : k == 2 ? t2 : t3;
+}
+
+// sdfLeafDistanceOf at the four taps, in a loop that is not unrolled (the primitive dispatch
+// compiled once).
+vec4 sdfLeafDistancesOf(SdfInstructionData data, vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
     vec4 d;
-    for (int k = SDF_ZERO; k < 4; ++k) {
-        vec3 p = k == 0 ? t0 : k == 1 ? t1 : k == 2 ? t2 : t3;
-        d[k] = sdfLeafLocalDistance(head, sdfAffine(r0, r1, r2, p), a, b, c);
-    }
-    return d * sdfInstructionMisc(i).x;
+    for (int k = SDF_ZERO; k < 4; ++k)
+        d[k] = sdfLeafDistanceOf(data, sdfTapPoint(k, t0, t1, t2, t3));
+    return d;
 }
 
 // A BoundSkip instruction's box distance at p, and a SeedBest's bound (its numbers `data`).

@@ -166,18 +166,18 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     stack[0] = best; // (read only if the program pushes nothing)
     tapStack[0] = bestTaps;
     for (uint n = 0u; n < count; ++n) {
-        uint i = SDF_PROGRAM_AT(base + n);
-        uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+        SdfInstructionData data = sdfInstructionData(SDF_PROGRAM_AT(base + n));
+        uvec4 head = data.head; // opcode, kind, material, id
         uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
-            stack[top] = sdfMaterialSurface(sdfLeafDistance(i, p), head.w, head.z,
-                                            sdfInstructionPoint(i, p));
-            if (withTaps) tapStack[top] = sdfLeafDistances(i, t0, t1, t2, t3);
+            stack[top] = sdfMaterialSurface(sdfLeafDistanceOf(data, p), head.w, head.z,
+                                            sdfInstructionPointOf(data, p));
+            if (withTaps) tapStack[top] = sdfLeafDistancesOf(data, t0, t1, t2, t3);
             ++top;
         }
 #if SDF_HAS_BOUNDS
         else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += head.y;
+            if (sdfBoundDistanceOf(data, p) >= best.distance) n += head.y;
         } else if (op == SDF_OPCODE_ACCUMULATE) {
             --top;
             if (stack[top].distance < best.distance) best = stack[top];
@@ -187,16 +187,16 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
 #if SDF_HAS_POINT_FRAMES
         else if (op == SDF_OPCODE_PUSH_POINT) {
             saved[savedTop] = p;
-            p = sdfInstructionPoint(i, p);
+            p = sdfInstructionPointOf(data, p);
             if (withTaps) {
                 savedTaps[4 * savedTop] = t0;
                 savedTaps[4 * savedTop + 1] = t1;
                 savedTaps[4 * savedTop + 2] = t2;
                 savedTaps[4 * savedTop + 3] = t3;
-                t0 = sdfInstructionPoint(i, t0);
-                t1 = sdfInstructionPoint(i, t1);
-                t2 = sdfInstructionPoint(i, t2);
-                t3 = sdfInstructionPoint(i, t3);
+                t0 = sdfInstructionPointOf(data, t0);
+                t1 = sdfInstructionPointOf(data, t1);
+                t2 = sdfInstructionPointOf(data, t2);
+                t3 = sdfInstructionPointOf(data, t3);
             }
             ++savedTop;
         } else if (op == SDF_OPCODE_POP_POINT) {
@@ -212,11 +212,11 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
 #endif
 #if SDF_HAS_POINT_MODIFIERS
         else if (op == SDF_OPCODE_POINT_MODIFIER) {
-            p = sdfInstructionPointModifier(i, p);
+            p = sdfInstructionPointModifierOf(data, p);
             if (withTaps) {
                 for (int k = SDF_ZERO; k < 4; ++k) {
-                    vec3 moved = sdfInstructionPointModifier(
-                        i, k == 0 ? t0 : k == 1 ? t1 : k == 2 ? t2 : t3);
+                    vec3 moved =
+                        sdfInstructionPointModifierOf(data, sdfTapPoint(k, t0, t1, t2, t3));
                     t0 = k == 0 ? moved : t0;
                     t1 = k == 1 ? moved : t1;
                     t2 = k == 2 ? moved : t2;
@@ -227,14 +227,13 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
 #endif
 #if SDF_HAS_DISTANCE_MODIFIERS
         else if (op == SDF_OPCODE_DISTANCE_MODIFIER) {
-            vec4 params = sdfInstructionParams(i, 0);
             stack[top - 1].distance =
-                sdfDistanceModifierUsed(head.y, stack[top - 1].distance, p, params);
+                sdfDistanceModifierUsed(head.y, stack[top - 1].distance, p, data.a0);
             if (withTaps) {
                 vec4 d = tapStack[top - 1];
                 for (int k = SDF_ZERO; k < 4; ++k)
-                    d[k] = sdfDistanceModifierUsed(
-                        head.y, d[k], k == 0 ? t0 : k == 1 ? t1 : k == 2 ? t2 : t3, params);
+                    d[k] = sdfDistanceModifierUsed(head.y, d[k], sdfTapPoint(k, t0, t1, t2, t3),
+                                                   data.a0);
                 tapStack[top - 1] = d;
             }
         }
@@ -242,14 +241,13 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
 #if SDF_HAS_COMBINE
         else if (op == SDF_OPCODE_COMBINE) {
             float w;
-            vec4 params = sdfInstructionParams(i, 0);
             float d = sdfCombineUsed(head.y, stack[top - 2].distance, stack[top - 1].distance,
-                                     params, w);
+                                     data.a0, w);
             stack[top - 2] = sdfBlendSurfaces(stack[top - 2], stack[top - 1], d, w);
             if (withTaps) {
                 vec4 a = tapStack[top - 2], b = tapStack[top - 1];
                 for (int k = SDF_ZERO; k < 4; ++k)
-                    a[k] = sdfCombineUsed(head.y, a[k], b[k], params, w);
+                    a[k] = sdfCombineUsed(head.y, a[k], b[k], data.a0, w);
                 tapStack[top - 2] = a;
             }
             --top;
