@@ -8,8 +8,11 @@
 namespace rmsc {
 namespace {
 
+// The last error GLFW reported on this thread: GLFW calls the callback on the thread whose call
+// failed, and the render thread and the shader warmer call it too (make current, post an event),
+// so one message shared by all would be written by two threads at once.
 std::string& lastGlfwError() {
-    static std::string message;
+    thread_local std::string message;
     return message;
 }
 
