@@ -26,8 +26,7 @@ CellPruningResult CellPruningJob::prune(const CellPruningRequest& request) {
     // (Read as 1: the holders' releases happened before; the fence orders their last reads of
     // the grid before the writes below.)
     std::atomic_thread_fence(std::memory_order_acquire);
-    result.again =
-        state_ && grid_ && repruneSdfCells(*state_, program, *grid_, request.outside.get());
+    result.again = state_ && grid_ && repruneSdfCells(*state_, program, *grid_);
     if (result.again && !content.empty() &&
         (glm::any(glm::lessThan(content.min, grid_->origin)) ||
          glm::any(glm::greaterThan(content.max, grid_->origin + glm::vec3(grid_->size)))))
@@ -39,8 +38,7 @@ CellPruningResult CellPruningJob::prune(const CellPruningRequest& request) {
         grid_.reset(); // (a held one stays with its holder)
         std::thread build([&] {
             lowerThisThreadsPriority();
-            grid_ = std::make_shared<SdfCellGrid>(
-                buildSdfCells(program, content, {}, &state_, request.outside.get()));
+            grid_ = std::make_shared<SdfCellGrid>(buildSdfCells(program, content, {}, &state_));
         });
         build.join();
     }

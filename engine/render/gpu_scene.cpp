@@ -49,11 +49,14 @@ bool everySurfaceInside(const PreparedScene& prepared, const SdfCellGrid& grid) 
            glm::all(glm::lessThanEqual(whole.box.max, grid.origin + grid.size));
 }
 
-// The program's floor, which far cells may take instead of their constant (sdf_cells.glsl).
+// The program's floor, which far cells may take instead of their constant (w + 1), and the
+// floor that stands outside the grid for what the outside list leaves out (w + 2): the same
+// one when there are both (the root's; sdf_cells.glsl, sdfCellDistance).
 void setCellFloor(GpuSdfCellHeader& header, const SdfCellGrid& grid) {
-    header.floorMin =
-        grid.floor ? glm::vec4(grid.floor->box.min, grid.floor->drop) : glm::vec4(0.0f);
-    header.floorMax = grid.floor ? glm::vec4(grid.floor->box.max, 1.0f) : glm::vec4(0.0f);
+    const std::optional<SdfFieldFloor>& floor = grid.floor ? grid.floor : grid.outsideFloor;
+    const float uses = (grid.floor ? 1.0f : 0.0f) + (grid.outsideFloor ? 2.0f : 0.0f);
+    header.floorMin = floor ? glm::vec4(floor->box.min, floor->drop) : glm::vec4(0.0f);
+    header.floorMax = floor ? glm::vec4(floor->box.max, uses) : glm::vec4(0.0f);
 }
 
 // The size of `buffer` (0 for none).

@@ -1028,13 +1028,6 @@ std::uint64_t hashList(std::span<const std::uint32_t> list) {
     return h;
 }
 
-// The whole program's list (the identity) after everything else, for points outside the grid.
-void appendOutsideList(SdfCellGrid& grid, std::size_t instructions, std::uint32_t first = 0) {
-    grid.outsideOffset = std::uint32_t(grid.words.size());
-    grid.outsideLength = std::uint32_t(instructions);
-    for (std::uint32_t i = 0; i < instructions; ++i)
-        grid.words.push_back(first + i);
-}
 void appendOutsideList(SdfCellGrid& grid, std::span<const std::uint32_t> list) {
     grid.outsideOffset = std::uint32_t(grid.words.size());
     grid.outsideLength = std::uint32_t(list.size());
@@ -1048,31 +1041,77 @@ bool neededByLeastOfShapes(const GpuSdfInstruction& in) {
     return opcode != SdfOpcode::Combine && opcode != SdfOpcode::Accumulate;
 }
 
-// The list of code[first, first + length) read as the least of its shapes: without its unions
-// and Accumulate, each BoundSkip skipping the positions that are left of those it skipped (a
-// copy of it with that count appended to `code`: every one, so that the code's length does not
-// change with the counts, and an edit of numbers still writes the GPU's buffers in place).
-std::vector<std::uint32_t> leastOfShapesList(std::vector<GpuSdfInstruction>& code,
-                                             std::uint32_t first, std::uint32_t length) {
-    std::vector<std::uint32_t> keptBefore(length + 1, 0); // kept positions before each one
-    for (std::uint32_t j = 0; j < length; ++j)
-        keptBefore[j + 1] = keptBefore[j] + (neededByLeastOfShapes(code[first + j]) ? 1 : 0);
-    std::vector<std::uint32_t> list;
-    list.reserve(keptBefore[length]);
-    for (std::uint32_t j = 0; j < length; ++j) {
-        const GpuSdfInstruction& in = code[first + j];
-        if (!neededByLeastOfShapes(in)) continue;
-        std::uint32_t index = first + j;
-        if (SdfOpcode(in.opcode) == SdfOpcode::BoundSkip) {
-            const std::uint32_t end = std::min(length, j + 1 + in.kind);
-            GpuSdfInstruction shorter = in;
-            shorter.kind = keptBefore[end] - keptBefore[j + 1];
-            index = std::uint32_t(code.size());
-            code.push_back(shorter); // (`in` may move: code grows)
+// The postfix list of the subtree at `root` (its leaves' instructions, then each node's own
+// after its operands), appended to `out`; without recursion (a chain of thousands of
+// operations is as deep).
+void appendPostfix(const ProgramTree& tree, int root, std::vector<std::uint32_t>& out) {
+    std::vector<std::pair<int, bool>> todo{{root, false}}; // (node, its operands listed)
+    while (!todo.empty()) {
+        const auto [n, operandsListed] = todo.back();
+        todo.pop_back();
+        const TreeNode& t = tree.nodes[std::size_t(n)];
+        if (t.kind == NodeKind::Leaf) {
+            for (std::uint32_t k = t.begin; k < t.end; ++k)
+                out.push_back(k);
+        } else if (operandsListed) {
+            out.push_back(t.instruction);
+        } else {
+            todo.push_back({n, true});
+            if (t.kind == NodeKind::Combine) todo.push_back({t.b, false});
+            todo.push_back({t.a, false});
         }
-        list.push_back(index);
     }
+}
+
+bool hasBoundingHierarchy(const std::vector<GpuSdfInstruction>& code) {
+    return std::any_of(code.begin(), code.end(), [](const GpuSdfInstruction& in) {
+        const SdfOpcode op = SdfOpcode(in.opcode);
+        return op == SdfOpcode::BoundSkip || op == SdfOpcode::SeedBest ||
+               op == SdfOpcode::Accumulate;
+    });
+}
+
+GpuSdfInstruction unionInstruction() {
+    GpuSdfInstruction unite;
+    unite.opcode = std::uint32_t(SdfOpcode::Combine);
+    unite.kind = std::uint32_t(SdfOp::Union);
+    return unite;
+}
+
+// The whole program as a list without its bounding hierarchy: its tree in postfix, the parts
+// the hierarchy accumulates folded with a union appended to `code` (the program's instructions).
+// The program itself when it has no hierarchy; nullopt when its tree cannot be read, or needs
+// a deeper stack than the program.
+std::optional<std::vector<std::uint32_t>> wholeTreeList(std::vector<GpuSdfInstruction>& code) {
+    std::vector<std::uint32_t> list(code.size());
+    std::iota(list.begin(), list.end(), 0u);
+    if (!hasBoundingHierarchy(code)) return list;
+    const std::uint32_t unite = std::uint32_t(code.size());
+    ProgramTree tree;
+    if (!readTree(code, unite, tree) || tree.nodes.empty()) return std::nullopt;
+    code.push_back(unionInstruction());
+    list.clear();
+    appendPostfix(tree, int(tree.nodes.size()) - 1, list);
+    if (stackDepth(code, list) > kSdfMaxStack) return std::nullopt;
     return list;
+}
+
+// No grid: every point runs the whole program (without its hierarchy where it reads so, as
+// sdfCellsNeedHierarchy tells the shader).
+void wholeProgramOnly(SdfCellGrid& grid, const SdfProgram& program) {
+    grid.levels = 0;
+    grid.code = program.instructions;
+    grid.words.clear();
+    grid.floor.reset();
+    grid.outsideFloor.reset();
+    grid.reading = SdfListReading::Postfix;
+    std::optional<std::vector<std::uint32_t>> list = wholeTreeList(grid.code);
+    if (!list) {
+        grid.code = program.instructions;
+        list.emplace(program.instructions.size());
+        std::iota(list->begin(), list->end(), 0u);
+    }
+    appendOutsideList(grid, *list);
 }
 
 } // namespace
@@ -1089,6 +1128,11 @@ std::optional<SdfFieldFloor> sdfProgramFloor(const std::vector<GpuSdfInstruction
     const NodeFloor root = nodeFloors(code, tree).back();
     if (!root.valid || root.box.empty()) return std::nullopt;
     return SdfFieldFloor{root.box, root.drop};
+}
+
+bool sdfCellsNeedHierarchy(const std::vector<GpuSdfInstruction>& code) {
+    std::vector<GpuSdfInstruction> copy = code;
+    return !wholeTreeList(copy);
 }
 
 Aabb sdfContentBox(const SdfNode& root) {
@@ -1112,11 +1156,12 @@ struct SdfCellState {
     std::optional<DirectChain> direct;    // the top chain, when cells are pruned from it whole
     std::vector<std::uint32_t> constants; // kFarSteps per level
     SdfCellOptions options;
-    // The program run outside the grid: the program itself, or the one given to run there
-    // (after the constants), as its list (the identity, or its least-of-shapes list).
+    std::uint32_t unionInstruction = 0; // in code: the union the outside list unites with
+    // What points outside the grid run (setOutsideList) and the floor of what it leaves out.
     std::vector<std::uint32_t> outsideList;
-    // The program is of a least-of-shapes form (sdfIsLeastOfShapes, with the outside one): the
-    // lists leave their unions out (SdfListReading::LeastOfShapes).
+    std::optional<SdfFieldFloor> outsideFloor;
+    // The program is of a least-of-shapes form (sdfIsLeastOfShapes): the lists leave their
+    // unions out (SdfListReading::LeastOfShapes).
     bool leastOfShapes = false;
     std::vector<std::uint32_t> shapesScratch; // setLeafCell's list without its unions
     int levels = 0;
@@ -1554,11 +1599,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     grid.stats = {};
     grid.changedWords.clear();
     if (s.tooDeep) { // a pruned part deeper than the stack (the fold of accumulated parts)
-        grid.levels = 0;
-        grid.code = s.program.instructions;
-        grid.words.clear();
-        appendOutsideList(grid, s.program.instructions.size());
-        grid.reading = SdfListReading::Postfix;
+        wholeProgramOnly(grid, s.program);
         grid.changedWords.push_back({0, std::uint32_t(grid.words.size())});
         grid.packStamp = grid.changedSince = 0;
         return;
@@ -1573,6 +1614,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     grid.floor.reset(); // the root's, made again after an edit (updateNodeFloors)
     if (!s.floors.empty() && s.floors.back().valid && !s.floors.back().box.empty())
         grid.floor = SdfFieldFloor{s.floors.back().box, s.floors.back().drop};
+    grid.outsideFloor = s.outsideFloor;
     const std::size_t blockCount = s.blocks.size();
     const std::uint32_t base =
         std::uint32_t(inPlace ? s.packedBase : 128 * (blockCount + (blockCount + 7) / 8));
@@ -1653,26 +1695,62 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     grid.stats.bytes = grid.words.size() * sizeof(std::uint32_t);
 }
 
-// `outside` after the constants (when it reads the same data as the program: a bounding
-// hierarchy orders the same parts otherwise), else the program itself, for points outside.
-void setOutsideProgram(SdfCellState& s, std::size_t treeCode, const SdfProgram* outside) {
-    s.code.resize(treeCode);
-    const bool given = outside && !outside->instructions.empty() && outside->data == s.program.data;
-    std::uint32_t first = 0, length = std::uint32_t(s.program.instructions.size());
-    if (given) {
-        first = std::uint32_t(treeCode);
-        length = std::uint32_t(outside->instructions.size());
-        s.code.insert(s.code.end(), outside->instructions.begin(), outside->instructions.end());
+// What points outside the grid run: the tree without the operands of its top chain of unions
+// whose floors bound them there (the content: every operand but the planes and other unbounded
+// ones), in s.outsideList, and one floor for those it leaves out, in s.outsideFloor (their
+// boxes' union, the largest drop). At a point outside the grid the field is the least of the
+// list's value and the operands', which is at least the floor's distance; the shader takes the
+// least of the list and that distance (common/sdf_cells.glsl, sdfCellDistance): a lower bound,
+// equal to the field wherever the list is nearer, which is everywhere a march outside the grid
+// can meet a surface. The floor stays a margin away from the grid's faces (so nothing outside
+// the grid reads as a hit on it), else nothing is left out. The list holds no bounding
+// hierarchy: the cells' shader leaves its branches out (each costs every step on llvmpipe).
+// A grid whose whole program is bounded runs nothing outside (its floor alone: the grids).
+constexpr float kOutsideFloorMargin = 0.01f; // of the grid's edge
+
+void setOutsideList(SdfCellState& s) {
+    s.outsideList.clear();
+    s.outsideFloor.reset();
+    const std::vector<TreeNode>& nodes = s.tree.nodes;
+    std::vector<int> operands, todo{int(nodes.size()) - 1};
+    while (!todo.empty()) { // the top chain's operands, in order (a bounded chain is one)
+        const int n = todo.back();
+        todo.pop_back();
+        const TreeNode& t = nodes[std::size_t(n)];
+        const bool bounded = s.floors[std::size_t(n)].valid;
+        if (!bounded && t.kind == NodeKind::Combine &&
+            SdfOp(s.code[t.instruction].kind) == SdfOp::Union) {
+            todo.push_back(t.b);
+            todo.push_back(t.a);
+        } else {
+            operands.push_back(n);
+        }
     }
-    s.leastOfShapes = sdfIsLeastOfShapes(s.program) && (!given || sdfIsLeastOfShapes(*outside));
-    if (s.leastOfShapes) {
-        s.outsideList = leastOfShapesList(s.code, first, length);
-    } else {
-        s.outsideList.resize(length);
-        std::iota(s.outsideList.begin(), s.outsideList.end(), first);
+    SdfFieldFloor left{Aabb{}, 0.0f};
+    for (int o : operands) {
+        const NodeFloor& f = s.floors[std::size_t(o)];
+        if (!f.valid || f.box.empty()) continue;
+        left.box.add(f.box);
+        left.drop = std::max(left.drop, f.drop);
     }
-    s.identity.resize(s.code.size());
-    std::iota(s.identity.begin(), s.identity.end(), 0u);
+    const glm::vec3 below = left.box.min - s.origin;
+    const glm::vec3 above = s.origin + glm::vec3(s.size) - left.box.max;
+    const float gap = std::min(std::min(std::min(below.x, below.y), std::min(below.z, above.x)),
+                               std::min(above.y, above.z));
+    const bool leaveOut = !left.box.empty() && gap - left.drop > kOutsideFloorMargin * s.size;
+    if (leaveOut) s.outsideFloor = left;
+    std::size_t united = 0;
+    for (int o : operands) {
+        const NodeFloor& f = s.floors[std::size_t(o)];
+        if (leaveOut && f.valid && !f.box.empty()) continue;
+        appendPostfix(s.tree, o, s.outsideList);
+        if (united++ > 0) s.outsideList.push_back(s.unionInstruction);
+    }
+    if (s.leastOfShapes)
+        std::erase_if(s.outsideList,
+                      [&](std::uint32_t i) { return !neededByLeastOfShapes(s.code[i]); });
+    else if (stackDepth(s.code, s.outsideList) > kSdfMaxStack)
+        s.tooDeep = true;
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -1683,42 +1761,29 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 } // namespace
 
 SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
-                          const SdfCellOptions& options, SdfCellStatePtr* keep,
-                          const SdfProgram* outside) {
+                          const SdfCellOptions& options, SdfCellStatePtr* keep) {
     const auto started = std::chrono::steady_clock::now();
     if (keep) keep->reset();
     SdfCellGrid grid;
-    auto wholeProgramOnly = [&] { // no grid: everything runs the whole program
-        grid.code = program.instructions;
-        appendOutsideList(grid, program.instructions.size());
-    };
     if (content.empty() || program.instructions.empty() || options.levels < 1) {
-        wholeProgramOnly();
+        wholeProgramOnly(grid, program);
         return grid;
     }
     SdfCellStatePtr state(new SdfCellState);
     SdfCellState& s = *state;
     s.program = program;
-    // The program, the union below, the far constants, the outside program and its box tests'
-    // copies (leastOfShapesList), reserved whole: a large scene's code is not copied as it grows.
-    const std::vector<GpuSdfInstruction>& runOutside =
-        outside ? outside->instructions : program.instructions;
-    const auto boxTests = std::count_if(runOutside.begin(), runOutside.end(), [](const auto& in) {
-        return SdfOpcode(in.opcode) == SdfOpcode::BoundSkip;
-    });
-    s.code.reserve(program.instructions.size() + 1 + 6 * kFarSteps +
-                   (outside ? outside->instructions.size() : 0) + std::size_t(boxTests));
+    // The program, the union below and the far constants, reserved whole: a large scene's code
+    // is not copied as it grows.
+    s.code.reserve(program.instructions.size() + 1 + 6 * kFarSteps);
     s.code = program.instructions;
     s.options = options;
     s.keepTrees = keep != nullptr;
-    // The union the accumulated parts of a bounding hierarchy are folded with.
-    GpuSdfInstruction unite;
-    unite.opcode = std::uint32_t(SdfOpcode::Combine);
-    unite.kind = std::uint32_t(SdfOp::Union);
-    const std::uint32_t unionInstruction = std::uint32_t(s.code.size());
-    s.code.push_back(unite);
-    if (!readTree(program.instructions, unionInstruction, s.tree) || s.tree.nodes.empty()) {
-        wholeProgramOnly();
+    // The union the accumulated parts of a bounding hierarchy are folded with (and the outside
+    // list's operands).
+    s.unionInstruction = std::uint32_t(s.code.size());
+    s.code.push_back(unionInstruction());
+    if (!readTree(program.instructions, s.unionInstruction, s.tree) || s.tree.nodes.empty()) {
+        wholeProgramOnly(grid, program);
         return grid;
     }
     s.floors = nodeFloors(s.code, s.tree);
@@ -1734,7 +1799,10 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
             s.constants.push_back(std::uint32_t(s.code.size()));
             s.code.push_back(constantInstruction(float(m) * cellEdge(s, level)));
         }
-    setOutsideProgram(s, s.code.size(), outside);
+    s.identity.resize(s.code.size());
+    std::iota(s.identity.begin(), s.identity.end(), 0u);
+    s.leastOfShapes = sdfIsLeastOfShapes(s.program);
+    setOutsideList(s);
 
     // The per-cell arrays grow a block at a time up to the cell budget: reserved for it once,
     // they are never copied as they grow (two copies at once), and the part never used is never
@@ -1761,8 +1829,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     return grid;
 }
 
-bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& grid,
-                     const SdfProgram* outside) {
+bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& grid) {
     const auto started = std::chrono::steady_clock::now();
     const std::vector<GpuSdfInstruction>& before = s.program.instructions;
     const std::vector<GpuSdfInstruction>& after = edited.instructions;
@@ -1812,7 +1879,7 @@ bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& gri
     std::copy(after.begin(), after.end(), s.program.instructions.begin());
     updateNodeFloors(s.code, s.tree, changed, s.floors);
     if (s.direct) refitDirectChain(*s.direct, s.floors);
-    setOutsideProgram(s, s.constants.back() + 1, outside);
+    setOutsideList(s);
     s.prunedCells = 0;
     if (any) {
         pruneBlocks(s, {{0u, false, bool(scope)}}, changed, scope ? &*scope : nullptr);
@@ -1845,6 +1912,13 @@ SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p) {
         block = e & ~kSdfCellRefined;
     }
     return outside;
+}
+
+float sdfCellOutsideFloor(const SdfCellGrid& grid, glm::vec3 p) {
+    if (!grid.outsideFloor || grid.levels == 0 || sdfCellRange(grid, p).level != 0) return INFINITY;
+    const SdfFieldFloor& f = *grid.outsideFloor;
+    const glm::vec3 away = glm::max(glm::max(f.box.min - p, p - f.box.max), glm::vec3(0.0f));
+    return glm::length(away) - f.drop;
 }
 
 std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p) {

@@ -3,6 +3,7 @@
 // stack becomes one variable per point frame; each instruction becomes one statement.
 #include "sdf/glsl_codegen.hpp"
 
+#include "sdf/cell_pruning.hpp"
 #include "sdf/cost_model.hpp"
 #include "sdf/glsl_constants.hpp"
 #include "sdf/modifiers.hpp"
@@ -277,8 +278,11 @@ std::string interpreterFeatures(const std::vector<GpuSdfInstruction>& code, bool
     define("SDF_HAS_POINT_FRAMES", has(SdfOpcode::PushPoint));
     define("SDF_HAS_POINT_MODIFIERS", has(SdfOpcode::PointModifier));
     define("SDF_HAS_DISTANCE_MODIFIERS", has(SdfOpcode::DistanceModifier));
+    // The cells' lists hold no bounding hierarchy, but for a program whose tree cannot be read
+    // (engine/sdf/cell_pruning.hpp).
     define("SDF_HAS_BOUNDS",
-           has(SdfOpcode::BoundSkip) || has(SdfOpcode::SeedBest) || has(SdfOpcode::Accumulate));
+           (has(SdfOpcode::BoundSkip) || has(SdfOpcode::SeedBest) || has(SdfOpcode::Accumulate)) &&
+               (!cells || sdfCellsNeedHierarchy(code)));
     std::vector<std::string> names;
     for (const ProfileSpec& spec : profileCatalogue())
         if (profiles[std::size_t(spec.type)]) names.push_back("SDF_PROFILE_" + glslName(spec.name));

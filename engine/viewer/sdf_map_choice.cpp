@@ -116,8 +116,7 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
 namespace rmsc::app {
 
 // The cells of prepared_->sdf, the tree without the bounding hierarchy (whose order follows
-// where things are: a move would change many instructions), with the interpreter's program
-// (the hierarchy's box tests) for points outside the grid, pruned by cellPruning_ on its
+// where things are: a move would change many instructions), pruned by cellPruning_ on its
 // worker: again from the kept state after an edit of numbers, else anew.
 void ViewRenderer::updateCells(int frameNumber, bool wait) {
     const bool wanted =
@@ -127,7 +126,7 @@ void ViewRenderer::updateCells(int frameNumber, bool wait) {
         // Nothing draws the last cells again until the new ones come (they are pending), and the
         // worker prunes into the grid in place when nobody else holds it (instead of a copy).
         cellGrid_.reset();
-        cellPruning_.request({uploadedRevision_, frameNumber, prepared_, boundedSdf_});
+        cellPruning_.request({uploadedRevision_, frameNumber, prepared_});
     }
     if (wait) cellPruning_.waitUntilIdle();
     std::optional<editor::CellPruningResult> result = cellPruning_.take();

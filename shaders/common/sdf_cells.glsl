@@ -2,7 +2,10 @@
 // on the program of the cell the point is in, out of the cell table that engine/sdf/
 // cell_pruning.cpp builds (layout there, SdfCellGrid): blocks of 64 cells, 4 x 4 x 4 per level,
 // each cell its list of instruction indices or the block of its 64 children. Points outside the
-// grid run the whole program. Expects `sdfPrimitive` declared before it.
+// grid run the outside list (the whole program's unbounded operands, a floor plane) and the
+// distance to the floor of the rest (sdfCellDistance). No list holds a bounding hierarchy (but
+// for programs whose tree cannot be read: SDF_HAS_BOUNDS). Expects `sdfPrimitive` declared
+// before it.
 #define SDF_CELLS 1
 
 // (Included here, not in the branches below: an include is expanded once, before the
@@ -13,8 +16,8 @@ layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
     vec4 sdfCellOrigin; // xyz = the grid cube's corner, w = its edge
     uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the whole program's list, w = 1 when
                         // every surface lies inside the grid's cube
-    vec4 sdfCellFloorMin; // the whole program's floor (SdfCellGrid::floor): its box, w = drop
-    vec4 sdfCellFloorMax; // w = 1 when there is one
+    vec4 sdfCellFloorMin; // a floor (sdfCellDistance): its box, w = drop
+    vec4 sdfCellFloorMax; // w: 1 the whole program's, + 2 the outside list's, 0 none
     // then the words (SdfCellGrid::words), read through sdfCellTexels below
 };
 
@@ -101,22 +104,27 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
     sdfProgramCell(p, base, count, affine, cell);
 }
 
-// The distance at p of a cell whose program is `distance`: a far cell's constant is the least
-// the field can be anywhere in the cell, so a coarse cell beside the content gives its far
-// side no more than its near side. The whole program's floor (engine/sdf/cell_pruning.hpp,
-// SdfCellGrid::floor: at every point outside its box the field is at least the distance to the
-// box less the drop) is a lower bound at p itself; the larger of the two is the distance there. A
-// cone (passes/cone.frag) then passes the empty space beside the content as the bounding
-// hierarchy's box tests let it (it stopped on the constants), and soft shadows and AO read less
-// darkness into it. Without a plane in the scene every affine cell is a constant (and a scene
-// with a plane has no floor).
-float sdfCellDistance(float distance, vec3 p, bool affine) {
-#ifndef SDF_CELLS_PLANES
-    if (affine && sdfCellFloorMax.w != 0.0) {
-        vec3 outside = max(max(sdfCellFloorMin.xyz - p, p - sdfCellFloorMax.xyz), vec3(0.0));
-        distance = max(distance, length(outside) - sdfCellFloorMin.w);
+// The distance at p of the cell `cell` (sdfProgramCell) whose list gives `distance`. A floor
+// (engine/sdf/cell_pruning.hpp, SdfFieldFloor: at every point outside its box a field is at
+// least the distance to the box less the drop) counts twice:
+// - Outside the grid (cell.w = 0) the list leaves out the operands the floor stands for
+//   (SdfCellGrid::outsideFloor, w = 2 or 3), so the distance is the least of the two: a lower bound, equal
+//   to the field wherever the list is nearer (every surface a march can meet out there), and
+//   the box's distance, not a bounding hierarchy's program, where the content is nearer.
+// - A far cell's constant is the least the field can be anywhere in the cell, so a coarse cell
+//   beside the content gives its far side no more than its near side. The whole program's
+//   floor (w = 1 or 3) is a lower bound at p itself; the larger of the two is the distance there. A
+//   cone (passes/cone.frag) then passes the empty space beside the content (it stopped on the
+//   constants), and soft shadows and AO read less darkness into it. Without a plane in the
+//   scene every affine cell is a constant (and a scene with a plane has no such floor).
+float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell) {
+    bool outside = cell.w == 0.0;
+    float uses = sdfCellFloorMax.w;
+    if (outside ? uses >= 2.0 : affine && (uses == 1.0 || uses == 3.0)) {
+        vec3 away = max(max(sdfCellFloorMin.xyz - p, p - sdfCellFloorMax.xyz), vec3(0.0));
+        float floorDistance = length(away) - sdfCellFloorMin.w;
+        distance = outside ? min(distance, floorDistance) : max(distance, floorDistance);
     }
-#endif
     return distance;
 }
 
@@ -126,15 +134,14 @@ float sdfCellDistance(float distance, vec3 p, bool affine) {
 // A program whose every part is one shape (the grids: a plain union of shapes, with or without
 // its bounding hierarchy; sdfIsLeastOfShapes in engine/sdf/program_form.cpp) needs no stack:
 // each cell's list is shapes, the whole program's its box tests and shapes, both a running
-// minimum. (A list with unions or Accumulate still reads right: they do nothing here.)
+// minimum. (A list with unions still reads right: they do nothing here.)
 
 bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 
 // One instruction per loop iteration: a cell's list is a few shapes, and llvmpipe would run
-// unrolled instructions past its end for nothing (masked). The cells' lists hold no unions
+// unrolled instructions past its end for nothing (masked). The lists hold no unions
 // (SdfListReading::LeastOfShapes, engine/sdf/cell_pruning.cpp): a running minimum is their
-// value, so an iteration is a shape. The whole program's list, for points outside the grid, is
-// written the same way: its box tests and shapes, without the Accumulate after each part.
+// value, so an iteration is a shape.
 
 // Also the numbers of the list's last instruction (a cell's plane, sdfDistanceAlong).
 float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData last) {
@@ -145,16 +152,8 @@ float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData 
         last = data;
         uvec4 head = data.head; // opcode, kind, material, id
         uint op = head.x;
-        if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
+        if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE)
             best = min(best, sdfLeafDistanceOf(data, p));
-        }
-#if SDF_HAS_BOUNDS
-        else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistanceOf(data, p) >= best) n += head.y;
-        } else if (op == SDF_OPCODE_SEED_BEST) {
-            best = min(best, sdfSeedDistanceOf(data, p));
-        }
-#endif
     }
     return best;
 }
@@ -168,7 +167,7 @@ float sdfDistance(vec3 p) {
     bool affine;
     vec4 cell;
     sdfProgramCell(p, base, count, affine, cell);
-    return sdfCellDistance(sdfListDistance(p, base, count), p, affine);
+    return sdfCellDistance(sdfListDistance(p, base, count), p, affine, cell);
 }
 
 // The instruction of the shape sdfSurface last found nearest, and its field: the normal at the
@@ -192,11 +191,6 @@ SdfSurface sdfSurface(vec3 p) {
                 sdfNearestShape = i;
             }
         }
-#if SDF_HAS_BOUNDS
-        else if (op == SDF_OPCODE_BOUND_SKIP) {
-            if (sdfBoundDistance(i, p) >= best.distance) n += head.y;
-        }
-#endif
     }
     return best;
 }
@@ -233,7 +227,7 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
     vec4 cell;
     sdfProgramCell(p, base, count, affine, cell);
     SdfInstructionData last; // an affine cell's list is its plane: the numbers the list read
-    float d = sdfListDistanceLast(p, base, count, last);
+    float d = sdfCellDistance(sdfListDistanceLast(p, base, count, last), p, affine, cell);
     advance = 0.0;
     if (affine) {
         vec3 towards = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));

@@ -132,7 +132,7 @@ float sdfDistance(vec3 p) {
     bool affine;
     vec4 cell;
     sdfProgramCell(p, base, count, affine, cell);
-    return sdfCellDistance(sdfListDistance(p, base, count), p, affine);
+    return sdfCellDistance(sdfListDistance(p, base, count), p, affine, cell);
 #else
     sdfProgramRange(p, base, count);
     return sdfListDistance(p, base, count);

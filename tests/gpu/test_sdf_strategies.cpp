@@ -5,6 +5,7 @@
 #include "scene_text.hpp"
 
 #include "render/readback.hpp"
+#include "sdf/cell_pruning.hpp"
 #include "sdf/compiler.hpp"
 
 #include <algorithm>
@@ -136,6 +137,45 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
     ASSERT_EQ(map.find("SDF_CELLS_LEAN"), std::string::npos);
     expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
                      "strategy_cells_smooth_tree");
+}
+
+// Seen from outside the cells' grid, a scene drawn with cells runs the outside list (the floor
+// plane) with the distance to the content's floor box standing for the rest, and no bounding
+// hierarchy (common/sdf_cells.glsl, sdfCellDistance): rays march towards the content by that
+// box, and the plane reaches the horizon outside the grid. It must draw what generated code
+// draws.
+TEST(SdfStrategies, CellsSeenFromOutsideTheGridAndBakedDrawTheSameImage) {
+    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+        "camera": {"position": [6, 4, 40], "target": [0.3, 0.3, 0], "fov": 9},
+        "render": {"max_distance": 120},
+        "materials": {"a": {"base_color": "#e76f51", "roughness": 0.3},
+                      "b": {"base_color": "#2a9d8f", "metallic": 0.6},
+                      "c": {"base_color": "#e9c46a"}},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+        "sdf": {"children": [
+          {"shape": "plane", "normal": [0, 1, 0], "offset": 0, "material": "b"},
+          {"op": "smooth_union", "smoothness": 0.3, "children": [
+            {"shape": "sphere", "radius": 0.45, "position": [-0.6, 0.45, 0], "material": "a"},
+            {"shape": "sphere", "radius": 0.4, "position": [0.0, 0.6, 0.1], "material": "c"}]},
+          {"op": "subtraction", "children": [
+            {"shape": "box", "half_extents": [0.35, 0.35, 0.35], "position": [0.9, 0.35, 0],
+             "material": "c"},
+            {"shape": "sphere", "radius": 0.3, "position": [0.9, 0.6, 0.3], "material": "a"}]},
+          {"shape": "torus", "major_radius": 0.3, "minor_radius": 0.1, "position": [0.2, 0.1, -0.8], "material": "a"}
+        ]}})");
+    const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
+    ASSERT_NE(map.find("common/sdf_cells.glsl"), std::string::npos);
+    ASSERT_NE(map.find("#define SDF_HAS_BOUNDS 0"), std::string::npos) << map;
+    const SdfCellGrid grid = buildSdfCells(prepared.sdf, sdfContentBox(*prepared.scene.sdf));
+    ASSERT_GT(grid.levels, 0);
+    ASSERT_TRUE(grid.outsideFloor);
+    EXPECT_EQ(grid.outsideLength, 1u); // the plane
+    const glm::vec3 camera = prepared.scene.camera.position;
+    EXPECT_TRUE(glm::any(glm::lessThan(camera, grid.origin)) ||
+                glm::any(glm::greaterThan(camera, grid.origin + glm::vec3(grid.size))))
+        << "the camera should be outside the grid";
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
+                     "strategy_cells_from_outside");
 }
 
 // Every point and distance modifier of the samples drawn with cells runs the interpreter's

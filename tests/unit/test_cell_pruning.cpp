@@ -604,13 +604,15 @@ TEST(CellPruning, MovingOneShapeAmongGroupsWithoutFloorsPrunesFewCellsAgain) {
     EXPECT_LT(r.grid.stats.prunedCells * 4, r.fullCells);
 }
 
-// Cells pruned from the tree without its bounding hierarchy, the hierarchy's program run outside
-// the grid: outside, the list is that program (its box tests), giving the whole distance and
-// surface; inside, the cells agree with the whole program; an edit keeps both.
-TEST(CellPruning, TheOutsideRunsTheProgramGivenForIt) {
+// Outside the grid the list holds the whole program's unbounded operands (here a plane) and the
+// floor of the rest stands for them (SdfCellGrid::outsideFloor): the least of the two is never
+// above the whole program's distance, equals it (and its object id) wherever the list is the
+// nearer, and stays a margin above zero, so no march meets the content out there. No bounding
+// hierarchy in the list, built from the tree with or without one; an edit keeps all of it.
+TEST(CellPruning, TheOutsideRunsTheUnboundedOperandsAndTheRestsFloor) {
     const auto text = [](float moved) {
         std::ostringstream s;
-        s << R"({"children": [{"shape": "plane", "normal": [0, 1, 0], "offset": 1})";
+        s << R"({"children": [{"shape": "plane", "normal": [0, 1, 0], "offset": -1})";
         for (int i = 0; i < 16; ++i)
             s << R"(, {"shape": ")" << (i % 2 ? "sphere" : "box") << R"(", "position": [)"
               << (i % 4) * 0.8f + (i == 5 ? moved : 0.0f) << ", 0, " << (i / 4) * 0.8f
@@ -618,72 +620,76 @@ TEST(CellPruning, TheOutsideRunsTheProgramGivenForIt) {
         s << "]}";
         return s.str();
     };
-    const std::string sdf = text(0.0f);
-    const std::optional<Compiled> flat = compileText(sdf, false), bounded = compileText(sdf, true);
-    ASSERT_TRUE(flat && bounded);
-    ASSERT_NE(flat->program.instructions.size(), bounded->program.instructions.size());
-    const Aabb box = sdfContentBox(*flat->scene.sdf);
-    SdfCellOptions options;
-    options.levels = 2;
-    SdfCellStatePtr state;
-    SdfCellGrid grid = buildSdfCells(flat->program, box, options, &state, &bounded->program);
-    ASSERT_GT(grid.levels, 0);
-    const auto expectOutside = [&](const SdfProgram& whole, const SdfProgram& withBoxes) {
+    const std::vector<Material> materials = testMaterials();
+    const auto expectOutside = [&](const SdfCellGrid& grid, const SdfProgram& whole,
+                                   const std::string& what) {
         const std::span<const std::uint32_t> outside =
             std::span(grid.words).subspan(grid.outsideOffset, grid.outsideLength);
-        // The hierarchy's program read as the least of its shapes: without its Accumulate,
-        // each box test skipping as many of the positions left.
-        ASSERT_EQ(grid.reading, SdfListReading::LeastOfShapes);
-        std::size_t k = 0;
-        for (std::size_t i = 0; i < withBoxes.instructions.size(); ++i) {
-            GpuSdfInstruction expected = withBoxes.instructions[i];
-            if (SdfOpcode(expected.opcode) == SdfOpcode::Accumulate) continue;
-            ASSERT_LT(k, outside.size());
-            if (SdfOpcode(expected.opcode) == SdfOpcode::BoundSkip) {
-                std::uint32_t left = 0;
-                for (std::size_t j = i + 1; j <= i + expected.kind; ++j)
-                    left += SdfOpcode(withBoxes.instructions[j].opcode) != SdfOpcode::Accumulate;
-                expected.kind = left;
-            }
-            ASSERT_EQ(std::memcmp(&grid.code[outside[k]], &expected, sizeof expected), 0) << i;
-            ++k;
-        }
-        ASSERT_EQ(k, outside.size());
-        const std::vector<Material> materials = testMaterials();
-        for (const glm::vec3 p :
-             {grid.origin - glm::vec3(1.0f), grid.origin + glm::vec3(grid.size * 1.1f),
-              glm::vec3(0.0f, 0.0f, grid.origin.z - 3.0f)}) {
+        ASSERT_EQ(outside.size(), 1u) << what;
+        EXPECT_EQ(SdfOpcode(grid.code[outside[0]].opcode), SdfOpcode::Shape) << what;
+        EXPECT_EQ(PrimitiveId(grid.code[outside[0]].kind), PrimitiveId::Plane) << what;
+        ASSERT_TRUE(grid.outsideFloor) << what;
+        std::mt19937 rng(9);
+        std::uniform_real_distribution<float> u(-1.0f, 2.0f), near(-0.05f, 0.05f);
+        int checked = 0, listNearer = 0, hits = 0;
+        for (int i = 0; i < 6000; ++i) {
+            glm::vec3 p = grid.origin + grid.size * glm::vec3(u(rng), u(rng), u(rng));
+            if (i % 2) p.y = -1.0f + near(rng); // at the plane (y = -1)
             const SdfCellRange range = sdfCellRange(grid, p);
-            EXPECT_EQ(range.level, 0);
+            if (range.level != 0) continue;
             const std::span<const std::uint32_t> list =
                 std::span(grid.words).subspan(range.offset, range.length);
-            EXPECT_FLOAT_EQ(sdfDistanceOrdered(whole, grid.code, list, p, nullptr, grid.reading),
-                            sdfDistance(whole, p));
-            EXPECT_EQ(
-                sdfSurfaceOrdered(whole, grid.code, list, materials, p, grid.reading).objectId,
-                sdfSurface(whole, materials, p).objectId);
+            const float listed =
+                sdfDistanceOrdered(whole, grid.code, list, p, nullptr, grid.reading);
+            const float floor = sdfCellOutsideFloor(grid, p);
+            const float cells = std::min(listed, floor), exact = sdfDistance(whole, p);
+            ASSERT_LE(cells, exact + 1e-5f * (1.0f + std::abs(exact))) << what;
+            ASSERT_GT(floor, 0.01f * grid.size) << what;
+            ++checked;
+            if (listed >= floor) continue;
+            ++listNearer;
+            ASSERT_NEAR(cells, exact, 1e-5f * (1.0f + std::abs(exact))) << what;
+            const SdfSurface a = sdfSurface(whole, materials, p);
+            const SdfSurface b =
+                sdfSurfaceOrdered(whole, grid.code, list, materials, p, grid.reading);
+            ASSERT_EQ(a.objectId, b.objectId) << what;
+            hits += std::abs(exact) < 0.05f;
         }
+        EXPECT_GT(checked, 3000) << what;
+        EXPECT_GT(listNearer, 1000) << what;
+        EXPECT_GT(hits, 500) << what;
+        // Inside the grid nothing changes: no floor there.
+        EXPECT_EQ(sdfCellOutsideFloor(grid, grid.origin + glm::vec3(0.5f * grid.size)), INFINITY);
     };
-    expectOutside(flat->program, bounded->program);
-    std::mt19937 rng(4);
-    EXPECT_EQ(expectCellsAgree(*flat, grid, rng, 1000, "flat"), 1000);
-    // The sphere moved: both programs change; the outside is the new hierarchy's.
-    const std::string movedText = text(0.3f);
-    const std::optional<Compiled> movedFlat = compileText(movedText, false),
-                                  movedBounded = compileText(movedText, true);
-    ASSERT_TRUE(movedFlat && movedBounded);
-    const std::size_t codeBefore = grid.code.size();
-    ASSERT_TRUE(repruneSdfCells(*state, movedFlat->program, grid, &movedBounded->program));
-    // The code's length stays (the GPU's buffers are written in place after such an edit).
-    EXPECT_EQ(grid.code.size(), codeBefore);
-    expectOutside(movedFlat->program, movedBounded->program);
-    EXPECT_EQ(expectCellsAgree(*movedFlat, grid, rng, 1000, "moved"), 1000);
+    const std::string sdf = text(0.0f), movedText = text(0.3f);
+    for (const bool bounded : {false, true}) {
+        const std::optional<Compiled> c = compileText(sdf, bounded),
+                                      moved = compileText(movedText, bounded);
+        ASSERT_TRUE(c && moved);
+        const std::string what = bounded ? "with a hierarchy" : "without";
+        EXPECT_EQ(sdfCellsNeedHierarchy(c->program.instructions), false) << what;
+        SdfCellOptions options;
+        options.levels = 2;
+        SdfCellStatePtr state;
+        SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf), options, &state);
+        ASSERT_GT(grid.levels, 0);
+        expectOutside(grid, c->program, what);
+        std::mt19937 rng(4);
+        EXPECT_EQ(expectCellsAgree(*c, grid, rng, 1000, what), 1000);
+        // The sphere moved, an edit of numbers: pruned again, in place.
+        const std::size_t codeBefore = grid.code.size();
+        ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
+        // The code's length stays (the GPU's buffers are written in place after such an edit).
+        EXPECT_EQ(grid.code.size(), codeBefore);
+        expectOutside(grid, moved->program, what + ", moved");
+        EXPECT_EQ(expectCellsAgree(*moved, grid, rng, 1000, what + ", moved"), 1000);
+    }
 }
 
 // A union of shapes, with or without its bounding hierarchy, lists only the shapes each cell
-// needs (no unions: the lean loop of sdf_cells.glsl reads a running minimum), and the outside
-// list only its box tests and shapes; read so, both agree with the whole program. A tree with
-// any other operation keeps its postfix lists.
+// needs (no unions: the lean loop of sdf_cells.glsl reads a running minimum), and nothing
+// outside the grid, where the union's floor stands for it; read so, both agree with the whole
+// program (outside: a bound above zero). A tree with any other operation keeps its postfix lists.
 TEST(CellPruning, AUnionOfShapesListsOnlyShapes) {
     std::ostringstream text;
     text << R"({"children": [)";
@@ -717,8 +723,13 @@ TEST(CellPruning, AUnionOfShapesListsOnlyShapes) {
                 std::span(grid.words).subspan(range.offset, range.length);
             const float whole = sdfDistance(c->program, p);
             const float read =
-                sdfDistanceOrdered(c->program, grid.code, list, p, nullptr, grid.reading);
-            if (range.level == 0 || whole < grid.size / float(1 << (2 * range.level)))
+                std::min(sdfDistanceOrdered(c->program, grid.code, list, p, nullptr, grid.reading),
+                         sdfCellOutsideFloor(grid, p));
+            if (range.level == 0) {
+                ASSERT_EQ(range.length, 0u) << bounded;
+                ASSERT_LE(read, whole + 1e-5f * (1.0f + std::abs(whole))) << bounded;
+                ASSERT_GT(read, 0.0f) << bounded;
+            } else if (whole < grid.size / float(1 << (2 * range.level)))
                 ASSERT_NEAR(read, whole, 1e-5f * (1.0f + std::abs(whole))) << bounded;
             else // a far cell's constant: a bound
                 ASSERT_LE(read, whole + 1e-5f * (1.0f + std::abs(whole))) << bounded;

@@ -32,7 +32,7 @@ Scene rowOfSpheres(float firstX) {
     return scene ? *scene : Scene{};
 }
 
-// What the viewer asks for: the scene as its worker compiles it, and its bounded program.
+// What the viewer asks for: the scene as its worker compiles it.
 editor::CellPruningRequest requestFor(std::uint64_t revision, const Scene& scene) {
     editor::ScenePreparingResult prepared =
         editor::prepareEditedScene(scene, revision, diskFileSource());
@@ -40,7 +40,6 @@ editor::CellPruningRequest requestFor(std::uint64_t revision, const Scene& scene
     editor::CellPruningRequest request;
     request.revision = revision;
     request.scene = std::make_shared<const PreparedScene>(std::move(*prepared.prepared));
-    request.outside = std::make_shared<const SdfProgram>(std::move(prepared.bounded));
     return request;
 }
 
@@ -54,11 +53,10 @@ editor::CellPruningResult pruned(editor::CellPruningJob& job, editor::CellPrunin
 
 // The cells' programs of `grid` at random points of its cube equal those of a full build of
 // `request`'s program in the same cube: the one around `content` (the first build's content; a
-// re-prune keeps its cube).
+// re-prune keeps its cube), and so do the list and the floor of points outside the grid.
 void expectAFullBuildsPrograms(const SdfCellGrid& grid, const editor::CellPruningRequest& request,
                                const Aabb& content) {
-    const SdfCellGrid full =
-        buildSdfCells(request.scene->sdf, content, {}, nullptr, request.outside.get());
+    const SdfCellGrid full = buildSdfCells(request.scene->sdf, content);
     ASSERT_GT(full.levels, 0);
     ASSERT_EQ(full.origin, grid.origin);
     ASSERT_EQ(full.size, grid.size);
@@ -71,6 +69,17 @@ void expectAFullBuildsPrograms(const SdfCellGrid& grid, const editor::CellPrunin
         ASSERT_EQ(std::vector<std::uint32_t>(a.begin(), a.end()),
                   std::vector<std::uint32_t>(b.begin(), b.end()))
             << "at (" << p.x << ", " << p.y << ", " << p.z << ")";
+    }
+    const auto outsideList = [](const SdfCellGrid& g) {
+        const auto list = std::span(g.words).subspan(g.outsideOffset, g.outsideLength);
+        return std::vector<std::uint32_t>(list.begin(), list.end());
+    };
+    EXPECT_EQ(outsideList(grid), outsideList(full));
+    ASSERT_EQ(grid.outsideFloor.has_value(), full.outsideFloor.has_value());
+    if (full.outsideFloor) {
+        EXPECT_EQ(grid.outsideFloor->box.min, full.outsideFloor->box.min);
+        EXPECT_EQ(grid.outsideFloor->box.max, full.outsideFloor->box.max);
+        EXPECT_EQ(grid.outsideFloor->drop, full.outsideFloor->drop);
     }
 }
 

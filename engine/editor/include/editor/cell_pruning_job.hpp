@@ -7,9 +7,10 @@
 // waits: one that arrives while another is pruned replaces the one waiting.
 //
 // The grid is shared with the result, not copied (a large scene's grid is tens of MB: on the
-// 10,000-shape grid copying it took 67 to 82 ms of an edit's 83 to 95): the worker prunes again into the grid it last gave once
-// nobody else holds it, and into a copy while someone does. So a taker drops its grid when it
-// no longer needs it (the viewer: when it asks for the next revision's cells).
+// 10,000-shape grid copying it took 67 to 82 ms of an edit's 83 to 95): the worker prunes again
+// into the grid it last gave once nobody else holds it, and into a copy while someone does. So a
+// taker drops its grid when it no longer needs it (the viewer: when it asks for the next revision's
+// cells).
 #pragma once
 
 #include "editor/newest_request_worker.hpp"
@@ -29,7 +30,6 @@ struct CellPruningRequest {
     std::uint64_t revision = 0;                 // the document's
     int frame = 0;                              // the viewer's frame that asked (for its log)
     std::shared_ptr<const PreparedScene> scene; // its sdf: the tree pruned (no bounding hierarchy)
-    std::shared_ptr<const SdfProgram> outside;  // what points outside the grid run (with it)
 };
 
 struct CellPruningResult {

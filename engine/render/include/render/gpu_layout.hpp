@@ -47,8 +47,9 @@ struct GpuSdfCellHeader {
     glm::vec4 originSize{0.0f}; // xyz = the grid cube's corner, w = its edge
     glm::uvec4 info{0u};        // x = levels, y = the whole program's list offset, z = its length,
                                 // w = 1 when every surface lies inside the grid's cube
-    glm::vec4 floorMin{0.0f};   // the program's floor (SdfCellGrid::floor): its box, w = drop
-    glm::vec4 floorMax{0.0f};   // w = 1 when there is one
+    glm::vec4 floorMin{0.0f};   // a floor (render/gpu_scene.cpp, setCellFloor): box, w = drop
+    glm::vec4 floorMax{0.0f};   // w: 1 the program's (SdfCellGrid::floor), + 2 the outside
+                                // list's (outsideFloor), 0 none
 };
 static_assert(sizeof(GpuSdfCellHeader) == 64);
 

@@ -16,7 +16,8 @@
 // material blend and object id are those of the whole program, except in far cells when
 // SdfCellOptions::farConstants asks for them: where the whole program is at least the cell's
 // edge everywhere in the cell and its program is long, a constant lower bound of that (never
-// above the true distance). Outside the grid the whole program runs.
+// above the true distance). Outside the grid run the whole program's unbounded operands (a
+// floor plane) and the distance to the box of the rest (SdfCellGrid::outsideFloor).
 //
 // What it costs: a node whose floor (its exact distance to a box, less how far its operations
 // may dip below it) already decides its operation over a cell is dropped without being
@@ -90,8 +91,7 @@ struct SdfCellStats {
 // blocks of 64 cells of 2 words each (block 0: the cells of the first level, x + 4 y + 16 z),
 // then the programs' index lists. A cell is (offset in words of its list, length) or, when
 // refined, (kSdfCellRefined | the index of its block of 64, 0). Indices refer to `code`: the
-// program's instructions followed by the instructions the pruning adds (and the outside
-// program's, when one is given).
+// program's instructions followed by the instructions the pruning adds.
 constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
 // Set in a leaf cell's length word (the length is the bits below it) when its program is one
 // plane instruction: a floor's plane, or a far cell's constant. Its field is affine along any
@@ -116,7 +116,10 @@ struct SdfCellGrid {
     glm::vec3 origin{0.0f}; // the grid is the cube [origin, origin + size]
     float size = 0.0f;
     std::vector<std::uint32_t> words;
-    std::uint32_t outsideOffset = 0; // the whole program's list (identity), in words
+    // The list points outside the grid run, in words: the whole program's operands of its top
+    // chain of unions that outsideFloor does not stand for (a plane; none in a bounded scene).
+    // It holds no bounding hierarchy (unless sdfCellsNeedHierarchy).
+    std::uint32_t outsideOffset = 0;
     std::uint32_t outsideLength = 0;
     // How every list is read (the cells' and the outside one): the cells of a program of a
     // least-of-shapes form (sdfIsLeastOfShapes) list its shapes without their unions, which
@@ -127,6 +130,11 @@ struct SdfCellGrid {
     // drops subtrees by (also read through a bounding hierarchy, which sdfProgramFloor refuses).
     // Far cells, whose program is a constant, may take the larger of the two (sdf_cells.glsl).
     std::optional<SdfFieldFloor> floor;
+    // What the outside list leaves out, by its floor: outside the grid the field is the least of
+    // the list's value and the floor's distance, distance(y, box) - drop (sdfCellOutsideFloor;
+    // never within a margin of zero there). The root's floor when the whole program has one
+    // that keeps the margin.
+    std::optional<SdfFieldFloor> outsideFloor;
     SdfCellStats stats;
     // The words the last build or re-prune wrote, in order: all of them after a build; after a
     // re-prune into the grid it last wrote, the blocks of cells that changed and the lists from
@@ -142,6 +150,11 @@ struct SdfCellGrid {
 // formula or under a non-uniform scale, a point modifier, a bounding hierarchy).
 std::optional<SdfFieldFloor> sdfProgramFloor(const std::vector<GpuSdfInstruction>& code);
 
+// Whether the cells' lists of `code` need the bounding hierarchy's instructions (the shader's
+// branches for them): only when the program has a hierarchy and cannot be read back into a
+// tree within the stack. Depends on the program's structure alone, not on its numbers.
+bool sdfCellsNeedHierarchy(const std::vector<GpuSdfInstruction>& code);
+
 // The content box of a tree: the union of the world boxes of its bounded parts (unbounded
 // groups are looked into; the rest of an unbounded part is left out). Empty when nothing is
 // bounded.
@@ -156,13 +169,9 @@ using SdfCellStatePtr = std::unique_ptr<SdfCellState, SdfCellStateDeleter>;
 
 // Prunes `program` (with or without its bounding hierarchy) over the cube around `content`.
 // No grid (levels 0) when `content` is empty or the program cannot be split into a tree.
-// With `keep`, what it was built from goes there (null when there is no grid). `outside`, when
-// given, is what points outside the grid run instead of `program`: the same tree with its
-// bounding hierarchy, so the cells can be pruned from a program whose order does not follow
-// where things are (an edit moves no instruction) while the outside keeps its box tests.
+// With `keep`, what it was built from goes there (null when there is no grid).
 SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
-                          const SdfCellOptions& options = {}, SdfCellStatePtr* keep = nullptr,
-                          const SdfProgram* outside = nullptr);
+                          const SdfCellOptions& options = {}, SdfCellStatePtr* keep = nullptr);
 
 // Prunes `grid` again for `edited`: the program the state was built from with only numbers
 // changed (the parameters, transforms and materials of shapes, the kind of a shape, the
@@ -172,8 +181,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
 // is what a full build gives but for the order in which the cell budget is spent. False when
 // the structure differs (or a cell's program would be deeper than the stack): build again,
 // the state is spent.
-bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid& grid,
-                     const SdfProgram* outside = nullptr);
+bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid& grid);
 
 // The list of the program that runs at p (the cell's, or the whole program's outside the
 // grid): its offset in grid.words and its length, computed as the shader does.
@@ -184,6 +192,10 @@ struct SdfCellRange {
     bool affine = false; // kSdfCellAffine
 };
 SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p);
+// What the field at p is at least beyond the list of sdfCellRange(grid, p): outside the grid,
+// the distance to what the outside list leaves out (outsideFloor); +infinity elsewhere. The
+// cells' value at p is the least of the two (common/sdf_cells.glsl, sdfCellDistance).
+float sdfCellOutsideFloor(const SdfCellGrid& grid, glm::vec3 p);
 std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
 
 } // namespace rmsc
