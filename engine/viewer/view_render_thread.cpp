@@ -88,7 +88,10 @@ void ViewRenderThread::run() {
     std::optional<ViewFrameRequest> frame; // the last request: refining goes on with it
     std::optional<ViewFrameRequest> drawn; // the request of the last picture
     std::chrono::steady_clock::time_point lastWake;
-    std::optional<std::uint64_t> wokeUi; // the UI's frames done when a band woke it
+    // Whether a band woke the UI, and the UI's frames done then. (Two plain values: GCC 12 warned
+    // that an optional's value might be read uninitialized, which it cannot be.)
+    bool wokeUi = false;
+    std::uint64_t uiFramesAtWake = 0;
     for (;;) {
         std::uint64_t serial = 0;
         Job job = Job::None;
@@ -108,14 +111,14 @@ void ViewRenderThread::run() {
             if (stopping_) break;
             // The next band waits for the UI frame the last one woke (nothing else does).
             if (wokeUi && !pending_ && (job_ == Job::None || jobTaken_) && refining_) {
-                const std::uint64_t woke = *wokeUi;
+                const std::uint64_t woke = uiFramesAtWake;
                 changed_.wait_for(lock, kYield, [this, woke] {
                     return stopping_ || pending_.has_value() || (job_ != Job::None && !jobTaken_) ||
                            uiFramesDone_ > woke;
                 });
                 if (stopping_) break;
             }
-            wokeUi.reset();
+            wokeUi = false;
             // A frame the UI posted before it asked for a job first: a capture shows the scene
             // that frame asked for.
             if (pending_) {
@@ -140,7 +143,8 @@ void ViewRenderThread::run() {
             if (news || (rendered && !band) || (band && now - lastWake >= kBandWake)) {
                 if (band) {
                     std::lock_guard lock(mutex_);
-                    wokeUi = uiFramesDone_;
+                    wokeUi = true;
+                    uiFramesAtWake = uiFramesDone_;
                 }
                 glfwPostEmptyEvent();
                 lastWake = now;
