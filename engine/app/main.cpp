@@ -2,6 +2,8 @@
 // which also gives `rmsc --help` its list; parsing, --help and parse errors are handled here once.
 #include "commands.hpp"
 
+#include "core/crash_report.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <optional>
@@ -57,6 +59,7 @@ int runSubcommand(const Subcommand& command, std::span<const std::string> args) 
 int main(int argc, char** argv) {
     using namespace rmsc;
     using namespace rmsc::app;
+    installCrashReport();
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
         std::fputs(usage().c_str(), args.empty() ? stderr : stdout);
