@@ -27,7 +27,7 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& inter
             {generateSdfMap(program, SdfStrategy::Buffer), EditingMapKind::Buffer});
     } else {
         byPreference.push_back(
-            {generateSdfMap(interpreted, SdfStrategy::Cells), EditingMapKind::Cells});
+            {generateSdfMap(program, SdfStrategy::Cells), EditingMapKind::Cells});
     }
     byPreference.push_back(
         {generateSdfMap(interpreted, SdfStrategy::Interpreter), EditingMapKind::Interpreter});

@@ -44,8 +44,9 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection);
 // interpreter runs it, with the hierarchy (the interpreter's text does not depend on the order,
 // and the hierarchy lets it skip parts). `live`: the selection's object ids (empty when nothing
 // in the SDF is selected). `isReady`: are a map's programs built (or warm in the driver's
-// cache)? Scenes too large for generated code have the cells map and the interpreter, both of
-// `interpreted`.
+// cache)? Scenes too large for generated code have the cells map of `program` (the tree the
+// viewer prunes into cells, so the map reads the lists as the pruning writes them: lean or
+// postfix) and the interpreter of `interpreted`.
 EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& interpreted,
                               const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady);
