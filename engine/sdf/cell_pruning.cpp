@@ -1726,23 +1726,23 @@ void setOutsideList(SdfCellState& s) {
             operands.push_back(n);
         }
     }
-    SdfFieldFloor left{Aabb{}, 0.0f};
-    for (int o : operands) {
+    const auto floored = [&](int o) {
         const NodeFloor& f = s.floors[std::size_t(o)];
-        if (!f.valid || f.box.empty()) continue;
-        left.box.add(f.box);
-        left.drop = std::max(left.drop, f.drop);
-    }
-    const glm::vec3 below = left.box.min - s.origin;
-    const glm::vec3 above = s.origin + glm::vec3(s.size) - left.box.max;
-    const float gap = std::min(std::min(std::min(below.x, below.y), std::min(below.z, above.x)),
-                               std::min(above.y, above.z));
+        return f.valid && !f.box.empty();
+    };
+    SdfFieldFloor left{Aabb{}, 0.0f};
+    for (int o : operands)
+        if (floored(o)) {
+            left.box.add(s.floors[std::size_t(o)].box);
+            left.drop = std::max(left.drop, s.floors[std::size_t(o)].drop);
+        }
+    const glm::vec3 gaps = glm::min(left.box.min - s.origin, s.origin + s.size - left.box.max);
+    const float gap = std::min(std::min(gaps.x, gaps.y), gaps.z);
     const bool leaveOut = !left.box.empty() && gap - left.drop > kOutsideFloorMargin * s.size;
     if (leaveOut) s.outsideFloor = left;
     std::size_t united = 0;
     for (int o : operands) {
-        const NodeFloor& f = s.floors[std::size_t(o)];
-        if (leaveOut && f.valid && !f.box.empty()) continue;
+        if (leaveOut && floored(o)) continue;
         appendPostfix(s.tree, o, s.outsideList);
         if (united++ > 0) s.outsideList.push_back(s.unionInstruction);
     }
@@ -1916,9 +1916,8 @@ SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p) {
 
 float sdfCellOutsideFloor(const SdfCellGrid& grid, glm::vec3 p) {
     if (!grid.outsideFloor || grid.levels == 0 || sdfCellRange(grid, p).level != 0) return INFINITY;
-    const SdfFieldFloor& f = *grid.outsideFloor;
-    const glm::vec3 away = glm::max(glm::max(f.box.min - p, p - f.box.max), glm::vec3(0.0f));
-    return glm::length(away) - f.drop;
+    // (Never inside the box, where floorAt says nothing: the box keeps a margin from the grid.)
+    return floorAt({grid.outsideFloor->box, grid.outsideFloor->drop, true}, p);
 }
 
 std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p) {

@@ -14,8 +14,8 @@
 
 layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
     vec4 sdfCellOrigin; // xyz = the grid cube's corner, w = its edge
-    uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the whole program's list, w = 1 when
-                        // every surface lies inside the grid's cube
+    uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the outside list (the whole program's
+                        // when there is no grid), w = 1 when every surface lies inside the cube
     vec4 sdfCellFloorMin; // a floor (sdfCellDistance): its box, w = drop
     vec4 sdfCellFloorMax; // w: 1 the whole program's, + 2 the outside list's, 0 none
     // then the words (SdfCellGrid::words), read through sdfCellTexels below
@@ -108,15 +108,15 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 // (engine/sdf/cell_pruning.hpp, SdfFieldFloor: at every point outside its box a field is at
 // least the distance to the box less the drop) counts twice:
 // - Outside the grid (cell.w = 0) the list leaves out the operands the floor stands for
-//   (SdfCellGrid::outsideFloor, w = 2 or 3), so the distance is the least of the two: a lower bound, equal
-//   to the field wherever the list is nearer (every surface a march can meet out there), and
-//   the box's distance, not a bounding hierarchy's program, where the content is nearer.
+//   (SdfCellGrid::outsideFloor, w = 2 or 3), so the distance is the least of the two: a lower
+//   bound, equal to the field wherever the list is nearer (every surface a march can meet out
+//   there), and the box's distance, not a bounding hierarchy's program, where the content is.
 // - A far cell's constant is the least the field can be anywhere in the cell, so a coarse cell
 //   beside the content gives its far side no more than its near side. The whole program's
-//   floor (w = 1 or 3) is a lower bound at p itself; the larger of the two is the distance there. A
-//   cone (passes/cone.frag) then passes the empty space beside the content (it stopped on the
-//   constants), and soft shadows and AO read less darkness into it. Without a plane in the
-//   scene every affine cell is a constant (and a scene with a plane has no such floor).
+//   floor (w = 1 or 3) is a lower bound at p itself; the larger of the two is the distance
+//   there. A cone (passes/cone.frag) then passes the empty space beside the content (it stopped
+//   on the constants), and soft shadows and AO read less darkness into it. Without a plane in
+//   the scene every affine cell is a constant (and a scene with a plane has no such floor).
 float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell) {
     bool outside = cell.w == 0.0;
     float uses = sdfCellFloorMax.w;
@@ -133,8 +133,8 @@ float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell) {
 #else
 // A program whose every part is one shape (the grids: a plain union of shapes, with or without
 // its bounding hierarchy; sdfIsLeastOfShapes in engine/sdf/program_form.cpp) needs no stack:
-// each cell's list is shapes, the whole program's its box tests and shapes, both a running
-// minimum. (A list with unions still reads right: they do nothing here.)
+// each cell's list and the outside list are shapes, a running minimum. (A list with unions
+// still reads right: they do nothing here.)
 
 bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 

@@ -45,7 +45,7 @@ enum SdfTexelUnit : unsigned { kSdfProgramTexelUnit = 16, kSdfCellTexelUnit = 17
 // The header of the cell buffer (shaders/common/sdf_cells.glsl), before SdfCellGrid::words.
 struct GpuSdfCellHeader {
     glm::vec4 originSize{0.0f}; // xyz = the grid cube's corner, w = its edge
-    glm::uvec4 info{0u};        // x = levels, y = the whole program's list offset, z = its length,
+    glm::uvec4 info{0u};        // x = levels, y = the outside list's offset, z = its length,
                                 // w = 1 when every surface lies inside the grid's cube
     glm::vec4 floorMin{0.0f};   // a floor (render/gpu_scene.cpp, setCellFloor): box, w = drop
     glm::vec4 floorMax{0.0f};   // w: 1 the program's (SdfCellGrid::floor), + 2 the outside

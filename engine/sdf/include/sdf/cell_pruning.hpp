@@ -183,8 +183,8 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
 // the state is spent.
 bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid& grid);
 
-// The list of the program that runs at p (the cell's, or the whole program's outside the
-// grid): its offset in grid.words and its length, computed as the shader does.
+// The list of the program that runs at p (the cell's, or the outside list outside the grid):
+// its offset in grid.words and its length, computed as the shader does.
 struct SdfCellRange {
     std::uint32_t offset = 0;
     std::uint32_t length = 0;
