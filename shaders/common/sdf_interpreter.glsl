@@ -153,9 +153,14 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     sdfProgramRange(p, base, count);
     taps = vec4(SDF_FAR);
     if (count == 0u) return sdfEmptySurface(p);
+    // The stack's top entry is held in `surface` and `surfaceTaps`, the ones below it in the
+    // arrays: an operation reads one array entry instead of two and writes none. (llvmpipe keeps
+    // an array indexed by a value that differs between pixels in memory, and reads or writes each
+    // of an SdfSurface's fields there one pixel at a time: the arrays cost the 4,096-sphere tree
+    // about a tenth of its frame; docs/performance.md.)
     SdfSurface stack[SDF_MAX_STACK];
     vec4 tapStack[SDF_MAX_STACK];
-    int top = 0;
+    int top = 0; // entries in all, the top one included
     vec3 saved[SDF_MAX_POINT_STACK];
     vec3 savedTaps[4 * SDF_MAX_POINT_STACK];
     int savedTop = 0;
@@ -163,16 +168,20 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     vec3 t2 = p + h * sdfTetrahedronVertex(2), t3 = p + h * sdfTetrahedronVertex(3);
     SdfSurface best = sdfEmptySurface(p); // what SDF_OPCODE_ACCUMULATE unites into
     vec4 bestTaps = vec4(SDF_FAR);
-    stack[0] = best; // (read only if the program pushes nothing)
-    tapStack[0] = bestTaps;
+    SdfSurface surface = best; // (read only if the program pushes nothing)
+    vec4 surfaceTaps = bestTaps;
     for (uint n = 0u; n < count; ++n) {
         SdfInstructionData data = sdfInstructionData(SDF_PROGRAM_AT(base + n));
         uvec4 head = data.head; // opcode, kind, material, id
         uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
-            stack[top] = sdfMaterialSurface(sdfLeafDistanceOf(data, p), head.w, head.z,
-                                            sdfInstructionPointOf(data, p));
-            if (withTaps) tapStack[top] = sdfLeafDistancesOf(data, t0, t1, t2, t3);
+            if (top > 0) {
+                stack[top - 1] = surface;
+                tapStack[top - 1] = surfaceTaps;
+            }
+            surface = sdfMaterialSurface(sdfLeafDistanceOf(data, p), head.w, head.z,
+                                         sdfInstructionPointOf(data, p));
+            if (withTaps) surfaceTaps = sdfLeafDistancesOf(data, t0, t1, t2, t3);
             ++top;
         }
 #if SDF_HAS_BOUNDS
@@ -180,8 +189,12 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
             if (sdfBoundDistanceOf(data, p) >= best.distance) n += head.y;
         } else if (op == SDF_OPCODE_ACCUMULATE) {
             --top;
-            if (stack[top].distance < best.distance) best = stack[top];
-            if (withTaps) bestTaps = min(bestTaps, tapStack[top]);
+            if (surface.distance < best.distance) best = surface;
+            if (withTaps) bestTaps = min(bestTaps, surfaceTaps);
+            if (top > 0) {
+                surface = stack[top - 1];
+                surfaceTaps = tapStack[top - 1];
+            }
         } // SDF_OPCODE_SEED_BEST: surfaces are not seeded (`best` must be a part's surface)
 #endif
 #if SDF_HAS_POINT_FRAMES
@@ -227,28 +240,25 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
 #endif
 #if SDF_HAS_DISTANCE_MODIFIERS
         else if (op == SDF_OPCODE_DISTANCE_MODIFIER) {
-            stack[top - 1].distance =
-                sdfDistanceModifierUsed(head.y, stack[top - 1].distance, p, data.a0);
+            surface.distance = sdfDistanceModifierUsed(head.y, surface.distance, p, data.a0);
             if (withTaps) {
-                vec4 d = tapStack[top - 1];
                 for (int k = SDF_ZERO; k < 4; ++k)
-                    d[k] = sdfDistanceModifierUsed(head.y, d[k], sdfTapPoint(k, t0, t1, t2, t3),
-                                                   data.a0);
-                tapStack[top - 1] = d;
+                    surfaceTaps[k] = sdfDistanceModifierUsed(
+                        head.y, surfaceTaps[k], sdfTapPoint(k, t0, t1, t2, t3), data.a0);
             }
         }
 #endif
 #if SDF_HAS_COMBINE
         else if (op == SDF_OPCODE_COMBINE) {
             float w;
-            float d = sdfCombineUsed(head.y, stack[top - 2].distance, stack[top - 1].distance,
-                                     data.a0, w);
-            stack[top - 2] = sdfBlendSurfaces(stack[top - 2], stack[top - 1], d, w);
+            SdfSurface below = stack[top - 2];
+            float d = sdfCombineUsed(head.y, below.distance, surface.distance, data.a0, w);
+            surface = sdfBlendSurfaces(below, surface, d, w);
             if (withTaps) {
-                vec4 a = tapStack[top - 2], b = tapStack[top - 1];
+                vec4 a = tapStack[top - 2];
                 for (int k = SDF_ZERO; k < 4; ++k)
-                    a[k] = sdfCombineUsed(head.y, a[k], b[k], data.a0, w);
-                tapStack[top - 2] = a;
+                    a[k] = sdfCombineUsed(head.y, a[k], surfaceTaps[k], data.a0, w);
+                surfaceTaps = a;
             }
             --top;
         }
@@ -258,8 +268,8 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
         taps = bestTaps;
         return best;
     }
-    taps = tapStack[0];
-    return stack[0];
+    taps = surfaceTaps;
+    return surface;
 }
 
 SdfSurface sdfSurface(vec3 p) {

@@ -124,7 +124,7 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
             {"shape": "box", "half_extents": [0.35, 0.35, 0.35], "position": [0.7, 0.35, 0],
              "material": "c"},
             {"shape": "sphere", "radius": 0.3, "position": [0.7, 0.6, 0.3], "material": "a"}]},
-          {"op": "intersection", "children": [
+          {"op": "round_union", "smoothness": 0.1, "children": [
             {"shape": "sphere", "radius": 0.4, "position": [1.5, 0.4, -0.4], "material": "a"},
             {"shape": "box", "half_extents": [0.3, 0.3, 0.3], "position": [1.5, 0.4, -0.4],
              "material": "b"}]},
@@ -242,6 +242,46 @@ TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
 // skipping) and the shapes sample (a plane, exact shapes and an ellipsoid, whose bound formula
 // keeps it out of the hierarchy) through the
 // interpreter.
+// The interpreter's surface read (common/sdf_interpreter.glsl, sdfSurfaceRead) through a
+// bounding hierarchy whose parts are groups blended by smooth, chamfer and round unions, not
+// single shapes (so not the parts loop): each part's surface is united into the running best by
+// Accumulate. Generated code draws the same program with the same hierarchy.
+TEST(SdfStrategies, TheInterpreterReadsSurfacesThroughAHierarchyOfGroups) {
+    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+        "camera": {"position": [0.0, 1.5, 3.0], "target": [0, 0.3, 0.3], "fov": 60},
+        "materials": {"a": {"base_color": "#e76f51", "roughness": 0.3},
+                      "b": {"base_color": "#2a9d8f", "metallic": 0.6},
+                      "c": {"base_color": "#e9c46a", "emissive": [0.2, 0.1, 0.0]}},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+        "sdf": {"children": [
+          {"op": "smooth_union", "smoothness": 0.2, "children": [
+            {"shape": "sphere", "radius": 0.4, "position": [-1.6, 0.4, 0], "material": "a"},
+            {"shape": "box", "half_extents": [0.3, 0.2, 0.3], "position": [-1.2, 0.2, 0.3],
+             "material": "b"}]},
+          {"op": "chamfer_union", "smoothness": 0.1, "children": [
+            {"shape": "box", "half_extents": [0.3, 0.3, 0.3], "position": [-0.4, 0.3, 0],
+             "material": "c"},
+            {"shape": "sphere", "radius": 0.25, "position": [-0.3, 0.55, 0.2], "material": "a"}]},
+          {"op": "smooth_union", "smoothness": 0.3, "children": [
+            {"shape": "sphere", "radius": 0.3, "position": [0.5, 0.3, 0.2], "material": "b"},
+            {"shape": "sphere", "radius": 0.25, "position": [0.8, 0.5, -0.1], "material": "c"}]},
+          {"op": "round_union", "smoothness": 0.1, "children": [
+            {"shape": "sphere", "radius": 0.3, "position": [1.6, 0.3, 0], "material": "a"},
+            {"shape": "box", "half_extents": [0.2, 0.4, 0.2], "position": [1.9, 0.4, 0],
+             "material": "b"}]},
+          {"op": "smooth_union", "smoothness": 0.15, "children": [
+            {"shape": "torus", "major_radius": 0.35, "minor_radius": 0.1,
+             "position": [0, 0.1, 1.2], "material": "c"},
+            {"shape": "sphere", "radius": 0.2, "position": [0, 0.25, 1.2], "material": "a"}]}]}})");
+    ASSERT_TRUE(std::any_of(
+        prepared.sdf.instructions.begin(), prepared.sdf.instructions.end(),
+        [](const GpuSdfInstruction& in) { return SdfOpcode(in.opcode) == SdfOpcode::Accumulate; }))
+        << "the scene should compile with a bounding hierarchy";
+    ASSERT_FALSE(sdfIsLeastOfShapes(prepared.sdf)) << "its parts should be groups";
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Interpreter,
+                     "strategy_interpreter_hierarchy_of_groups");
+}
+
 TEST(SdfStrategies, BoundsDoNotChangeTheImage) {
     const std::pair<const char*, SdfStrategy> cases[] = {
         {"samples/bench/grid_10.json", SdfStrategy::Baked},
