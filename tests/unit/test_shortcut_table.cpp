@@ -16,7 +16,10 @@ using namespace rmsc::editor;
 namespace {
 
 std::string readSourceFile(const std::string& relativePath) {
-    std::ifstream file(std::string(RMSC_TEST_SOURCE_DIR) + "/" + relativePath);
+    std::string path = RMSC_TEST_SOURCE_DIR;
+    path += "/"; // (appended, not `+`: GCC 12 warns wrongly of -Warray-bounds on that)
+    path += relativePath;
+    std::ifstream file(path);
     std::stringstream buffer;
     buffer << file.rdbuf();
     return buffer.str();
