@@ -124,7 +124,7 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
             {"shape": "box", "half_extents": [0.35, 0.35, 0.35], "position": [0.7, 0.35, 0],
              "material": "c"},
             {"shape": "sphere", "radius": 0.3, "position": [0.7, 0.6, 0.3], "material": "a"}]},
-          {"op": "round_union", "smoothness": 0.1, "children": [
+          {"op": "intersection", "children": [
             {"shape": "sphere", "radius": 0.4, "position": [1.5, 0.4, -0.4], "material": "a"},
             {"shape": "box", "half_extents": [0.3, 0.3, 0.3], "position": [1.5, 0.4, -0.4],
              "material": "b"}]},
@@ -237,11 +237,6 @@ TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {
     expectNoGlErrors();
 }
 
-// The compiler's bounding hierarchy skips far parts without changing the picture: with and
-// without it, the 10-shape bench grid in baked code (which unites the hierarchy's parts without
-// skipping) and the shapes sample (a plane, exact shapes and an ellipsoid, whose bound formula
-// keeps it out of the hierarchy) through the
-// interpreter.
 // The interpreter's surface read (common/sdf_interpreter.glsl, sdfSurfaceRead) through a
 // bounding hierarchy whose parts are groups blended by smooth, chamfer and round unions, not
 // single shapes (so not the parts loop): each part's surface is united into the running best by
@@ -282,6 +277,11 @@ TEST(SdfStrategies, TheInterpreterReadsSurfacesThroughAHierarchyOfGroups) {
                      "strategy_interpreter_hierarchy_of_groups");
 }
 
+// The compiler's bounding hierarchy skips far parts without changing the picture: with and
+// without it, the 10-shape bench grid in baked code (which unites the hierarchy's parts without
+// skipping) and the shapes sample (a plane, exact shapes and an ellipsoid, whose bound formula
+// keeps it out of the hierarchy) through the
+// interpreter.
 TEST(SdfStrategies, BoundsDoNotChangeTheImage) {
     const std::pair<const char*, SdfStrategy> cases[] = {
         {"samples/bench/grid_10.json", SdfStrategy::Baked},
