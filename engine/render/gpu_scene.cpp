@@ -49,6 +49,17 @@ bool everySurfaceInside(const PreparedScene& prepared, const SdfCellGrid& grid) 
            glm::all(glm::lessThanEqual(whole.box.max, grid.origin + grid.size));
 }
 
+// The grid's planes (SdfCellGrid::planes), each a field dot(xyz, p) + w.
+static_assert(sizeof(GpuSdfCellHeader::planeFields) / sizeof(glm::vec4) == kSdfCellPlanes);
+void setCellPlanes(GpuSdfCellHeader& header, const SdfCellGrid& grid) {
+    for (int k = 0; k < kSdfCellPlanes; ++k) {
+        const bool used = std::size_t(k) < grid.planes.size();
+        header.planeFields[k] =
+            used ? grid.planes[std::size_t(k)].field : glm::vec4(0.0f, 0.0f, 0.0f, kSdfFar);
+        header.planeInstructions[k] = used ? grid.planes[std::size_t(k)].instruction : 0xffffffffu;
+    }
+}
+
 // The program's floor, which far cells may take instead of their constant (w + 1), and the
 // floor that stands outside the grid for what the outside list leaves out (w + 2): the same
 // one when there are both (the root's; sdf_cells.glsl, sdfCellDistance).
@@ -74,6 +85,7 @@ void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid) {
     header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
                              header.info.w);
     setCellFloor(header, grid);
+    setCellPlanes(header, grid);
     gpu.sdfCellStats = grid.stats;
     gpu.sdfCellLevels = grid.levels;
     const std::size_t capacity = bufferBytes(gpu.sdfCells);
@@ -137,7 +149,8 @@ void GpuScene::bindBuffers() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, shadowViewBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfDataBinding, sdfData.id());
     if (sdfCells.id() != 0) {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSdfCellBinding, sdfCells.id());
+        glBindBufferRange(GL_UNIFORM_BUFFER, kSdfCellHeaderBinding, sdfCells.id(), 0,
+                          sizeof(GpuSdfCellHeader));
         glBindTextureUnit(kSdfCellTexelUnit, sdfCellTexels.id());
     }
 }
@@ -261,6 +274,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
         header.info = glm::uvec4(std::uint32_t(grid.levels), grid.outsideOffset, grid.outsideLength,
                                  everySurfaceInside(prepared, grid) ? 1u : 0u);
         setCellFloor(header, grid);
+        setCellPlanes(header, grid);
         gpu.sdfCellHeader = header;
         createCellBuffer(gpu, header, grid);
         gpu.sdfCellStamp = grid.packStamp;

@@ -1102,6 +1102,7 @@ void wholeProgramOnly(SdfCellGrid& grid, const SdfProgram& program) {
     grid.levels = 0;
     grid.code = program.instructions;
     grid.words.clear();
+    grid.planes.clear();
     grid.floor.reset();
     grid.outsideFloor.reset();
     grid.reading = SdfListReading::Postfix;
@@ -1157,6 +1158,9 @@ struct SdfCellState {
     std::vector<std::uint32_t> constants; // kFarSteps per level
     SdfCellOptions options;
     std::uint32_t unionInstruction = 0; // in code: the union the outside list unites with
+    std::vector<std::uint32_t> planes;  // in code: the root chain's planes (SdfCellGrid::planes)
+    std::vector<std::uint32_t> listScratch; // setLeafCell's list without the planes
+    std::vector<char> stackScratch;         // and withoutPlanes' stack
     // What points outside the grid run (setOutsideList) and the floor of what it leaves out.
     std::vector<std::uint32_t> outsideList;
     std::optional<SdfFieldFloor> outsideFloor;
@@ -1250,6 +1254,79 @@ void freeBlock(SdfCellState& s, std::uint32_t b) {
     s.liveCells -= 64;
 }
 
+// The operands of the tree's top chain of unions, in order: the root's operands through every
+// union that has no floor (a bounded chain is one operand).
+std::vector<int> topChainOperands(const SdfCellState& s) {
+    const std::vector<TreeNode>& nodes = s.tree.nodes;
+    std::vector<int> operands, todo{int(nodes.size()) - 1};
+    while (!todo.empty()) {
+        const int n = todo.back();
+        todo.pop_back();
+        const TreeNode& t = nodes[std::size_t(n)];
+        const bool bounded = s.floors[std::size_t(n)].valid;
+        if (!bounded && t.kind == NodeKind::Combine &&
+            SdfOp(s.code[t.instruction].kind) == SdfOp::Union) {
+            todo.push_back(t.b);
+            todo.push_back(t.a);
+        } else {
+            operands.push_back(n);
+        }
+    }
+    return operands;
+}
+
+// The planes the lists leave out (SdfCellGrid::planes): the top chain's operands that are one
+// plane instruction, the first kSdfCellPlanes of them.
+std::vector<std::uint32_t> topPlanes(const SdfCellState& s) {
+    std::vector<std::uint32_t> planes;
+    for (int o : topChainOperands(s)) {
+        const TreeNode& t = s.tree.nodes[std::size_t(o)];
+        if (t.kind == NodeKind::Leaf && t.end == t.begin + 1 && isOnePlane(s.code, &t.begin, 1) &&
+            planes.size() < std::size_t(kSdfCellPlanes))
+            planes.push_back(t.begin);
+    }
+    return planes;
+}
+
+// A plane instruction's field as an affine function of the world point: sdPlane (sdf/
+// primitives.cpp) of the frame's point q = worldToLocal (p, 1), times the distance scale, is
+// dot(n, q) / |n| - offset times the scale: dot(xyz, p) + w.
+glm::vec4 planeField(const GpuSdfInstruction& in) {
+    const glm::vec3 n =
+        glm::vec3(in.params[0]) / std::max(glm::length(glm::vec3(in.params[0])), 1e-6f);
+    const glm::vec4 along =
+        n.x * in.worldToLocal[0] + n.y * in.worldToLocal[1] + n.z * in.worldToLocal[2];
+    return in.misc.x * glm::vec4(glm::vec3(along), along.w - in.params[0].w);
+}
+
+// `list` without the grid's planes and the unions that took them in (each plane is an operand of
+// a plain union, which then stands for its other operand), in `out`. `outOfList`: scratch.
+void withoutPlanes(const SdfCellState& s, std::span<const std::uint32_t> list,
+                   std::vector<std::uint32_t>& out, std::vector<char>& outOfList) {
+    out.clear();
+    if (s.planes.empty()) {
+        out.assign(list.begin(), list.end());
+        return;
+    }
+    outOfList.clear(); // per value-stack entry: a plane taken out (or only planes)
+    for (std::uint32_t i : list) {
+        const GpuSdfInstruction& in = s.code[i];
+        if (isLeafOpcode(in.opcode)) {
+            const bool plane = std::find(s.planes.begin(), s.planes.end(), i) != s.planes.end();
+            outOfList.push_back(plane);
+            if (!plane) out.push_back(i);
+        } else if (SdfOpcode(in.opcode) == SdfOpcode::Combine && outOfList.size() >= 2) {
+            const bool b = outOfList.back();
+            outOfList.pop_back();
+            const bool a = outOfList.back();
+            if (!a && !b) out.push_back(i); // (a plane's operation is a plain union)
+            outOfList.back() = a && b;
+        } else {
+            out.push_back(i);
+        }
+    }
+}
+
 // The offset of `list` in s.lists, shared with an equal list when there is one.
 std::uint32_t storeList(SdfCellState& s, std::span<const std::uint32_t> list) {
     std::vector<std::uint32_t>& same = s.shared[hashList(list)];
@@ -1265,17 +1342,22 @@ std::uint32_t storeList(SdfCellState& s, std::span<const std::uint32_t> list) {
 }
 
 void setLeafCell(SdfCellState& s, std::uint32_t k, const CellResult& r) {
-    std::span<const std::uint32_t> list = r.list;
+    withoutPlanes(s, r.list, s.listScratch, s.stackScratch);
+    std::span<const std::uint32_t> list = s.listScratch;
     if (s.leastOfShapes) { // the running minimum needs no unions, nor a stack
         s.shapesScratch.clear();
-        for (std::uint32_t i : r.list)
+        for (std::uint32_t i : list)
             if (neededByLeastOfShapes(s.code[i])) s.shapesScratch.push_back(i);
         list = s.shapesScratch;
-    } else if (stackDepth(s.code, r.list) > kSdfMaxStack) {
+    } else if (stackDepth(s.code, list) > kSdfMaxStack) {
         s.tooDeep = true;
     }
     s.entries[2 * k] = storeList(s, list);
-    s.entries[2 * k + 1] = std::uint32_t(list.size());
+    // Affine when its program is one plane: a constant, a plane the lists hold, or one of the
+    // grid's planes (then the list is empty).
+    s.entries[2 * k + 1] =
+        std::uint32_t(list.size()) |
+        (isOnePlane(s.code, r.list.data(), std::uint32_t(r.list.size())) ? kSdfCellAffine : 0u);
     s.cellLeaves[k] = std::uint32_t(r.leaves);
     markBlockChanged(s, k / 64);
 }
@@ -1291,8 +1373,9 @@ void compactLists(SdfCellState& s) {
         if (s.blocks[b].live)
             for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k)
                 if (!(s.entries[2 * k] & kSdfCellRefined))
-                    s.entries[2 * k] = storeList(
-                        s, std::span(old).subspan(s.entries[2 * k], s.entries[2 * k + 1]));
+                    s.entries[2 * k] =
+                        storeList(s, std::span(old).subspan(s.entries[2 * k], s.entries[2 * k + 1] &
+                                                                                  ~kSdfCellAffine));
     s.listsAtCompaction = s.lists.size();
     s.listsMoved = true;
 }
@@ -1429,7 +1512,7 @@ bool topsDropped(const SdfCellState& s, const EditScope& scope, glm::vec3 centre
 bool farConstantStands(const SdfCellState& s, const Pruner& pr, const EditScope& scope,
                        std::uint32_t k, int level, glm::vec3 c, float edge) {
     if (!scope.shape) return false;
-    const std::uint32_t entry = s.entries[2 * k], length = s.entries[2 * k + 1];
+    const std::uint32_t entry = s.entries[2 * k], length = s.entries[2 * k + 1] & ~kSdfCellAffine;
     if ((entry & kSdfCellRefined) || length != 1) return false;
     const std::uint32_t* constants = &s.constants[std::size_t(kFarSteps * (level - 1))];
     if (std::find(constants, constants + kFarSteps, s.lists[entry]) == constants + kFarSteps)
@@ -1615,6 +1698,9 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     if (!s.floors.empty() && s.floors.back().valid && !s.floors.back().box.empty())
         grid.floor = SdfFieldFloor{s.floors.back().box, s.floors.back().drop};
     grid.outsideFloor = s.outsideFloor;
+    grid.planes.clear();
+    for (std::uint32_t i : s.planes)
+        grid.planes.push_back({i, planeField(s.code[i])});
     const std::size_t blockCount = s.blocks.size();
     const std::uint32_t base =
         std::uint32_t(inPlace ? s.packedBase : 128 * (blockCount + (blockCount + 7) / 8));
@@ -1646,14 +1732,12 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
             continue;
         }
         for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k) {
-            const std::uint32_t e = s.entries[2 * k], length = s.entries[2 * k + 1];
+            const std::uint32_t e = s.entries[2 * k], word = s.entries[2 * k + 1];
+            const std::uint32_t length = word & ~kSdfCellAffine;
             grid.words[2 * k] = e & kSdfCellRefined ? e : e + base;
-            grid.words[2 * k + 1] = length;
+            grid.words[2 * k + 1] = word;
             if (e & kSdfCellRefined) continue;
-            if (isOnePlane(s.code, s.lists.data() + e, length)) {
-                grid.words[2 * k + 1] |= kSdfCellAffine;
-                ++stats.affineCells;
-            }
+            if (word & kSdfCellAffine) ++stats.affineCells;
             ++stats.leafCells;
             stats.length += long(length);
             stats.leaves += long(s.cellLeaves[k]);
@@ -1711,21 +1795,7 @@ constexpr float kOutsideFloorMargin = 0.01f; // of the grid's edge
 void setOutsideList(SdfCellState& s) {
     s.outsideList.clear();
     s.outsideFloor.reset();
-    const std::vector<TreeNode>& nodes = s.tree.nodes;
-    std::vector<int> operands, todo{int(nodes.size()) - 1};
-    while (!todo.empty()) { // the top chain's operands, in order (a bounded chain is one)
-        const int n = todo.back();
-        todo.pop_back();
-        const TreeNode& t = nodes[std::size_t(n)];
-        const bool bounded = s.floors[std::size_t(n)].valid;
-        if (!bounded && t.kind == NodeKind::Combine &&
-            SdfOp(s.code[t.instruction].kind) == SdfOp::Union) {
-            todo.push_back(t.b);
-            todo.push_back(t.a);
-        } else {
-            operands.push_back(n);
-        }
-    }
+    const std::vector<int> operands = topChainOperands(s);
     const auto floored = [&](int o) {
         const NodeFloor& f = s.floors[std::size_t(o)];
         return f.valid && !f.box.empty();
@@ -1741,11 +1811,13 @@ void setOutsideList(SdfCellState& s) {
     const bool leaveOut = !left.box.empty() && gap - left.drop > kOutsideFloorMargin * s.size;
     if (leaveOut) s.outsideFloor = left;
     std::size_t united = 0;
+    std::vector<std::uint32_t> list;
     for (int o : operands) {
         if (leaveOut && floored(o)) continue;
-        appendPostfix(s.tree, o, s.outsideList);
-        if (united++ > 0) s.outsideList.push_back(s.unionInstruction);
+        appendPostfix(s.tree, o, list);
+        if (united++ > 0) list.push_back(s.unionInstruction);
     }
+    withoutPlanes(s, list, s.outsideList, s.stackScratch);
     if (s.leastOfShapes)
         std::erase_if(s.outsideList,
                       [&](std::uint32_t i) { return !neededByLeastOfShapes(s.code[i]); });
@@ -1802,6 +1874,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     s.identity.resize(s.code.size());
     std::iota(s.identity.begin(), s.identity.end(), 0u);
     s.leastOfShapes = sdfIsLeastOfShapes(s.program);
+    s.planes = topPlanes(s);
     setOutsideList(s);
 
     // The per-cell arrays grow a block at a time up to the cell budget: reserved for it once,
@@ -1879,6 +1952,7 @@ bool repruneSdfCells(SdfCellState& s, const SdfProgram& edited, SdfCellGrid& gri
     std::copy(after.begin(), after.end(), s.program.instructions.begin());
     updateNodeFloors(s.code, s.tree, changed, s.floors);
     if (s.direct) refitDirectChain(*s.direct, s.floors);
+    if (topPlanes(s) != s.planes) return false; // a plane retyped, or a shape made a plane
     setOutsideList(s);
     s.prunedCells = 0;
     if (any) {
@@ -1924,6 +1998,33 @@ std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3
     if (grid.levels == 0) return {};
     const SdfCellRange r = sdfCellRange(grid, p);
     return std::span(grid.words).subspan(r.offset, r.length);
+}
+
+float sdfCellsDistance(const SdfProgram& program, const SdfCellGrid& grid, glm::vec3 p) {
+    const SdfCellRange r = sdfCellRange(grid, p);
+    const auto list = std::span(grid.words).subspan(r.offset, r.length);
+    float d = list.empty() ? INFINITY
+                           : sdfDistanceOrdered(program, grid.code, list, p, nullptr, grid.reading);
+    d = std::min(d, sdfCellOutsideFloor(grid, p));
+    for (const SdfCellPlane& plane : grid.planes)
+        d = std::min(d, sdfLeafDistance(program, grid.code[plane.instruction], p));
+    return d;
+}
+
+SdfSurface sdfCellsSurface(const SdfProgram& program, const SdfCellGrid& grid,
+                           std::span<const Material> materials, glm::vec3 p) {
+    const SdfCellRange r = sdfCellRange(grid, p);
+    const auto list = std::span(grid.words).subspan(r.offset, r.length);
+    SdfSurface surface;
+    surface.distance = INFINITY;
+    if (!list.empty())
+        surface = sdfSurfaceOrdered(program, grid.code, list, materials, p, grid.reading);
+    for (const SdfCellPlane& plane : grid.planes) { // (the list's surface first of equal ones)
+        const SdfSurface s =
+            sdfSurfaceOrdered(program, grid.code, std::span(&plane.instruction, 1), materials, p);
+        if (s.distance < surface.distance) surface = s;
+    }
+    return surface;
 }
 
 } // namespace rmsc

@@ -58,6 +58,7 @@ std::vector<GlslConstant> sdfGlslConstants() {
         {"SDF_FAR", glslFloat(kSdfFar)},
         {"SDF_CELL_MAX_LEVELS", glslInt(limits::kSdfCellLevels)},
         {"SDF_CELL_AFFINE", glslUint(kSdfCellAffine)},
+        {"SDF_CELL_PLANES", glslInt(kSdfCellPlanes)},
     };
     for (const OpcodeName& opcode : kOpcodes)
         out.push_back(

@@ -4,31 +4,39 @@
 // each cell its list of instruction indices or the block of its 64 children. Points outside the
 // grid run the outside list (the whole program's unbounded operands, a floor plane) and the
 // distance to the floor of the rest (sdfCellDistance). No list holds a bounding hierarchy (but
-// for programs whose tree cannot be read: SDF_HAS_BOUNDS). Expects `sdfPrimitive` declared
-// before it.
+// for programs whose tree cannot be read: SDF_HAS_BOUNDS). The planes of the root's chain of
+// unions are in no list: each point unites the list's value with theirs, one dot product each
+// (SdfCellGrid::planes). Expects `sdfPrimitive` declared before it.
 #define SDF_CELLS 1
 
 // (Included here, not in the branches below: an include is expanded once, before the
 // preprocessor chooses a branch.)
 #include "common/sdf_instructions.glsl"
 
-layout(std430, binding = SDF_CELL_BINDING) readonly buffer SdfCellBuffer {
+// The header (engine/render/gpu_layout.hpp, GpuSdfCellHeader): a uniform block over the
+// buffer's start, which llvmpipe reads once for all pixels (a storage buffer: once per pixel).
+layout(std140, binding = SDF_CELL_HEADER_BINDING) uniform SdfCellHeader {
     vec4 sdfCellOrigin; // xyz = the grid cube's corner, w = its edge
     uvec4 sdfCellInfo;  // x = levels (0: no grid), y, z = the outside list (the whole program's
                         // when there is no grid), w = 1 when every surface lies inside the cube
     vec4 sdfCellFloorMin; // a floor (sdfCellDistance): its box, w = drop
     vec4 sdfCellFloorMax; // w: 1 the whole program's, + 2 the outside list's, 0 none
-    // then the words (SdfCellGrid::words), read through sdfCellTexels below
-};
+    // The grid's planes: fields dot(xyz, p) + w (SDF_FAR where there is none), and their
+    // instructions (0xffffffffu where there is none).
+    vec4 sdfCellPlaneFields[SDF_CELL_PLANES];
+    uvec4 sdfCellPlaneInstructions;
+}; // then the words (SdfCellGrid::words), read through sdfCellTexels below
+// The header's size in texels of two words (engine/render/gpu_layout.hpp, GpuSdfCellHeader).
+#define SDF_CELL_HEADER_TEXELS (2u * uint(5 + SDF_CELL_PLANES))
 
 // The same buffer as pairs of words (a buffer texture over it, engine/render/gpu_scene.cpp),
 // read at indices that differ between pixels: a cell's two words in one fetch, where llvmpipe
 // loads storage-buffer words one at a time (see sdfProgramTexels in common/sdf_functions.glsl).
-// Word n is in texel 8 + n / 2 (after the 64-byte header).
+// Word n is in texel SDF_CELL_HEADER_TEXELS + n / 2 (after the header).
 layout(binding = SDF_CELL_TEXEL_UNIT) uniform usamplerBuffer sdfCellTexels;
 
 uvec2 sdfCellPair(uint k) {
-    return texelFetch(sdfCellTexels, int(8u + k)).xy;
+    return texelFetch(sdfCellTexels, int(SDF_CELL_HEADER_TEXELS + k)).xy;
 }
 uint sdfCellWord(uint n) {
     uvec2 pair = sdfCellPair(n >> 1u);
@@ -117,7 +125,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 //   there. A cone (passes/cone.frag) then passes the empty space beside the content (it stopped
 //   on the constants), and soft shadows and AO read less darkness into it. Without a plane in
 //   the scene every affine cell is a constant (and a scene with a plane has no such floor).
-float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell) {
+// Then the grid's planes are united with it (the nearest one's gradient in `planeGradient`).
+float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell, out vec3 planeGradient) {
     bool outside = cell.w == 0.0;
     float uses = sdfCellFloorMax.w;
     if (outside ? uses >= 2.0 : affine && (uses == 1.0 || uses == 3.0)) {
@@ -125,7 +134,42 @@ float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell) {
         float floorDistance = length(away) - sdfCellFloorMin.w;
         distance = outside ? min(distance, floorDistance) : max(distance, floorDistance);
     }
+    planeGradient = vec3(0.0);
+#ifdef SDF_CELLS_PLANES // (a scene without a plane has none: no cost)
+    for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+        vec4 field = sdfCellPlaneFields[k];
+        float d = dot(field.xyz, p) + field.w;
+        planeGradient = d < distance ? field.xyz : planeGradient;
+        distance = min(distance, d);
+    }
+#endif
     return distance;
+}
+float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell) {
+    vec3 planeGradient;
+    return sdfCellDistance(distance, p, affine, cell, planeGradient);
+}
+
+// `surface` (a list's, at p) united with the grid's planes' surfaces, the list's first of equal
+// ones; with `withTaps`, `taps` (its values at the normal's taps t0 to t3) too.
+SdfSurface sdfCellPlanesSurface(SdfSurface surface, vec3 p, bool withTaps, vec3 t0, vec3 t1,
+                                vec3 t2, vec3 t3, inout vec4 taps) {
+#ifdef SDF_CELLS_PLANES
+    for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+        vec4 field = sdfCellPlaneFields[k];
+        uint i = sdfCellPlaneInstructions[k];
+        if (i == 0xffffffffu) continue;
+        float d = dot(field.xyz, p) + field.w;
+        if (withTaps)
+            taps = min(taps, vec4(dot(field.xyz, t0), dot(field.xyz, t1), dot(field.xyz, t2),
+                                  dot(field.xyz, t3)) + field.w);
+        if (d < surface.distance) {
+            uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
+            surface = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
+        }
+    }
+#endif
+    return surface;
 }
 
 #ifndef SDF_CELLS_LEAN
@@ -175,7 +219,8 @@ float sdfDistance(vec3 p) {
 uint sdfNearestShape = 0u;
 #define SDF_SURFACE_FIELD(p) sdfLeafDistance(sdfNearestShape, p)
 
-// The nearest shape's surface (the first of equal ones, as a union keeps). Once per hit.
+// The nearest shape's surface (the first of equal ones, as a union keeps), the grid's planes'
+// included. Once per hit.
 SdfSurface sdfSurface(vec3 p) {
     uint base, count;
     sdfProgramRange(p, base, count);
@@ -192,6 +237,19 @@ SdfSurface sdfSurface(vec3 p) {
             }
         }
     }
+#ifdef SDF_CELLS_PLANES
+    for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+        uint i = sdfCellPlaneInstructions[k];
+        if (i == 0xffffffffu) continue;
+        vec4 field = sdfCellPlaneFields[k];
+        float d = dot(field.xyz, p) + field.w;
+        if (d < best.distance) {
+            uvec4 head = sdfInstructionHead(i);
+            best = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
+            sdfNearestShape = i;
+        }
+    }
+#endif
     return best;
 }
 #endif
@@ -209,7 +267,8 @@ float sdfPlaneSlope(SdfInstructionData plane, vec3 rd) {
 
 // sdfDistance at p = ro + t rd, and `advance`: how far along the unit direction rd from p the
 // ray surely meets no surface (0 when no more is known than the distance). In a cell whose
-// program is one plane (kSdfCellAffine) the only surface is where that plane's field is zero,
+// program is one plane (kSdfCellAffine: its list's, or with an empty list the grid's plane
+// nearest at p, the others being above it in the cell) the only surface is where that plane's field is zero,
 // and the field changes at a constant rate along the ray: the ray may go to the cell's far side
 // (the slab test, as sdfRayEnd), or, when the plane is nearer, to where a march stepping by the
 // distance would stop: at its first point under the hit threshold epsilon * max(t, 1), which
@@ -227,13 +286,15 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
     vec4 cell;
     sdfProgramCell(p, base, count, affine, cell);
     SdfInstructionData last; // an affine cell's list is its plane: the numbers the list read
-    float d = sdfCellDistance(sdfListDistanceLast(p, base, count, last), p, affine, cell);
+    vec3 planeGradient;
+    float d = sdfCellDistance(sdfListDistanceLast(p, base, count, last), p, affine, cell,
+                              planeGradient);
     advance = 0.0;
     if (affine) {
         vec3 towards = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
         vec3 far = (cell.xyz + step(vec3(0.0), towards) * cell.w - p) / towards;
         float exit = max(min(min(far.x, far.y), far.z), 0.0);
-        float slope = sdfPlaneSlope(last, rd);
+        float slope = count == 0u ? dot(planeGradient, rd) : sdfPlaneSlope(last, rd);
         // d + slope s = landing max(t + s, 1), solved for s.
         float landing = (1.0 + 0.5 * slope) * epsilon;
         float s = (d - landing * t) / (landing - slope);

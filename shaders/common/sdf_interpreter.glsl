@@ -152,7 +152,6 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     uint base, count;
     sdfProgramRange(p, base, count);
     taps = vec4(SDF_FAR);
-    if (count == 0u) return sdfEmptySurface(p);
     // The stack's top entry is held in `surface` and `surfaceTaps`, the ones below it in the
     // arrays: an operation reads one array entry instead of two and writes none. (llvmpipe keeps
     // an array indexed by a value that differs between pixels in memory, and reads or writes each
@@ -264,11 +263,14 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
         }
 #endif
     }
-    if (top == 0) {
-        taps = bestTaps;
-        return best;
+    if (top == 0) { // (an empty list too)
+        surface = best;
+        surfaceTaps = bestTaps;
     }
     taps = surfaceTaps;
+#ifdef SDF_CELLS // (the list's point frames are all popped: p and the taps are the hit's again)
+    surface = sdfCellPlanesSurface(surface, p, withTaps, t0, t1, t2, t3, taps);
+#endif
     return surface;
 }
 

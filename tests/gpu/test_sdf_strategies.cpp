@@ -139,6 +139,51 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
                      "strategy_cells_smooth_tree");
 }
 
+// A room: a floor and two walls are the grid's planes, in no list (engine/sdf/cell_pruning.hpp,
+// SdfCellGrid::planes): each point unites its list with them, the surface at a hit takes the
+// nearest plane's material and id, and a cell whose program was one of them is crossed to it by
+// the nearest plane's slope. With smooth unions (postfix lists) and a plain union of shapes (the
+// lean loop), it must draw what generated code draws. (The lean loop's walls stand behind the
+// camera: where two planes meet in a concave seam, its normal is the nearest shape's gradient,
+// generated code's the union's, which bends within a tap of the seam; so it drew before the
+// planes left the lists too.)
+TEST(SdfStrategies, CellsOfARoomOfPlanesAndBakedDrawTheSameImage) {
+    for (const bool smooth : {true, false}) {
+        const std::string op = smooth ? "smooth_union" : "union";
+        const std::string walls = smooth ? R"(
+              {"shape": "plane", "normal": [0.2, 0, 1], "offset": -1.5, "material": "c"},
+              {"shape": "plane", "normal": [1, 0, -0.1], "offset": -1.8, "position": [0, 0.2, 0],
+               "rotation": [0, 10, 5], "material": "a"},)"
+                                         : R"(
+              {"shape": "plane", "normal": [0, 0, -1], "offset": -5, "material": "c"},
+              {"shape": "plane", "normal": [-1, 0.1, 0], "offset": -6, "position": [0, 0.2, 0],
+               "rotation": [0, 10, 5], "material": "a"},)";
+        const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+            "camera": {"position": [1.2, 1.0, 3.5], "target": [-0.3, 0.5, 0], "fov": 55},
+            "materials": {"a": {"base_color": "#e76f51", "roughness": 0.3},
+                          "b": {"base_color": "#2a9d8f", "metallic": 0.6},
+                          "c": {"base_color": "#e9c46a", "emissive": [0.2, 0.1, 0.0]}},
+            "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+            "sdf": {"children": [
+              {"shape": "plane", "normal": [0, 1, 0], "offset": 0, "material": "b"},)" +
+                                                        walls +
+                                                        R"(
+              {"op": ")" + op + R"(", "smoothness": 0.2, "children": [
+                {"shape": "sphere", "radius": 0.4, "position": [-0.6, 0.4, 0], "material": "a"},
+                {"shape": "box", "half_extents": [0.3, 0.3, 0.3], "position": [0.1, 0.3, 0.2],
+                 "material": "c"}]}
+            ]}})");
+        const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
+        ASSERT_NE(map.find("common/sdf_cells.glsl"), std::string::npos);
+        EXPECT_EQ(map.find("SDF_CELLS_LEAN") == std::string::npos, smooth);
+        const SdfCellGrid grid = buildSdfCells(prepared.sdf, sdfContentBox(*prepared.scene.sdf));
+        ASSERT_GT(grid.levels, 0);
+        EXPECT_EQ(grid.planes.size(), 3u);
+        expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
+                         smooth ? "strategy_cells_room_smooth" : "strategy_cells_room");
+    }
+}
+
 // Seen from outside the cells' grid, a scene drawn with cells runs the outside list (the floor
 // plane) with the distance to the content's floor box standing for the rest, and no bounding
 // hierarchy (common/sdf_cells.glsl, sdfCellDistance): rays march towards the content by that
@@ -169,7 +214,8 @@ TEST(SdfStrategies, CellsSeenFromOutsideTheGridAndBakedDrawTheSameImage) {
     const SdfCellGrid grid = buildSdfCells(prepared.sdf, sdfContentBox(*prepared.scene.sdf));
     ASSERT_GT(grid.levels, 0);
     ASSERT_TRUE(grid.outsideFloor);
-    EXPECT_EQ(grid.outsideLength, 1u); // the plane
+    EXPECT_EQ(grid.outsideLength, 0u); // the plane is the grid's, in no list
+    EXPECT_EQ(grid.planes.size(), 1u);
     const glm::vec3 camera = prepared.scene.camera.position;
     EXPECT_TRUE(glm::any(glm::lessThan(camera, grid.origin)) ||
                 glm::any(glm::greaterThan(camera, grid.origin + glm::vec3(grid.size))))

@@ -145,8 +145,7 @@ int expectCellsAgree(const Compiled& c, const SdfCellGrid& grid, std::mt19937& r
         const float edge = grid.size / float(1 << (2 * range.level));
         const float whole = sdfDistance(c.program, p);
         if (std::abs(whole) > edge && s % 10 != 0) continue;
-        const float pruned =
-            sdfDistanceOrdered(c.program, grid.code, list, p, nullptr, grid.reading);
+        const float pruned = sdfCellsDistance(c.program, grid, p);
         if (whole >= edge) { // may be a far cell's bound: never above the distance
             EXPECT_LE(pruned, whole + 1e-5f * (1.0f + std::abs(whole))) << what;
             EXPECT_GT(pruned, 0.0f) << what;
@@ -158,8 +157,7 @@ int expectCellsAgree(const Compiled& c, const SdfCellGrid& grid, std::mt19937& r
             << what << " at " << p.x << " " << p.y << " " << p.z << ", cell program of "
             << list.size() << " instructions";
         const SdfSurface a = sdfSurface(c.program, materials, p);
-        const SdfSurface b =
-            sdfSurfaceOrdered(c.program, grid.code, list, materials, p, grid.reading);
+        const SdfSurface b = sdfCellsSurface(c.program, grid, materials, p);
         EXPECT_EQ(a.objectId, b.objectId) << what;
         EXPECT_NEAR(glm::length(a.baseColor - b.baseColor), 0.0f, 1e-4f) << what;
         if (::testing::Test::HasFailure()) return checked;
@@ -257,12 +255,12 @@ TEST(CellPruning, DeepSmoothTreesDropWhatIsAboveItsThreshold) {
             const std::span<const std::uint32_t> list =
                 std::span(grid.words).subspan(range.offset, range.length);
             const float whole = sdfDistance(c->program, p);
-            ASSERT_NEAR(sdfDistanceOrdered(c->program, grid.code, list, p, nullptr, grid.reading),
-                        whole, 1e-5f * (1.0f + std::abs(whole)))
-                << sdf << " at " << p.x << " " << p.y << " " << p.z;
+            ASSERT_NEAR(sdfCellsDistance(c->program, grid, p), whole,
+                        1e-5f * (1.0f + std::abs(whole)))
+                << sdf << " at " << p.x << " " << p.y << " " << p.z << ", cell program of "
+                << list.size() << " instructions";
             const SdfSurface a = sdfSurface(c->program, materials, p);
-            const SdfSurface b =
-                sdfSurfaceOrdered(c->program, grid.code, list, materials, p, grid.reading);
+            const SdfSurface b = sdfCellsSurface(c->program, grid, materials, p);
             ASSERT_EQ(a.objectId, b.objectId) << sdf;
             ASSERT_NEAR(glm::length(a.baseColor - b.baseColor), 0.0f, 1e-4f) << sdf;
             ++checked;
@@ -280,7 +278,7 @@ TEST(CellPruning, CellsMarkedAffineHoldOnlyAPlane) {
     RandomTree random{std::mt19937(20261204)};
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    int affinePoints = 0, trees = 0;
+    int affinePoints = 0, trees = 0, emptyLists = 0;
     for (int t = 0; t < 24; ++t) {
         const std::string sdf =
             R"({"children": [{"shape": "plane", "normal": [0.2, 1, -0.1], "offset": 0.9, )" +
@@ -294,18 +292,29 @@ TEST(CellPruning, CellsMarkedAffineHoldOnlyAPlane) {
         if (grid.levels == 0) continue;
         ++trees;
         EXPECT_GT(grid.stats.affineCells, 0) << sdf;
+        // The plane is the grid's (the root's operand), and the field the shader evaluates for
+        // it is its instruction's, tilted, moved and scaled as it is.
+        ASSERT_EQ(grid.planes.size(), 1u) << sdf;
+        for (int s = 0; s < 100; ++s) {
+            const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
+            const glm::vec4 field = grid.planes[0].field;
+            const float exact =
+                sdfLeafDistance(c->program, grid.code[grid.planes[0].instruction], p);
+            ASSERT_NEAR(glm::dot(glm::vec3(field), p) + field.w, exact,
+                        1e-5f * (1.0f + std::abs(exact)))
+                << sdf;
+        }
         for (int s = 0; s < 4000; ++s) {
             const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
             const SdfCellRange range = sdfCellRange(grid, p);
             if (!range.affine) continue;
             ++affinePoints;
-            const std::span<const std::uint32_t> list =
-                std::span(grid.words).subspan(range.offset, range.length);
+            emptyLists += range.length == 0; // the plane one of the grid's, in no list
             const float edge = grid.size / float(1 << (2 * range.level));
             const glm::vec3 corner =
                 grid.origin + glm::floor((p - grid.origin) / edge) * edge; // the cell's
             const auto cellProgram = [&](glm::vec3 q) {
-                return sdfDistanceOrdered(c->program, grid.code, list, q, nullptr, grid.reading);
+                return sdfCellsDistance(c->program, grid, q);
             };
             // Affine: the value halfway between p and another point of the cell is the mean.
             const glm::vec3 q = corner + glm::vec3(u(rng), u(rng), u(rng)) * edge;
@@ -323,6 +332,7 @@ TEST(CellPruning, CellsMarkedAffineHoldOnlyAPlane) {
     }
     EXPECT_GT(trees, 12) << "(trees that compile)";
     EXPECT_GT(affinePoints, trees * 1000) << "(of 4,000 points a tree: most of the grid)";
+    EXPECT_GT(emptyLists, affinePoints / 2) << "(the plane's cells list nothing)";
 }
 
 // A grid of far-apart spheres: a cell holds a few, and its program has only those.
@@ -604,10 +614,11 @@ TEST(CellPruning, MovingOneShapeAmongGroupsWithoutFloorsPrunesFewCellsAgain) {
     EXPECT_LT(r.grid.stats.prunedCells * 4, r.fullCells);
 }
 
-// Outside the grid the list holds the whole program's unbounded operands (here a plane) and the
-// floor of the rest stands for them (SdfCellGrid::outsideFloor): the least of the two is never
-// above the whole program's distance, equals it (and its object id) wherever the list is the
-// nearer, and stays a margin above zero, so no march meets the content out there. No bounding
+// Outside the grid run the whole program's unbounded operands (here a plane: one of the grid's
+// planes, so the outside list is empty) and the floor of the rest stands for them
+// (SdfCellGrid::outsideFloor): the least of the two is never above the whole program's
+// distance, equals it (and its object id) wherever the plane is the nearer, and stays a margin
+// above zero, so no march meets the content out there. No bounding
 // hierarchy in the list, built from the tree with or without one; an edit keeps all of it.
 TEST(CellPruning, TheOutsideRunsTheUnboundedOperandsAndTheRestsFloor) {
     const auto text = [](float moved) {
@@ -623,11 +634,11 @@ TEST(CellPruning, TheOutsideRunsTheUnboundedOperandsAndTheRestsFloor) {
     const std::vector<Material> materials = testMaterials();
     const auto expectOutside = [&](const SdfCellGrid& grid, const SdfProgram& whole,
                                    const std::string& what) {
-        const std::span<const std::uint32_t> outside =
-            std::span(grid.words).subspan(grid.outsideOffset, grid.outsideLength);
-        ASSERT_EQ(outside.size(), 1u) << what;
-        EXPECT_EQ(SdfOpcode(grid.code[outside[0]].opcode), SdfOpcode::Shape) << what;
-        EXPECT_EQ(PrimitiveId(grid.code[outside[0]].kind), PrimitiveId::Plane) << what;
+        EXPECT_EQ(grid.outsideLength, 0u) << what;
+        ASSERT_EQ(grid.planes.size(), 1u) << what;
+        const GpuSdfInstruction& plane = grid.code[grid.planes[0].instruction];
+        EXPECT_EQ(SdfOpcode(plane.opcode), SdfOpcode::Shape) << what;
+        EXPECT_EQ(PrimitiveId(plane.kind), PrimitiveId::Plane) << what;
         ASSERT_TRUE(grid.outsideFloor) << what;
         std::mt19937 rng(9);
         std::uniform_real_distribution<float> u(-1.0f, 2.0f), near(-0.05f, 0.05f);
@@ -637,12 +648,10 @@ TEST(CellPruning, TheOutsideRunsTheUnboundedOperandsAndTheRestsFloor) {
             if (i % 2) p.y = -1.0f + near(rng); // at the plane (y = -1)
             const SdfCellRange range = sdfCellRange(grid, p);
             if (range.level != 0) continue;
-            const std::span<const std::uint32_t> list =
-                std::span(grid.words).subspan(range.offset, range.length);
-            const float listed =
-                sdfDistanceOrdered(whole, grid.code, list, p, nullptr, grid.reading);
+            const float listed = sdfLeafDistance(whole, plane, p);
             const float floor = sdfCellOutsideFloor(grid, p);
-            const float cells = std::min(listed, floor), exact = sdfDistance(whole, p);
+            const float cells = sdfCellsDistance(whole, grid, p), exact = sdfDistance(whole, p);
+            ASSERT_EQ(cells, std::min(listed, floor)) << what;
             ASSERT_LE(cells, exact + 1e-5f * (1.0f + std::abs(exact))) << what;
             ASSERT_GT(floor, 0.01f * grid.size) << what;
             ++checked;
@@ -650,8 +659,7 @@ TEST(CellPruning, TheOutsideRunsTheUnboundedOperandsAndTheRestsFloor) {
             ++listNearer;
             ASSERT_FLOAT_EQ(cells, exact) << what; // the same plane, read the same way
             const SdfSurface a = sdfSurface(whole, materials, p);
-            const SdfSurface b =
-                sdfSurfaceOrdered(whole, grid.code, list, materials, p, grid.reading);
+            const SdfSurface b = sdfCellsSurface(whole, grid, materials, p);
             ASSERT_EQ(a.objectId, b.objectId) << what;
             hits += std::abs(exact) < 0.05f;
         }
@@ -684,6 +692,72 @@ TEST(CellPruning, TheOutsideRunsTheUnboundedOperandsAndTheRestsFloor) {
         expectOutside(grid, moved->program, what + ", moved");
         EXPECT_EQ(expectCellsAgree(*moved, grid, rng, 1000, what + ", moved"), 1000);
     }
+}
+
+// The planes of the root's chain of unions (at most kSdfCellPlanes of them) are the grid's and in
+// no list; a plane elsewhere in the tree, and those past the first four, stay in the lists. The
+// cells agree with the whole program, before and after a plane is moved (pruned again in
+// place, its field made again); retyping one of the grid's planes, or making a shape a plane,
+// changes which planes the lists leave out: the re-prune refuses it (the caller builds again).
+TEST(CellPruning, TheRootsPlanesAreInNoList) {
+    const auto text = [](float wall, const char* firstKind, const char* lastKind) {
+        std::ostringstream s;
+        s << R"({"children": [{"shape": ")" << firstKind
+          << R"(", "normal": [0, 1, 0], "offset": -1, "material": "m1"}, )"
+          << R"({"shape": "plane", "normal": [1, 0, 0.3], "offset": )" << wall
+          << R"(, "material": "m2"}, )";
+        for (int i = 0; i < 3; ++i) // far-off planes: a union of five in all
+            s << R"({"shape": "plane", "normal": [0, -1, 0], "offset": )" << 20 + i << "}, ";
+        s << R"({"op": "subtraction", "children": [{"shape": "box", "half_extents": [0.5, 0.5, 0.5]},)"
+          << R"( {"shape": "plane", "normal": [0, 0, 1], "offset": 0.2}]}, )";
+        for (int i = 0; i < 8; ++i)
+            s << R"({"shape": "sphere", "radius": 0.3, "position": [)" << (i % 4) * 0.8f << ", 0, "
+              << (i / 4) * 0.8f << R"(], "material": "m)" << i % 3 << "\"}, ";
+        s << R"({"shape": ")" << lastKind << R"(", "normal": [0, 0, -1], "offset": 4}]})";
+        return s.str();
+    };
+    const std::optional<Compiled> c = compileText(text(-1.5f, "plane", "plane"), false),
+                                  moved = compileText(text(-1.2f, "plane", "plane"), false),
+                                  retyped = compileText(text(-1.5f, "box", "plane"), false);
+    ASSERT_TRUE(c && moved && retyped);
+    SdfCellOptions options;
+    options.levels = 3;
+    SdfCellStatePtr state;
+    SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf), options, &state);
+    ASSERT_GT(grid.levels, 0);
+    ASSERT_EQ(grid.planes.size(), std::size_t(kSdfCellPlanes));
+    const auto isPlane = [&](std::uint32_t i) {
+        return SdfOpcode(grid.code[i].opcode) == SdfOpcode::Shape &&
+               PrimitiveId(grid.code[i].kind) == PrimitiveId::Plane;
+    };
+    for (const SdfCellPlane& plane : grid.planes)
+        ASSERT_TRUE(isPlane(plane.instruction));
+    // Every list word that is a plane is one of the two the grid does not hold.
+    const auto gridPlane = [&](std::uint32_t i) {
+        return std::any_of(grid.planes.begin(), grid.planes.end(),
+                           [&](const SdfCellPlane& plane) { return plane.instruction == i; });
+    };
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int listedPlanes = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
+        for (std::uint32_t i : sdfCellProgram(grid, p)) {
+            ASSERT_FALSE(gridPlane(i));
+            listedPlanes += isPlane(i);
+        }
+    }
+    EXPECT_GT(listedPlanes, 0) << "the subtracted plane and the fifth stay in the lists";
+    EXPECT_EQ(expectCellsAgree(*c, grid, rng, 2000, "planes"), 2000);
+    ASSERT_TRUE(repruneSdfCells(*state, moved->program, grid));
+    EXPECT_EQ(expectCellsAgree(*moved, grid, rng, 2000, "a plane moved"), 2000);
+    EXPECT_FALSE(repruneSdfCells(*state, retyped->program, grid));
+    // A shape made a plane: the grid would take it in place of the fifth.
+    SdfCellStatePtr again;
+    grid = buildSdfCells(retyped->program, sdfContentBox(*retyped->scene.sdf), options, &again);
+    ASSERT_EQ(grid.planes.size(), std::size_t(kSdfCellPlanes));
+    EXPECT_EQ(expectCellsAgree(*retyped, grid, rng, 2000, "a plane retyped"), 2000);
+    EXPECT_FALSE(repruneSdfCells(*again, c->program, grid));
 }
 
 // A union of shapes, with or without its bounding hierarchy, lists only the shapes each cell

@@ -22,15 +22,21 @@ enum SsboBinding : unsigned {
     kShadowViewBinding = 3,
     kSdfDataBinding = 4,          // SdfProgram::data (shaders/common/sdf_scene.glsl)
     kMarchStatisticsBinding = 5,  // fragments that marched (shaders/common/march_statistics.glsl)
-    kSdfCellBinding = 6,          // the cell table and programs (shaders/common/sdf_cells.glsl)
     kJointMatrixBinding = 7,      // a mesh's joint matrices (shaders/common/skinning.glsl)
     kFieldSampleStartBinding = 8, // lattice starts (shaders/passes/field_sample.comp)
     kFieldSampleDistanceBinding = 9, // and the distances it writes
 };
 
-// Uniform block binding points: the frame (shaders/common/frame.glsl) and the program buffer's
-// uniform window (kSdfUniformInstructions, shaders/common/sdf_functions.glsl).
-enum UboBinding : unsigned { kFrameBinding = 0, kSdfProgramUniformBinding = 1 };
+// Uniform block binding points: the frame (shaders/common/frame.glsl), the program buffer's
+// uniform window (kSdfUniformInstructions, shaders/common/sdf_functions.glsl) and the cell
+// buffer's header (GpuSdfCellHeader, shaders/common/sdf_cells.glsl; its words are read through
+// kSdfCellTexelUnit). llvmpipe loads a uniform block's numbers once for all pixels, a storage
+// buffer's one pixel at a time: the header is read at every march step.
+enum UboBinding : unsigned {
+    kFrameBinding = 0,
+    kSdfProgramUniformBinding = 1,
+    kSdfCellHeaderBinding = 2
+};
 
 // Texture units of the lighting inputs every shading pass samples (shaders/common/sky.glsl,
 // shadows.glsl); passes keep their own textures on lower units.
@@ -50,8 +56,13 @@ struct GpuSdfCellHeader {
     glm::vec4 floorMin{0.0f};   // a floor (render/gpu_scene.cpp, setCellFloor): box, w = drop
     glm::vec4 floorMax{0.0f};   // w: 1 the program's (SdfCellGrid::floor), + 2 the outside
                                 // list's (outsideFloor), 0 none
+    // The grid's planes (SdfCellGrid::planes; render/gpu_scene.cpp, setCellPlanes): each field
+    // dot(xyz, p) + w, and their instructions; a plane not there has the field SDF_FAR and the
+    // instruction 0xffffffff.
+    glm::vec4 planeFields[4]{};
+    glm::uvec4 planeInstructions{0xffffffffu};
 };
-static_assert(sizeof(GpuSdfCellHeader) == 64);
+static_assert(sizeof(GpuSdfCellHeader) == 144); // sdf_cells.glsl: the words from texel 18
 
 // GpuLight::directionType.w.
 enum GpuLightType : int { kGpuDirectional = 0, kGpuPoint = 1, kGpuSpot = 2 };
