@@ -125,6 +125,14 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 //   there. A cone (passes/cone.frag) then passes the empty space beside the content (it stopped
 //   on the constants), and soft shadows and AO read less darkness into it. Without a plane in
 //   the scene every affine cell is a constant (and a scene with a plane has no such floor).
+// A plane's field counts as an evaluation of its primitive (`rmsc bench`'s evaluations a pixel).
+#ifdef SDF_COUNT_EVALUATIONS
+#define SDF_COUNT_PLANE(k, n) \
+    if (sdfCellPlaneInstructions[k] != 0xffffffffu) sdfEvaluations += (n)
+#else
+#define SDF_COUNT_PLANE(k, n)
+#endif
+
 // Then the grid's planes are united with it (the nearest one's gradient in `planeGradient`).
 float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell, out vec3 planeGradient) {
     bool outside = cell.w == 0.0;
@@ -139,6 +147,7 @@ float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell, out vec3 p
     for (int k = 0; k < SDF_CELL_PLANES; ++k) {
         vec4 field = sdfCellPlaneFields[k];
         float d = dot(field.xyz, p) + field.w;
+        SDF_COUNT_PLANE(k, 1u);
         planeGradient = d < distance ? field.xyz : planeGradient;
         distance = min(distance, d);
     }
@@ -160,6 +169,7 @@ SdfSurface sdfCellPlanesSurface(SdfSurface surface, vec3 p, bool withTaps, vec3 
         uint i = sdfCellPlaneInstructions[k];
         if (i == 0xffffffffu) continue;
         float d = dot(field.xyz, p) + field.w;
+        SDF_COUNT_PLANE(k, withTaps ? 5u : 1u);
         if (withTaps)
             taps = min(taps, vec4(dot(field.xyz, t0), dot(field.xyz, t1), dot(field.xyz, t2),
                                   dot(field.xyz, t3)) + field.w);
@@ -243,6 +253,7 @@ SdfSurface sdfSurface(vec3 p) {
         if (i == 0xffffffffu) continue;
         vec4 field = sdfCellPlaneFields[k];
         float d = dot(field.xyz, p) + field.w;
+        SDF_COUNT_PLANE(k, 1u);
         if (d < best.distance) {
             uvec4 head = sdfInstructionHead(i);
             best = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
