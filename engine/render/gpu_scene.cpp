@@ -56,7 +56,9 @@ void setCellPlanes(GpuSdfCellHeader& header, const SdfCellGrid& grid) {
         const bool used = std::size_t(k) < grid.planes.size();
         header.planeFields[k] =
             used ? grid.planes[std::size_t(k)].field : glm::vec4(0.0f, 0.0f, 0.0f, kSdfFar);
-        header.planeInstructions[k] = used ? grid.planes[std::size_t(k)].instruction : 0xffffffffu;
+        const SdfCellPlane* plane = used ? &grid.planes[std::size_t(k)] : nullptr;
+        header.planeInstructions[k] =
+            plane ? plane->instruction | (plane->leads ? 0x80000000u : 0u) : 0xffffffffu;
     }
 }
 

@@ -1159,6 +1159,7 @@ struct SdfCellState {
     SdfCellOptions options;
     std::uint32_t unionInstruction = 0; // in code: the union the outside list unites with
     std::vector<std::uint32_t> planes;  // in code: the root chain's planes (SdfCellGrid::planes)
+    std::size_t leadingPlanes = 0;      // how many of them come before every listed operand
     std::vector<std::uint32_t> listScratch; // setLeafCell's list without the planes
     std::vector<char> stackScratch;         // and withoutPlanes' stack
     // What points outside the grid run (setOutsideList) and the floor of what it leaves out.
@@ -1276,14 +1277,20 @@ std::vector<int> topChainOperands(const SdfCellState& s) {
 }
 
 // The planes the lists leave out (SdfCellGrid::planes): the top chain's operands that are one
-// plane instruction, the first kSdfCellPlanes of them.
-std::vector<std::uint32_t> topPlanes(const SdfCellState& s) {
+// plane instruction, the first kSdfCellPlanes of them; and in `leading`, how many of them come
+// before every operand the lists hold (SdfCellPlane::leads).
+std::vector<std::uint32_t> topPlanes(const SdfCellState& s, std::size_t* leading = nullptr) {
     std::vector<std::uint32_t> planes;
+    bool listedBefore = false;
     for (int o : topChainOperands(s)) {
         const TreeNode& t = s.tree.nodes[std::size_t(o)];
         if (t.kind == NodeKind::Leaf && t.end == t.begin + 1 && isOnePlane(s.code, &t.begin, 1) &&
-            planes.size() < std::size_t(kSdfCellPlanes))
+            planes.size() < std::size_t(kSdfCellPlanes)) {
             planes.push_back(t.begin);
+            if (leading && !listedBefore) *leading = planes.size();
+        } else {
+            listedBefore = true;
+        }
     }
     return planes;
 }
@@ -1699,8 +1706,8 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         grid.floor = SdfFieldFloor{s.floors.back().box, s.floors.back().drop};
     grid.outsideFloor = s.outsideFloor;
     grid.planes.clear();
-    for (std::uint32_t i : s.planes)
-        grid.planes.push_back({i, planeField(s.code[i])});
+    for (std::size_t k = 0; k < s.planes.size(); ++k)
+        grid.planes.push_back({s.planes[k], planeField(s.code[s.planes[k]]), k < s.leadingPlanes});
     const std::size_t blockCount = s.blocks.size();
     const std::uint32_t base =
         std::uint32_t(inPlace ? s.packedBase : 128 * (blockCount + (blockCount + 7) / 8));
@@ -1781,15 +1788,16 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
 
 // What points outside the grid run: the tree without the operands of its top chain of unions
 // whose floors bound them there (the content: every operand but the planes and other unbounded
-// ones), in s.outsideList, and one floor for those it leaves out, in s.outsideFloor (their
-// boxes' union, the largest drop). At a point outside the grid the field is the least of the
-// list's value and the operands', which is at least the floor's distance; the shader takes the
-// least of the list and that distance (common/sdf_cells.glsl, sdfCellDistance): a lower bound,
-// equal to the field wherever the list is nearer, which is everywhere a march outside the grid
-// can meet a surface. The floor stays a margin away from the grid's faces (so nothing outside
-// the grid reads as a hit on it), else nothing is left out. The list holds no bounding
-// hierarchy: the cells' shader leaves its branches out (each costs every step on llvmpipe).
-// A grid whose whole program is bounded runs nothing outside (its floor alone: the grids).
+// ones) and without the grid's planes (s.planes, which every point runs), in s.outsideList, and one
+// floor for those it leaves out, in s.outsideFloor (their boxes' union, the largest drop). At a
+// point outside the grid the field is the least of the list's value and the operands', which is at
+// least the floor's distance; the shader takes the least of the list and that distance
+// (common/sdf_cells.glsl, sdfCellDistance): a lower bound, equal to the field wherever the list is
+// nearer, which is everywhere a march outside the grid can meet a surface. The floor stays a margin
+// away from the grid's faces (so nothing outside the grid reads as a hit on it), else nothing is
+// left out. The list holds no bounding hierarchy: the cells' shader leaves its branches out (each
+// costs every step on llvmpipe). A grid whose whole program is bounded runs nothing outside (its
+// floor alone: the grids).
 constexpr float kOutsideFloorMargin = 0.01f; // of the grid's edge
 
 void setOutsideList(SdfCellState& s) {
@@ -1874,7 +1882,7 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
     s.identity.resize(s.code.size());
     std::iota(s.identity.begin(), s.identity.end(), 0u);
     s.leastOfShapes = sdfIsLeastOfShapes(s.program);
-    s.planes = topPlanes(s);
+    s.planes = topPlanes(s, &s.leadingPlanes);
     setOutsideList(s);
 
     // The per-cell arrays grow a block at a time up to the cell budget: reserved for it once,
@@ -2019,10 +2027,15 @@ SdfSurface sdfCellsSurface(const SdfProgram& program, const SdfCellGrid& grid,
     surface.distance = INFINITY;
     if (!list.empty())
         surface = sdfSurfaceOrdered(program, grid.code, list, materials, p, grid.reading);
-    for (const SdfCellPlane& plane : grid.planes) { // (the list's surface first of equal ones)
+    bool fromPlane = false; // (planes are in the chain's order: the first of equal ones stays)
+    for (const SdfCellPlane& plane : grid.planes) {
         const SdfSurface s =
             sdfSurfaceOrdered(program, grid.code, std::span(&plane.instruction, 1), materials, p);
-        if (s.distance < surface.distance) surface = s;
+        if (s.distance < surface.distance ||
+            (plane.leads && !fromPlane && s.distance == surface.distance)) {
+            surface = s;
+            fromPlane = true;
+        }
     }
     return surface;
 }

@@ -111,8 +111,12 @@ SdfEvaluationCost sdfCellsCost(const SdfCellGrid& grid) {
             const std::uint32_t length = grid.words[base + 2 * c + 1] & ~kSdfCellAffine;
             if (!seen.insert(entry).second || std::size_t(entry) + length > grid.words.size())
                 continue;
-            const SdfEvaluationCost cell = sdfEvaluationCost(
-                grid.code, std::span<const std::uint32_t>(grid.words.data() + entry, length));
+            // The list and the grid's planes, which every point evaluates besides it.
+            std::vector<std::uint32_t> evaluated(grid.words.begin() + entry,
+                                                 grid.words.begin() + entry + length);
+            for (const SdfCellPlane& plane : grid.planes)
+                evaluated.push_back(plane.instruction);
+            const SdfEvaluationCost cell = sdfEvaluationCost(grid.code, evaluated);
             if (cell.perEvaluation > worst.perEvaluation) worst = cell;
         }
     }

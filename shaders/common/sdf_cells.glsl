@@ -2,8 +2,8 @@
 // on the program of the cell the point is in, out of the cell table that engine/sdf/
 // cell_pruning.cpp builds (layout there, SdfCellGrid): blocks of 64 cells, 4 x 4 x 4 per level,
 // each cell its list of instruction indices or the block of its 64 children. Points outside the
-// grid run the outside list (the whole program's unbounded operands, a floor plane) and the
-// distance to the floor of the rest (sdfCellDistance). No list holds a bounding hierarchy (but
+// grid run the outside list (the whole program's unbounded operands but the planes below, such
+// as an infinite repetition) and the distance to the floor of the rest (sdfCellDistance). No list holds a bounding hierarchy (but
 // for programs whose tree cannot be read: SDF_HAS_BOUNDS). The planes of the root's chain of
 // unions are in no list: each point unites the list's value with theirs, one dot product each
 // (SdfCellGrid::planes). Expects `sdfPrimitive` declared before it.
@@ -22,7 +22,9 @@ layout(std140, binding = SDF_CELL_HEADER_BINDING) uniform SdfCellHeader {
     vec4 sdfCellFloorMin; // a floor (sdfCellDistance): its box, w = drop
     vec4 sdfCellFloorMax; // w: 1 the whole program's, + 2 the outside list's, 0 none
     // The grid's planes: fields dot(xyz, p) + w (SDF_FAR where there is none), and their
-    // instructions (0xffffffffu where there is none).
+    // instructions (0xffffffffu where there is none), the top bit set where the plane's surface
+    // is kept over a list's at an equal distance (SdfCellPlane::leads: a union keeps the first
+    // of equal operands).
     vec4 sdfCellPlaneFields[SDF_CELL_PLANES];
     uvec4 sdfCellPlaneInstructions;
 }; // then the words (SdfCellGrid::words), read through sdfCellTexels below
@@ -159,11 +161,19 @@ float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell) {
     return sdfCellDistance(distance, p, affine, cell, planeGradient);
 }
 
-// `surface` (a list's, at p) united with the grid's planes' surfaces, the list's first of equal
-// ones; with `withTaps`, `taps` (its values at the normal's taps t0 to t3) too.
+// Whether a plane (its instruction word `i`, nearer by d) takes the place of the surface at
+// `distance`, which a plane gave or not (`fromPlane`): the first of equal ones stays, the
+// planes in their order, before the list where they lead it (SdfCellPlane::leads).
+bool sdfCellPlaneWins(uint i, float d, float distance, bool fromPlane) {
+    return d < distance || ((i & 0x80000000u) != 0u && !fromPlane && d == distance);
+}
+
+// `surface` (a list's, at p) united with the grid's planes' surfaces; with `withTaps`, `taps`
+// (its values at the normal's taps t0 to t3) too.
 SdfSurface sdfCellPlanesSurface(SdfSurface surface, vec3 p, bool withTaps, vec3 t0, vec3 t1,
                                 vec3 t2, vec3 t3, inout vec4 taps) {
 #ifdef SDF_CELLS_PLANES
+    bool fromPlane = false;
     for (int k = 0; k < SDF_CELL_PLANES; ++k) {
         vec4 field = sdfCellPlaneFields[k];
         uint i = sdfCellPlaneInstructions[k];
@@ -173,9 +183,11 @@ SdfSurface sdfCellPlanesSurface(SdfSurface surface, vec3 p, bool withTaps, vec3 
         if (withTaps)
             taps = min(taps, vec4(dot(field.xyz, t0), dot(field.xyz, t1), dot(field.xyz, t2),
                                   dot(field.xyz, t3)) + field.w);
-        if (d < surface.distance) {
+        if (sdfCellPlaneWins(i, d, surface.distance, fromPlane)) {
+            i &= 0x7fffffffu;
             uvec4 head = sdfInstructionHead(i); // opcode, kind, material, id
             surface = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
+            fromPlane = true;
         }
     }
 #endif
@@ -248,16 +260,19 @@ SdfSurface sdfSurface(vec3 p) {
         }
     }
 #ifdef SDF_CELLS_PLANES
+    bool fromPlane = false;
     for (int k = 0; k < SDF_CELL_PLANES; ++k) {
         uint i = sdfCellPlaneInstructions[k];
         if (i == 0xffffffffu) continue;
         vec4 field = sdfCellPlaneFields[k];
         float d = dot(field.xyz, p) + field.w;
         SDF_COUNT_PLANE(k, 1u);
-        if (d < best.distance) {
+        if (sdfCellPlaneWins(i, d, best.distance, fromPlane)) {
+            i &= 0x7fffffffu;
             uvec4 head = sdfInstructionHead(i);
             best = sdfMaterialSurface(d, head.w, head.z, sdfInstructionPoint(i, p));
             sdfNearestShape = i;
+            fromPlane = true;
         }
     }
 #endif

@@ -707,7 +707,7 @@ TEST(CellPruning, TheRootsPlanesAreInNoList) {
           << R"({"shape": "plane", "normal": [1, 0, 0.3], "offset": )" << wall
           << R"(, "material": "m2"}, )";
         for (int i = 0; i < 3; ++i) // far-off planes: a union of five in all
-            s << R"({"shape": "plane", "normal": [0, -1, 0], "offset": )" << 20 + i << "}, ";
+            s << R"({"shape": "plane", "normal": [0, -1, 0], "offset": -)" << 20 + i << "}, ";
         s << R"({"op": "subtraction", "children": [{"shape": "box", "half_extents": [0.5, 0.5, 0.5]},)"
           << R"( {"shape": "plane", "normal": [0, 0, 1], "offset": 0.2}]}, )";
         for (int i = 0; i < 8; ++i)
@@ -758,6 +758,42 @@ TEST(CellPruning, TheRootsPlanesAreInNoList) {
     ASSERT_EQ(grid.planes.size(), std::size_t(kSdfCellPlanes));
     EXPECT_EQ(expectCellsAgree(*retyped, grid, rng, 2000, "a plane retyped"), 2000);
     EXPECT_FALSE(repruneSdfCells(*again, c->program, grid));
+}
+
+// Where a grid plane and a list are equally near, the surface is the one the union keeps, the
+// first of equal operands: a floor before the rest keeps its material over an equal copy of it
+// that the lists hold (past the four planes the grid takes), and over a later plane.
+TEST(CellPruning, APlaneFirstOfEqualOnesKeepsItsSurface) {
+    std::ostringstream s;
+    s << R"({"children": [{"shape": "plane", "normal": [0, 1, 0], "offset": -1, "material": "m1"},)"
+      << R"( {"shape": "sphere", "radius": 0.4, "material": "m0"},)";
+    for (int i = 0; i < 3; ++i)
+        s << R"( {"shape": "plane", "normal": [0, -1, 0], "offset": -)" << 20 + i << "},";
+    s << R"( {"shape": "plane", "normal": [0, 1, 0], "offset": -1, "material": "m2"}]})";
+    const std::optional<Compiled> c = compileText(s.str(), false);
+    ASSERT_TRUE(c);
+    SdfCellOptions options;
+    options.levels = 3;
+    const SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf), options);
+    ASSERT_GT(grid.levels, 0);
+    ASSERT_EQ(grid.planes.size(), std::size_t(kSdfCellPlanes));
+    EXPECT_TRUE(grid.planes[0].leads);
+    EXPECT_FALSE(grid.planes[1].leads); // after the sphere
+    const std::vector<Material> materials = testMaterials();
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int onTheFloor = 0;
+    for (int n = 0; n < 500; ++n) {
+        glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
+        p.y = -1.0f + 0.1f * (u(rng) - 0.5f); // about the floor, where the two are equal
+        const SdfSurface a = sdfSurface(c->program, materials, p);
+        const SdfSurface b = sdfCellsSurface(c->program, grid, materials, p);
+        ASSERT_EQ(a.objectId, b.objectId) << p.x << " " << p.y << " " << p.z;
+        ASSERT_EQ(a.baseColor, b.baseColor);
+        onTheFloor += a.objectId == grid.code[grid.planes[0].instruction].objectId;
+    }
+    EXPECT_GT(onTheFloor, 400); // (near the sphere, the sphere)
+    EXPECT_EQ(expectCellsAgree(*c, grid, rng, 1000, "equal planes"), 1000);
 }
 
 // A union of shapes, with or without its bounding hierarchy, lists only the shapes each cell

@@ -338,7 +338,12 @@ int main(int argc, char** argv) {
             else if (SdfOpcode(grid.code[index].opcode) == SdfOpcode::Shape)
                 cpuShapes.push_back(index);
         }
+        // (The grid's planes are in no CPU list: every point evaluates them.)
         std::vector<std::uint32_t> gpuShapes = leaf.shapes;
+        std::erase_if(gpuShapes, [&](std::uint32_t i) {
+            return std::any_of(grid.planes.begin(), grid.planes.end(),
+                               [&](const SdfCellPlane& plane) { return plane.instruction == i; });
+        });
         std::sort(cpuShapes.begin(), cpuShapes.end());
         std::sort(gpuShapes.begin(), gpuShapes.end());
         const bool same = range.level == leaf.level &&

@@ -57,8 +57,9 @@ struct GpuSdfCellHeader {
     glm::vec4 floorMax{0.0f};   // w: 1 the program's (SdfCellGrid::floor), + 2 the outside
                                 // list's (outsideFloor), 0 none
     // The grid's planes (SdfCellGrid::planes; render/gpu_scene.cpp, setCellPlanes): each field
-    // dot(xyz, p) + w, and their instructions; a plane not there has the field SDF_FAR and the
-    // instruction 0xffffffff.
+    // dot(xyz, p) + w, and their instructions, the top bit set when the plane leads the lists
+    // (SdfCellPlane::leads); a plane not there has the field SDF_FAR and the instruction
+    // 0xffffffff.
     glm::vec4 planeFields[4]{};
     glm::uvec4 planeInstructions{0xffffffffu};
 };

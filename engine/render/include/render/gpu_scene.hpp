@@ -79,7 +79,8 @@ struct GpuScene {
     gl::Texture skyImage;
     int skyLevels = 0;
 
-    // Binds the SSBOs at their SsboBinding points and the SDF material textures to their units.
+    // Binds the SSBOs at their SsboBinding points, the uniform blocks over them (the program's
+    // window, the cell header) and the SDF material and texel textures to their units.
     void bindBuffers() const;
 };
 

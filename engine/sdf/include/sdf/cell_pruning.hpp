@@ -116,10 +116,13 @@ struct SdfFieldFloor {
 
 // A plane of the root's chain of unions, taken out of the lists (see the top): its instruction
 // in SdfCellGrid::code and its field, affine in the world point p: dot(field.xyz, p) + field.w.
+// `leads`: it comes before every operand the lists hold, so where it and a list's surface are
+// equally near its surface is the one kept (a union keeps the first of equal operands).
 constexpr int kSdfCellPlanes = 4; // at most; more stay in the lists
 struct SdfCellPlane {
     std::uint32_t instruction = 0;
     glm::vec4 field{0.0f};
+    bool leads = false;
 };
 
 struct SdfWordRange {
@@ -132,8 +135,9 @@ struct SdfCellGrid {
     float size = 0.0f;
     std::vector<std::uint32_t> words;
     // The list points outside the grid run, in words: the whole program's operands of its top
-    // chain of unions that outsideFloor does not stand for (a plane; none in a bounded scene).
-    // It holds no bounding hierarchy (unless sdfCellsNeedHierarchy).
+    // chain of unions that outsideFloor does not stand for and that are not the grid's planes
+    // (an infinite repetition; none in a bounded scene, nor in one whose only unbounded
+    // operands are planes). It holds no bounding hierarchy (unless sdfCellsNeedHierarchy).
     std::uint32_t outsideOffset = 0;
     std::uint32_t outsideLength = 0;
     // How every list is read (the cells' and the outside one): the cells of a program of a
@@ -150,7 +154,8 @@ struct SdfCellGrid {
     // Far cells, whose program is a constant, may take the larger of the two (sdf_cells.glsl).
     std::optional<SdfFieldFloor> floor;
     // What the outside list leaves out, by its floor: outside the grid the field is the least of
-    // the list's value and the floor's distance, distance(y, box) - drop (sdfCellOutsideFloor;
+    // the list's value, the planes' and the floor's distance, distance(y, box) - drop
+    // (sdfCellOutsideFloor;
     // never within a margin of zero there). The root's floor when the whole program has one
     // that keeps the margin.
     std::optional<SdfFieldFloor> outsideFloor;
@@ -198,8 +203,9 @@ SdfCellGrid buildSdfCells(const SdfProgram& program, const Aabb& content,
 // cell's pruned program holds a changed node, or changed itself, are pruned again (a moved
 // shape: the cells around its old and new place, and the coarse cells above them); the result
 // is what a full build gives but for the order in which the cell budget is spent. False when
-// the structure differs (or a cell's program would be deeper than the stack): build again,
-// the state is spent.
+// the structure differs, an edit changes which operands are the grid's planes (a plane retyped,
+// a shape made a plane), or a cell's program would be deeper than the stack: build again, the
+// state is spent.
 bool repruneSdfCells(SdfCellState& state, const SdfProgram& edited, SdfCellGrid& grid);
 
 // The list of the program that runs at p (the cell's, or the outside list outside the grid):
@@ -217,8 +223,11 @@ SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p);
 float sdfCellOutsideFloor(const SdfCellGrid& grid, glm::vec3 p);
 std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
 // The cells' field at p as the shader reads it (common/sdf_cells.glsl): the list of
-// sdfCellRange(grid, p), with the outside floor outside the grid, united with the grid's planes;
-// and its surface (material and id). `program` is the one the grid was built from.
+// sdfCellRange(grid, p), with the outside floor outside the grid, united with the grid's planes
+// (but for the program's floor, which the shader may take in a far cell instead of its
+// constant: both are lower bounds there); and its surface (material and id: the planes' and the
+// list's, the first of equal ones as the union keeps it). `program` is the one the grid was
+// built from.
 float sdfCellsDistance(const SdfProgram& program, const SdfCellGrid& grid, glm::vec3 p);
 SdfSurface sdfCellsSurface(const SdfProgram& program, const SdfCellGrid& grid,
                            std::span<const Material> materials, glm::vec3 p);
