@@ -13,7 +13,8 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection) 
 
 EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& interpreted,
                               const SdfLiveRange& live,
-                              const std::function<bool(const std::string&)>& isReady) {
+                              const std::function<bool(const std::string&)>& isReady,
+                              SdfCellLoop cellLoop) {
     struct Candidate {
         std::string map;
         EditingMapKind kind;
@@ -26,6 +27,9 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& inter
         byPreference.push_back(
             {generateSdfMap(program, SdfStrategy::Buffer), EditingMapKind::Buffer});
     } else {
+        if (cellLoop == SdfCellLoop::OnePerIteration)
+            byPreference.push_back({generateSdfMap(program, SdfStrategy::Cells, {}, {}, cellLoop),
+                                    EditingMapKind::Cells});
         byPreference.push_back(
             {generateSdfMap(program, SdfStrategy::Cells), EditingMapKind::Cells});
     }

@@ -269,7 +269,9 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
     gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, sceneCode, shellCode);
-    gpu.sdfMap = generateSdfMap(drawn, strategy);
+    gpu.sdfMap = generateSdfMap(drawn, strategy, {}, {},
+                                pruned ? sdfCellLoop(sdfLongestCellList(grid))
+                                       : SdfCellLoop::TwoPerIteration);
     if (pruned) {
         GpuSdfCellHeader header;
         header.originSize = glm::vec4(grid.origin, grid.size);

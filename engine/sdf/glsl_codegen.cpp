@@ -329,7 +329,8 @@ SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requeste
 }
 
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
-                           const SdfMapNames& names, const SdfLiveRange& live) {
+                           const SdfMapNames& names, const SdfLiveRange& live,
+                           SdfCellLoop cellLoop) {
     const std::string& prefix = names.prefix;
     SdfStrategy strategy = effectiveSdfStrategy(program, requested);
     // The interpreter runs the scene's own map only (it reads the program from its start);
@@ -354,6 +355,8 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
         if (strategy == SdfStrategy::Cells)
             out << (sdfIsLeastOfShapes(program) ? "#define SDF_CELLS_LEAN 1\n" : "")
                 << (planes ? "#define SDF_CELLS_PLANES 1\n" : "")
+                << (cellLoop == SdfCellLoop::OnePerIteration ? "#define SDF_CELLS_SHORT_LISTS 1\n"
+                                                             : "")
                 << "#include \"common/sdf_cells.glsl\"\n";
         else
             out << (sdfIsPartsOnly(program) ? "#include \"common/sdf_parts_loop.glsl\"\n"

@@ -38,13 +38,15 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
         return !cellsPending &&
                (!warmer_ || first || renderer_->hasPrograms(map) || warmer_->isWarm(map));
     };
+    const SdfCellLoop cellLoop =
+        cellGrid_ ? sdfCellLoop(sdfLongestCellList(*cellGrid_)) : SdfCellLoop::TwoPerIteration;
     editor::EditingMaps maps =
-        editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady);
+        editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady, cellLoop);
     if (warmer_) {
         warmer_->request(prepared_, maps.build);
         if (waitForBuilds && !maps.build.empty()) {
             warmer_->waitUntilIdle();
-            maps = editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady);
+            maps = editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady, cellLoop);
             choiceBuilt_ = warmer_->finishedCount();
         }
     }

@@ -109,9 +109,12 @@ float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData 
     // after a budget of iterations shared by every loop (LP_MAX_TGSI_LOOP_ITERATIONS), which
     // large programs would exhaust within a few march steps; unrolling stretches it 8 times.
     // A cell's program is short (sdf/cell_pruning.hpp): there llvmpipe would run the unrolled
-    // instructions past its end for nothing (masked), so two per iteration.
+    // instructions past its end for nothing (masked), so two per iteration, and one where every
+    // list of the grid is short (SdfCellLoop in sdf/glsl_codegen.hpp).
     for (uint n = 0u; n < count;) {
-#ifdef SDF_CELLS
+#if defined(SDF_CELLS_SHORT_LISTS)
+        SDF_DISTANCE_STEP
+#elif defined(SDF_CELLS)
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP
 #else
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP

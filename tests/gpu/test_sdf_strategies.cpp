@@ -139,6 +139,44 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
                      "strategy_cells_smooth_tree");
 }
 
+// A grid whose lists are all short is read one list instruction per loop iteration
+// (sdf/glsl_codegen.hpp, SdfCellLoop), and draws what the loop for any grid (two per
+// iteration) draws: the same instructions in the same order, so the same pixels. A grid with a
+// long list gets the second loop (the first would spend llvmpipe's loop budget: the 1,000-node
+// test of test_sdf_hierarchy.cpp loses ids with it).
+TEST(SdfStrategies, CellsOfShortListsDrawTheSameWithEitherLoop) {
+    Renderer& renderer = sharedRenderer(); // (and the context)
+    const PreparedScene prepared = openRepositoryScene("samples/bench/tree_256.json");
+    GpuScene gpu = uploadScene(prepared, SdfStrategy::Cells);
+    ASSERT_NE(gpu.sdfMap.find("common/sdf_cells.glsl"), std::string::npos);
+    ASSERT_EQ(gpu.sdfMap.find("SDF_CELLS_LEAN"), std::string::npos); // the postfix loop
+    EXPECT_NE(gpu.sdfMap.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+    const int width = 160, height = 96;
+    FrameTargets one = createFrameTargets(width, height);
+    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, one);
+    gpu.sdfMap = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
+    ASSERT_EQ(gpu.sdfMap.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+    FrameTargets two = createFrameTargets(width, height);
+    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, two);
+    expectNoGlErrors();
+    EXPECT_TRUE(imagesMatch(readDisplayColor(two), readDisplayColor(one),
+                            "strategy_cells_short_lists", {0, 0.0}));
+    EXPECT_EQ(readObjectIds(two).data, readObjectIds(one).data);
+
+    std::string spheres;
+    for (int i = 0; i < 80; ++i)
+        spheres += std::string(i ? ", " : "") + R"({"shape": "sphere", "radius": 0.3,
+            "position": [)" +
+                   std::to_string(0.001 * i) + ", 0.3, 0]}";
+    const PreparedScene overlapping = prepareSceneText(
+        R"({"version": 1, "sdf": {"op": "smooth_union", "smoothness": 0.1, "children": [)" +
+        spheres + "]}}");
+    const GpuScene long_ = uploadScene(overlapping, SdfStrategy::Cells);
+    ASSERT_NE(long_.sdfMap.find("common/sdf_cells.glsl"), std::string::npos);
+    EXPECT_GT(long_.sdfCellStats.maxLength, kSdfShortCellList);
+    EXPECT_EQ(long_.sdfMap.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+}
+
 // A room: a floor and two walls are the grid's planes, in no list (engine/sdf/cell_pruning.hpp,
 // SdfCellGrid::planes): each point unites its list with them, the surface at a hit takes the
 // nearest plane's material and id, and a cell whose program was one of them is crossed to it by

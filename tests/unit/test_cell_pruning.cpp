@@ -7,6 +7,7 @@
 #include "scene/scene_json.hpp"
 #include "sdf/compiler.hpp"
 #include "sdf/cpu_eval.hpp"
+#include "sdf/glsl_codegen.hpp"
 #include "sdf/operations.hpp"
 #include "sdf/sdf_functions.hpp"
 
@@ -353,6 +354,43 @@ TEST(CellPruning, AGridOfSpheresPrunesToTheNearOnes) {
         std::mt19937 rng(3);
         EXPECT_EQ(expectCellsAgree(*c, grid, rng, 3000, "grid"), 3000);
     }
+}
+
+// The map's loop (sdf/glsl_codegen.hpp, SdfCellLoop) follows the longest list a point reads:
+// one instruction per iteration for a grid of spheres apart, two where 80 spheres overlap in a
+// smooth union (the cells where they meet list them all) and where there is no grid (every
+// point runs the outside list, the whole program).
+TEST(CellPruning, TheLongestListDecidesTheLoop) {
+    std::ostringstream apart, together;
+    apart << R"({"children": [)";
+    together << R"({"op": "smooth_union", "smoothness": 0.1, "children": [)";
+    for (int i = 0; i < 80; ++i) {
+        apart << (i ? ", " : "") << R"({"shape": "sphere", "radius": 0.3, "position": [)"
+              << (i % 10) - 5 << ", 0, " << (i / 10) - 5 << "]}";
+        together << (i ? ", " : "") << R"({"shape": "sphere", "radius": 0.3, "position": [)"
+                 << 0.001 * i << ", 0, 0]}";
+    }
+    apart << "]}";
+    together << "]}";
+    const std::optional<Compiled> a = compileText(apart.str(), false);
+    const std::optional<Compiled> t = compileText(together.str(), false);
+    ASSERT_TRUE(a && t);
+    const SdfCellGrid short_ = buildSdfCells(a->program, sdfContentBox(*a->scene.sdf));
+    EXPECT_GT(short_.levels, 0);
+    EXPECT_LE(sdfLongestCellList(short_), kSdfShortCellList);
+    EXPECT_EQ(sdfCellLoop(sdfLongestCellList(short_)), SdfCellLoop::OnePerIteration);
+
+    const SdfCellGrid overlapping = buildSdfCells(t->program, sdfContentBox(*t->scene.sdf));
+    EXPECT_GT(overlapping.levels, 0);
+    EXPECT_GT(overlapping.stats.maxLength, kSdfShortCellList);
+    EXPECT_EQ(sdfLongestCellList(overlapping), overlapping.stats.maxLength);
+    EXPECT_EQ(sdfCellLoop(sdfLongestCellList(overlapping)), SdfCellLoop::TwoPerIteration);
+
+    const SdfCellGrid none = buildSdfCells(a->program, Aabb{});
+    EXPECT_EQ(none.levels, 0);
+    EXPECT_EQ(none.stats.maxLength, 0);
+    EXPECT_GT(int(none.outsideLength), kSdfShortCellList);
+    EXPECT_EQ(sdfCellLoop(sdfLongestCellList(none)), SdfCellLoop::TwoPerIteration);
 }
 
 // The lists two grids over the same cube run at random points of it: equal everywhere.

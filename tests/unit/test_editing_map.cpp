@@ -109,6 +109,39 @@ TEST(EditingMap, ScenesTooLargeForGeneratedCodeHaveTheCellsMapThenTheInterpreter
     EXPECT_EQ(fallback.build, std::vector<std::string>{cells});
 }
 
+// A grid whose lists are all short has the cells map that reads one instruction per loop
+// iteration first, then the one for any grid, built too and drawn until the first is ready (and
+// after an edit that makes a list long); a grid with a long list has only the second.
+TEST(EditingMap, ShortListsHaveTheirOwnCellsMapThenTheOneForAnyGrid) {
+    std::string children;
+    for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
+        children += std::string(i ? ", " : "") + R"({"shape": "sphere", "radius": 0.1})";
+    const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
+    const std::string anyGrid = generateSdfMap(large, SdfStrategy::Cells);
+    const std::string shortLists =
+        generateSdfMap(large, SdfStrategy::Cells, {}, {}, SdfCellLoop::OnePerIteration);
+    const std::string interpreter = generateSdfMap(large, SdfStrategy::Interpreter);
+    EXPECT_EQ(anyGrid.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+    EXPECT_NE(shortLists.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+    auto none = [](const std::string&) { return false; };
+    const editor::EditingMaps building =
+        editor::chooseEditingMaps(large, large, {}, none, SdfCellLoop::OnePerIteration);
+    EXPECT_EQ(building.draw, "");
+    EXPECT_EQ(building.build, (std::vector<std::string>{shortLists, anyGrid, interpreter}));
+    const editor::EditingMaps meanwhile = editor::chooseEditingMaps(
+        large, large, {}, [&](const std::string& map) { return map == anyGrid; },
+        SdfCellLoop::OnePerIteration);
+    EXPECT_EQ(meanwhile.draw, anyGrid);
+    EXPECT_EQ(meanwhile.kind, editor::EditingMapKind::Cells);
+    EXPECT_EQ(meanwhile.build, (std::vector<std::string>{shortLists, interpreter}));
+    const editor::EditingMaps ready = editor::chooseEditingMaps(
+        large, large, {}, [](const std::string&) { return true; }, SdfCellLoop::OnePerIteration);
+    EXPECT_EQ(ready.draw, shortLists);
+    const editor::EditingMaps longLists = editor::chooseEditingMaps(
+        large, large, {}, [](const std::string&) { return true; }, SdfCellLoop::TwoPerIteration);
+    EXPECT_EQ(longLists.draw, anyGrid);
+}
+
 // The live range is the selected node and its subtree, inclusive, and nothing for a selection
 // that is no SDF node.
 TEST(EditingMap, TheSelectionsSubtreeIsLive) {

@@ -42,6 +42,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -167,6 +168,12 @@ struct SdfCellGrid {
     std::uint64_t packStamp = 0;    // which pack wrote the words (0: none)
     std::uint64_t changedSince = 0; // the pack changedWords count from (0: all words changed)
 };
+
+// The most instructions a point of `grid` reads: its longest list, a cell's or the outside one
+// (which decides the map's SdfCellLoop, sdf/glsl_codegen.hpp).
+inline int sdfLongestCellList(const SdfCellGrid& grid) {
+    return std::max(grid.stats.maxLength, int(grid.outsideLength));
+}
 
 // A lower bound of a whole program's field from the boxes of its shapes (the floors cell
 // pruning drops subtrees by): at every point y outside `box` the field is at least

@@ -66,7 +66,29 @@ struct SdfMapNames {
     std::string prefix = "sdf";
     std::size_t instructionBase = 0;
 };
+
+// How the Cells map steps through a cell's list (common/sdf_interpreter.glsl). One instruction
+// per loop iteration is the fastest: llvmpipe runs every instruction of a loop's body for all
+// pixels, masked where a pixel's list has ended, and most lists are one or two instructions.
+// But llvmpipe also ends an invocation's loops after a budget of iterations shared by all of
+// them, which a long list would spend within a few march steps: a grid with any list longer
+// than kSdfShortCellList reads two instructions per iteration.
+enum class SdfCellLoop {
+    TwoPerIteration, // any grid
+    OnePerIteration, // a grid whose lists are all short
+};
+constexpr int kSdfShortCellList = 64;
+// The loop for a grid whose longest list (the outside list included) has `longestList`
+// instructions.
+constexpr SdfCellLoop sdfCellLoop(int longestList) {
+    return longestList <= kSdfShortCellList ? SdfCellLoop::OnePerIteration
+                                            : SdfCellLoop::TwoPerIteration;
+}
+
+// `cellLoop` applies to the Cells strategy only: the text is one of two for every program of
+// the same primitive kinds.
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy strategy,
-                           const SdfMapNames& names = {}, const SdfLiveRange& live = {});
+                           const SdfMapNames& names = {}, const SdfLiveRange& live = {},
+                           SdfCellLoop cellLoop = SdfCellLoop::TwoPerIteration);
 
 } // namespace rmsc
