@@ -291,20 +291,59 @@ float sdfPlaneSlope(SdfInstructionData plane, vec3 rd) {
     return dot(dq, normal) / max(length(normal), 1e-6) * plane.misc.x;
 }
 
+// How far along rd a march stepping by a plane's field (d at t, changing by `slope` per unit
+// of rd) stops on it: at its first point under the hit threshold epsilon * max(t, 1), which lies
+// within a step's decrease of it; a step of length h lowers the field by |slope| h, so the point
+// where the field is (1 - |slope| / 2) times the threshold, halfway. d + slope s = landing
+// max(t + s, 1), solved for s. (Only for slope < 0: the ray goes towards the plane.)
+float sdfPlaneLanding(float d, float slope, float t, float epsilon) {
+    float landing = (1.0 + 0.5 * slope) * epsilon;
+    float s = (d - landing * t) / (landing - slope);
+    if (t + s < 1.0) s = (d - landing) / -slope;
+    return max(s, 0.0);
+}
+#endif
+
+// How far along the unit direction rd from p = ro + t rd the content (every surface but the
+// grid's planes) stays beyond the march's hit threshold: 0 where that is not known, SDF_FAR where
+// the ray never comes near it. The header's floor stands for the content when it is the whole
+// program's, or the outside list's with that list empty (then, the planes aside, the floor's
+// operands are all there is): the content's field is at least distance(y, box) - drop at every
+// point y, so above a threshold m wherever y is outside the box grown by drop + m. The threshold,
+// epsilon * max(t', 1), grows along the ray: m is twice its value at a t' past every point of the
+// grown box (t, p's distance to the box's centre, its half diagonal and the drop), which holds
+// for epsilon <= 1/2. The entry is the slab test, as sdfRayEnd.
+float sdfContentEntry(vec3 p, vec3 rd, float t, float epsilon) {
+    float uses = sdfCellFloorMax.w;
+    if (uses == 0.0 || (uses == 2.0 && sdfCellInfo.z != 0u)) return 0.0;
+    vec3 lo = sdfCellFloorMin.xyz, hi = sdfCellFloorMax.xyz;
+    float drop = max(sdfCellFloorMin.w, 0.0);
+    float far = t + length(p - 0.5 * (lo + hi)) + 0.5 * length(hi - lo) + drop;
+    float grow = drop + 2.0 * epsilon * max(far, 1.0);
+    vec3 d = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
+    vec3 t0 = (lo - vec3(grow) - p) / d;
+    vec3 t1 = (hi + vec3(grow) - p) / d;
+    vec3 near = min(t0, t1), beyond = max(t0, t1);
+    float enter = max(max(near.x, near.y), near.z);
+    float leave = min(min(beyond.x, beyond.y), beyond.z);
+    return leave < max(enter, 0.0) ? SDF_FAR : max(enter, 0.0);
+}
+
 // sdfDistance at p = ro + t rd, and `advance`: how far along the unit direction rd from p the
-// ray surely meets no surface (0 when no more is known than the distance). In a cell whose
-// program is one plane (kSdfCellAffine: its list's, or with an empty list the grid's plane
-// nearest at p, the others being above it in the cell) the only surface is where that plane's field is zero,
-// and the field changes at a constant rate along the ray: the ray may go to the cell's far side
-// (the slab test, as sdfRayEnd), or, when the plane is nearer, to where a march stepping by the
-// distance would stop: at its first point under the hit threshold epsilon * max(t, 1), which
-// lies within a step's decrease of it; a step of length h lowers the field by |slope| h, so the
-// point where the field is (1 - |slope| / 2) times the threshold, halfway. The floor's depth then
-// does not change from one cell to the next. A ray grazing a floor crosses such a cell in one
-// step where sphere tracing would take many (common/sdf_scene.glsl). Scenes without a plane
-// leave it out: its cost in every step (llvmpipe runs the branch whether or not a pixel takes
-// it) would buy nothing, their far cells' constants are a cell's edge or more already, and their
-// rays end at the grid.
+// ray surely meets no surface (0 when no more is known than the distance). Two things tell:
+// - In a cell whose program is one plane (kSdfCellAffine: its list's, or with an empty list the
+//   grid's plane nearest at p, the others being above it in the cell) the only surface is where
+//   that plane's field is zero, and the field changes at a constant rate along the ray: the ray
+//   may go to the cell's far side (the slab test, as sdfRayEnd), or, when the plane is nearer,
+//   to where a march would stop on it (sdfPlaneLanding). The floor's depth then does not change
+//   from one cell to the next. A ray grazing a floor crosses such a cell in one step where sphere
+//   tracing would take many (common/sdf_scene.glsl).
+// - Outside the box that bounds the content (sdfContentEntry), the ray may go to that box, or
+//   to the first of the grid's planes it would stop on: a ray over a field of shapes on a floor
+//   comes down to them in a step (where it crossed a cell a step, each a fraction of the way),
+//   and one past the content lands on the floor beyond it.
+// Scenes without a plane leave the planes out: their cost in every step (llvmpipe runs a branch
+// whether or not a pixel takes it) would buy nothing.
 #define SDF_HAS_DISTANCE_ALONG 1
 float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advance) {
     uint base, count;
@@ -316,17 +355,27 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
     float d = sdfCellDistance(sdfListDistanceLast(p, base, count, last), p, affine, cell,
                               planeGradient);
     advance = 0.0;
+#ifdef SDF_CELLS_PLANES
     if (affine) {
         vec3 towards = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
         vec3 far = (cell.xyz + step(vec3(0.0), towards) * cell.w - p) / towards;
         float exit = max(min(min(far.x, far.y), far.z), 0.0);
         float slope = count == 0u ? dot(planeGradient, rd) : sdfPlaneSlope(last, rd);
-        // d + slope s = landing max(t + s, 1), solved for s.
-        float landing = (1.0 + 0.5 * slope) * epsilon;
-        float s = (d - landing * t) / (landing - slope);
-        if (t + s < 1.0) s = (d - landing) / -slope;
-        advance = slope < 0.0 ? min(exit, max(s, 0.0)) : exit;
+        advance = slope < 0.0 ? min(exit, sdfPlaneLanding(d, slope, t, epsilon)) : exit;
+    }
+#endif
+    float entry = sdfContentEntry(p, rd, t, epsilon);
+    if (entry > 0.0) {
+        float landing = SDF_FAR;
+#ifdef SDF_CELLS_PLANES
+        for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+            vec4 field = sdfCellPlaneFields[k]; // (none: a zero gradient, never approached)
+            float slope = dot(field.xyz, rd);
+            float planeLanding = sdfPlaneLanding(dot(field.xyz, p) + field.w, slope, t, epsilon);
+            landing = slope < 0.0 ? min(landing, planeLanding) : landing;
+        }
+#endif
+        advance = max(advance, min(entry, landing));
     }
     return d;
 }
-#endif
