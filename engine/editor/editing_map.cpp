@@ -27,11 +27,11 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& inter
         byPreference.push_back(
             {generateSdfMap(program, SdfStrategy::Buffer), EditingMapKind::Buffer});
     } else {
-        if (cellLoop == SdfCellLoop::OnePerIteration)
-            byPreference.push_back({generateSdfMap(program, SdfStrategy::Cells, {}, {}, cellLoop),
-                                    EditingMapKind::Cells});
-        byPreference.push_back(
-            {generateSdfMap(program, SdfStrategy::Cells), EditingMapKind::Cells});
+        std::string anyGrid = generateSdfMap(program, SdfStrategy::Cells);
+        std::string shortLists = generateSdfMap(program, SdfStrategy::Cells, {}, {}, cellLoop);
+        if (shortLists != anyGrid) // (one text where the lists are long, or for the lean loop)
+            byPreference.push_back({std::move(shortLists), EditingMapKind::Cells});
+        byPreference.push_back({std::move(anyGrid), EditingMapKind::Cells});
     }
     byPreference.push_back(
         {generateSdfMap(interpreted, SdfStrategy::Interpreter), EditingMapKind::Interpreter});

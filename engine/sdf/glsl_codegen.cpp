@@ -352,13 +352,16 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
         if (strategy == SdfStrategy::Cells) used[std::size_t(PrimitiveId::Plane)] = true; // far
         out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; })
             << interpreterFeatures(program.instructions, strategy == SdfStrategy::Cells);
-        if (strategy == SdfStrategy::Cells)
-            out << (sdfIsLeastOfShapes(program) ? "#define SDF_CELLS_LEAN 1\n" : "")
+        if (strategy == SdfStrategy::Cells) {
+            // (The lean loop reads one shape an iteration whatever the lists: one text.)
+            const bool lean = sdfIsLeastOfShapes(program);
+            out << (lean ? "#define SDF_CELLS_LEAN 1\n" : "")
                 << (planes ? "#define SDF_CELLS_PLANES 1\n" : "")
-                << (cellLoop == SdfCellLoop::OnePerIteration ? "#define SDF_CELLS_SHORT_LISTS 1\n"
-                                                             : "")
+                << (!lean && cellLoop == SdfCellLoop::OnePerIteration
+                        ? "#define SDF_CELLS_SHORT_LISTS 1\n"
+                        : "")
                 << "#include \"common/sdf_cells.glsl\"\n";
-        else
+        } else
             out << (sdfIsPartsOnly(program) ? "#include \"common/sdf_parts_loop.glsl\"\n"
                                             : "#include \"common/sdf_interpreter.glsl\"\n");
         return out.str();

@@ -295,11 +295,15 @@ float sdfPlaneSlope(SdfInstructionData plane, vec3 rd) {
 // of rd) stops on it: at its first point under the hit threshold epsilon * max(t, 1), which lies
 // within a step's decrease of it; a step of length h lowers the field by |slope| h, so the point
 // where the field is (1 - |slope| / 2) times the threshold, halfway. d + slope s = landing
-// max(t + s, 1), solved for s. (Only for slope < 0: the ray goes towards the plane.)
+// max(t + s, 1), solved for s. The threshold grows by epsilon a unit of t, so it may catch up with
+// a plane the ray does not go towards (0 <= slope < landing: a ray level with a floor); SDF_FAR
+// where it never does. (Where the threshold is still constant, t + s < 1, such a plane gives 0:
+// no more is known than the distance.)
 float sdfPlaneLanding(float d, float slope, float t, float epsilon) {
     float landing = (1.0 + 0.5 * slope) * epsilon;
+    if (landing - slope <= 0.0) return SDF_FAR;
     float s = (d - landing * t) / (landing - slope);
-    if (t + s < 1.0) s = (d - landing) / -slope;
+    if (t + s < 1.0) s = slope < 0.0 ? (d - landing) / -slope : 0.0;
     return max(s, 0.0);
 }
 #endif
@@ -310,15 +314,18 @@ float sdfPlaneLanding(float d, float slope, float t, float epsilon) {
 // program's, or the outside list's with that list empty (then, the planes aside, the floor's
 // operands are all there is): the content's field is at least distance(y, box) - drop at every
 // point y, so above a threshold m wherever y is outside the box grown by drop + m. The threshold,
-// epsilon * max(t', 1), grows along the ray: m is twice its value at a t' past every point of the
-// grown box (t, p's distance to the box's centre, its half diagonal and the drop), which holds
-// for epsilon <= 1/2. The entry is the slab test, as sdfRayEnd.
+// epsilon * max(t', 1), grows along the ray. The ray's points before the grown box are at most
+// F + sqrt(3) m along it, F = t + |p - centre| + the box's half diagonal + sqrt(3) drop (the
+// grown box's corners are that much farther out), so m = 2 epsilon max(F, 1) is above the
+// threshold there: epsilon (F + sqrt(3) m) <= epsilon max(F, 1) (1 + 2 sqrt(3) epsilon) <= m for
+// epsilon <= 1 / (2 sqrt(3)). A larger epsilon (up to 1) takes no such step. The entry is the slab
+// test, as sdfRayEnd.
 float sdfContentEntry(vec3 p, vec3 rd, float t, float epsilon) {
     float uses = sdfCellFloorMax.w;
-    if (uses == 0.0 || (uses == 2.0 && sdfCellInfo.z != 0u)) return 0.0;
+    if (uses == 0.0 || (uses == 2.0 && sdfCellInfo.z != 0u) || epsilon > 0.25) return 0.0;
     vec3 lo = sdfCellFloorMin.xyz, hi = sdfCellFloorMax.xyz;
     float drop = max(sdfCellFloorMin.w, 0.0);
-    float far = t + length(p - 0.5 * (lo + hi)) + 0.5 * length(hi - lo) + drop;
+    float far = t + length(p - 0.5 * (lo + hi)) + 0.5 * length(hi - lo) + 1.7320508 * drop;
     float grow = drop + 2.0 * epsilon * max(far, 1.0);
     vec3 d = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
     vec3 t0 = (lo - vec3(grow) - p) / d;
@@ -361,7 +368,7 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
         vec3 far = (cell.xyz + step(vec3(0.0), towards) * cell.w - p) / towards;
         float exit = max(min(min(far.x, far.y), far.z), 0.0);
         float slope = count == 0u ? dot(planeGradient, rd) : sdfPlaneSlope(last, rd);
-        advance = slope < 0.0 ? min(exit, sdfPlaneLanding(d, slope, t, epsilon)) : exit;
+        advance = min(exit, sdfPlaneLanding(d, slope, t, epsilon));
     }
 #endif
     float entry = sdfContentEntry(p, rd, t, epsilon);
@@ -369,10 +376,11 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
         float landing = SDF_FAR;
 #ifdef SDF_CELLS_PLANES
         for (int k = 0; k < SDF_CELL_PLANES; ++k) {
-            vec4 field = sdfCellPlaneFields[k]; // (none: a zero gradient, never approached)
-            float slope = dot(field.xyz, rd);
-            float planeLanding = sdfPlaneLanding(dot(field.xyz, p) + field.w, slope, t, epsilon);
-            landing = slope < 0.0 ? min(landing, planeLanding) : landing;
+            vec4 field = sdfCellPlaneFields[k];
+            float planeLanding =
+                sdfPlaneLanding(dot(field.xyz, p) + field.w, dot(field.xyz, rd), t, epsilon);
+            bool used = field.w < SDF_FAR; // (none: a zero gradient and SDF_FAR)
+            landing = used ? min(landing, planeLanding) : landing;
         }
 #endif
         advance = max(advance, min(entry, landing));

@@ -66,7 +66,8 @@ SdfSurface sdfSurfaceAndNormal(vec3 p, float h, out vec3 normal) {
 // happened to start (the cone pass starts a tile's pixels together: the cut-off edge came out
 // in steps of a tile). Gives up after maxSteps evaluations or when t passes tMax. An empty
 // program never hits. Where the map knows the ray meets no surface for longer than the distance
-// (`advance`, see sdfDistanceAlong: a cell holding only a plane), the step goes that far,
+// (`advance`, see sdfDistanceAlong in common/sdf_cells.glsl: a cell holding only a plane, or a
+// point outside the box that bounds the content), the step goes that far,
 // unrelaxed; the previous point's reach is then that length, so the fallback test above still
 // holds. engine/sdf/cpu_eval.cpp (sdfCastRay) does the same on the CPU, through the whole
 // program (no cells, so no such steps: it stops where the cells' landing is aimed at).

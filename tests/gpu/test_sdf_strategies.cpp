@@ -269,7 +269,7 @@ TEST(SdfStrategies, CellsSeenFromOutsideTheGridAndBakedDrawTheSameImage) {
     // sdfDistanceAlong, and so sample the last of their march elsewhere than generated code's,
     // where objects meet the floor within the hit threshold (0.04 at this distance): 52 pixels
     // differ by more than 2/255. The march with a hundredth of the threshold differs from
-    // generated code's image at 458 pixels, from the cells' at 464, from the cells' before the
+    // generated code's image at 458 pixels, from the cells' at 465, from the cells' before the
     // step at 455.)
     expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
                      "strategy_cells_from_outside", 0.0035);
@@ -309,6 +309,39 @@ TEST(SdfStrategies, CellsComeDownToTheContentInAStep) {
     EXPECT_LT(total / marched, 8.0);
     EXPECT_GT(floorFar, 100);
     EXPECT_LE(floorFarSteps, 3);
+}
+
+// A ray level with the floor, or rising slightly, still meets it: the hit threshold grows by
+// epsilon a unit of distance and catches up with a field that grows more slowly (the march
+// stops there). Looking away from the content, every ray misses its box, and the step to the
+// first plane it lands on must count such a plane (sdfPlaneLanding, common/sdf_cells.glsl):
+// with a large threshold the band where that happens is rows of pixels at the horizon.
+TEST(SdfStrategies, CellsLandOnAFloorLevelWithTheRay) {
+    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+        "camera": {"position": [0, 0.2, 10], "target": [0, 0.2, 20], "fov": 45},
+        "render": {"surface_epsilon": 0.01, "max_distance": 100},
+        "materials": {"a": {"base_color": "#e76f51"}, "b": {"base_color": "#2a9d8f"}},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, 1.0], "intensity": 3.0}],
+        "sdf": {"children": [
+          {"shape": "plane", "normal": [0, 1, 0], "offset": 0, "material": "b"},
+          {"shape": "box", "half_extents": [4, 4, 4], "position": [0, 4, 0], "material": "a"}
+        ]}})");
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells, "strategy_cells_level");
+    // A flat floor under a directional light has one colour near and far: the depths tell.
+    const int width = 160, height = 96;
+    const Pixels<float> baked =
+        readViewDepth(renderPrepared(prepared, width, height, nullptr, SdfStrategy::Baked));
+    const Pixels<float> cells =
+        readViewDepth(renderPrepared(prepared, width, height, nullptr, SdfStrategy::Cells));
+    int far = 0, differing = 0;
+    for (std::size_t i = 0; i < baked.data.size(); ++i) {
+        const float a = baked.data[i], b = cells.data[i];
+        far += a != kNoDepth && a > 15.0f && a < 90.0f; // the threshold caught up: at 20 or so
+        differing +=
+            (a == kNoDepth) != (b == kNoDepth) || (a != kNoDepth && std::abs(a - b) > 0.02f * a);
+    }
+    EXPECT_GE(far, width / 2); // (a row of pixels at this size)
+    EXPECT_LE(differing, int(baked.data.size() / 200));
 }
 
 // Every point and distance modifier of the samples drawn with cells runs the interpreter's

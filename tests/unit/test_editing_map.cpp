@@ -109,14 +109,26 @@ TEST(EditingMap, ScenesTooLargeForGeneratedCodeHaveTheCellsMapThenTheInterpreter
     EXPECT_EQ(fallback.build, std::vector<std::string>{cells});
 }
 
-// A grid whose lists are all short has the cells map that reads one instruction per loop
-// iteration first, then the one for any grid, built too and drawn until the first is ready (and
-// after an edit that makes a list long); a grid with a long list has only the second.
+// A grid whose postfix lists are all short has the cells map that reads one instruction per
+// loop iteration first, then the one for any grid, built too and drawn until the first is ready
+// (and after an edit that makes a list long); a grid with a long list has only the second, and
+// so does a union of shapes (the lean loop, one text).
 TEST(EditingMap, ShortListsHaveTheirOwnCellsMapThenTheOneForAnyGrid) {
     std::string children;
     for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
         children += std::string(i ? ", " : "") + R"({"shape": "sphere", "radius": 0.1})";
-    const SdfProgram large = test::compileSdfText(R"({"children": [)" + children + "]}");
+    const SdfProgram large = test::compileSdfText(
+        R"({"op": "smooth_union", "smoothness": 0.1, "children": [)" + children + "]}");
+    ASSERT_EQ(effectiveSdfStrategy(large, SdfStrategy::Baked), SdfStrategy::Cells);
+    const SdfProgram lean = test::compileSdfText(R"({"children": [)" + children + "]}");
+    const std::string leanMap = generateSdfMap(lean, SdfStrategy::Cells);
+    ASSERT_NE(leanMap.find("SDF_CELLS_LEAN"), std::string::npos);
+    EXPECT_EQ(generateSdfMap(lean, SdfStrategy::Cells, {}, {}, SdfCellLoop::OnePerIteration),
+              leanMap);
+    const editor::EditingMaps leanMaps = editor::chooseEditingMaps(
+        lean, lean, {}, [](const std::string&) { return false; }, SdfCellLoop::OnePerIteration);
+    EXPECT_EQ(leanMaps.build,
+              (std::vector<std::string>{leanMap, generateSdfMap(lean, SdfStrategy::Interpreter)}));
     const std::string anyGrid = generateSdfMap(large, SdfStrategy::Cells);
     const std::string shortLists =
         generateSdfMap(large, SdfStrategy::Cells, {}, {}, SdfCellLoop::OnePerIteration);

@@ -67,7 +67,8 @@ struct SdfMapNames {
     std::size_t instructionBase = 0;
 };
 
-// How the Cells map steps through a cell's list (common/sdf_interpreter.glsl). One instruction
+// How the Cells map steps through a cell's postfix list (common/sdf_interpreter.glsl; the lean
+// loop of a union of shapes reads one shape an iteration whatever the lists). One instruction
 // per loop iteration is the fastest: llvmpipe runs every instruction of a loop's body for all
 // pixels, masked where a pixel's list has ended, and most lists are one or two instructions.
 // But llvmpipe also ends an invocation's loops after a budget of iterations shared by all of
@@ -85,8 +86,8 @@ constexpr SdfCellLoop sdfCellLoop(int longestList) {
                                             : SdfCellLoop::TwoPerIteration;
 }
 
-// `cellLoop` applies to the Cells strategy only: the text is one of two for every program of
-// the same primitive kinds.
+// `cellLoop` applies to the Cells strategy's postfix lists only: the text is one of two for
+// every program of the same primitive kinds.
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy strategy,
                            const SdfMapNames& names = {}, const SdfLiveRange& live = {},
                            SdfCellLoop cellLoop = SdfCellLoop::TwoPerIteration);
