@@ -381,8 +381,7 @@ bool runVariant(Renderer& renderer, const Variant& variant, const BenchOptions& 
         run.cellLevels = gpuScene.sdfCellLevels;
         run.cells = gpuScene.sdfCellStats;
     }
-    if (variant.live.first <= variant.live.last &&
-        effectiveSdfStrategy(prepared->sdf, strategy) == SdfStrategy::Baked)
+    if (variant.live.first <= variant.live.last)
         gpuScene.sdfMap = generateSdfMap(prepared->sdf, strategy, {}, variant.live);
     const auto compileStart = std::chrono::steady_clock::now();
     std::string error;

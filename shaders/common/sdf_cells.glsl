@@ -3,7 +3,8 @@
 // cell_pruning.cpp builds (layout there, SdfCellGrid): blocks of 64 cells, 4 x 4 x 4 per level,
 // each cell its list of instruction indices or the block of its 64 children. Points outside the
 // grid run the outside list (the whole program's unbounded operands but the planes below, such
-// as an infinite repetition) and the distance to the floor of the rest (sdfCellDistance). No list holds a bounding hierarchy (but
+// as an infinite repetition) and the distance to the floor of the rest (sdfCellDistance). No
+// list holds a bounding hierarchy (but
 // for programs whose tree cannot be read: SDF_HAS_BOUNDS). The planes of the root's chain of
 // unions are in no list: each point unites the list's value with theirs, one dot product each
 // (SdfCellGrid::planes). Expects `sdfPrimitive` declared before it.
@@ -45,20 +46,27 @@ uint sdfCellWord(uint n) {
     return (n & 1u) == 0u ? pair.x : pair.y;
 }
 
+// Where the line ro + s rd enters (x) and leaves (y) the box [lo, hi]: the slab test (Kay and
+// Kajiya, "Ray tracing complex scenes", SIGGRAPH 1986). The ray misses the box where
+// y < max(x, 0).
+vec2 sdfBoxSpan(vec3 lo, vec3 hi, vec3 ro, vec3 rd) {
+    vec3 d = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
+    vec3 t0 = (lo - ro) / d;
+    vec3 t1 = (hi - ro) / d;
+    vec3 near = min(t0, t1), far = max(t0, t1);
+    return vec2(max(max(near.x, near.y), near.z), min(min(far.x, far.y), far.z));
+}
+
 // How far along the ray ro + t rd a surface can be: where the ray leaves the grid's cube when
 // every surface lies inside it (nothing is outside to meet: 0 when the ray misses the cube), else
 // tMax. The march stops there instead of running the whole program outside the grid until
-// tMax (the slab test: Kay and Kajiya, "Ray tracing complex scenes", SIGGRAPH 1986).
+// tMax.
 #define SDF_HAS_RAY_END 1
 float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
     if (sdfCellInfo.x == 0u || sdfCellInfo.w == 0u) return tMax;
-    vec3 d = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
-    vec3 t0 = (sdfCellOrigin.xyz - ro) / d;
-    vec3 t1 = (sdfCellOrigin.xyz + vec3(sdfCellOrigin.w) - ro) / d;
-    vec3 near = min(t0, t1), far = max(t0, t1);
-    float enter = max(max(near.x, near.y), near.z);
-    float leave = min(min(far.x, far.y), far.z);
-    return leave < max(enter, 0.0) ? 0.0 : min(tMax, leave);
+    vec2 span =
+        sdfBoxSpan(sdfCellOrigin.xyz, sdfCellOrigin.xyz + vec3(sdfCellOrigin.w), ro, rd);
+    return span.y < max(span.x, 0.0) ? 0.0 : min(tMax, span.y);
 }
 
 #define SDF_PROGRAM_AT(n) sdfCellWord(n)
@@ -318,8 +326,7 @@ float sdfPlaneLanding(float d, float slope, float t, float epsilon) {
 // F + sqrt(3) m along it, F = t + |p - centre| + the box's half diagonal + sqrt(3) drop (the
 // grown box's corners are that much farther out), so m = 2 epsilon max(F, 1) is above the
 // threshold there: epsilon (F + sqrt(3) m) <= epsilon max(F, 1) (1 + 2 sqrt(3) epsilon) <= m for
-// epsilon <= 1 / (2 sqrt(3)). A larger epsilon (up to 1) takes no such step. The entry is the slab
-// test, as sdfRayEnd.
+// epsilon <= 1 / (2 sqrt(3)); a larger epsilon (up to 1) takes no such step.
 float sdfContentEntry(vec3 p, vec3 rd, float t, float epsilon) {
     float uses = sdfCellFloorMax.w;
     if (uses == 0.0 || (uses == 2.0 && sdfCellInfo.z != 0u) || epsilon > 0.25) return 0.0;
@@ -327,13 +334,8 @@ float sdfContentEntry(vec3 p, vec3 rd, float t, float epsilon) {
     float drop = max(sdfCellFloorMin.w, 0.0);
     float far = t + length(p - 0.5 * (lo + hi)) + 0.5 * length(hi - lo) + 1.7320508 * drop;
     float grow = drop + 2.0 * epsilon * max(far, 1.0);
-    vec3 d = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
-    vec3 t0 = (lo - vec3(grow) - p) / d;
-    vec3 t1 = (hi + vec3(grow) - p) / d;
-    vec3 near = min(t0, t1), beyond = max(t0, t1);
-    float enter = max(max(near.x, near.y), near.z);
-    float leave = min(min(beyond.x, beyond.y), beyond.z);
-    return leave < max(enter, 0.0) ? SDF_FAR : max(enter, 0.0);
+    vec2 span = sdfBoxSpan(lo - vec3(grow), hi + vec3(grow), p, rd);
+    return span.y < max(span.x, 0.0) ? SDF_FAR : max(span.x, 0.0);
 }
 
 // sdfDistance at p = ro + t rd, and `advance`: how far along the unit direction rd from p the
@@ -341,14 +343,14 @@ float sdfContentEntry(vec3 p, vec3 rd, float t, float epsilon) {
 // - In a cell whose program is one plane (kSdfCellAffine: its list's, or with an empty list the
 //   grid's plane nearest at p, the others being above it in the cell) the only surface is where
 //   that plane's field is zero, and the field changes at a constant rate along the ray: the ray
-//   may go to the cell's far side (the slab test, as sdfRayEnd), or, when the plane is nearer,
-//   to where a march would stop on it (sdfPlaneLanding). The floor's depth then does not change
+//   may go to the cell's far side (sdfBoxSpan), or, when the plane is nearer, to where a march
+//   would stop on it (sdfPlaneLanding). The floor's depth then does not change
 //   from one cell to the next. A ray grazing a floor crosses such a cell in one step where sphere
 //   tracing would take many (common/sdf_scene.glsl).
-// - Outside the box that bounds the content (sdfContentEntry), the ray may go to that box, or
-//   to the first of the grid's planes it would stop on: a ray over a field of shapes on a floor
-//   comes down to them in a step (where it crossed a cell a step, each a fraction of the way),
-//   and one past the content lands on the floor beyond it.
+// - Outside the box that bounds the content, grown by the hit threshold (sdfContentEntry), the
+//   ray may go to that box, or to the first of the grid's planes it would stop on: a ray over a
+//   field of shapes on a floor comes down to them in a step (where it crossed a cell a step,
+//   each a fraction of the way), and one past the content lands on the floor beyond it.
 // Scenes without a plane leave the planes out: their cost in every step (llvmpipe runs a branch
 // whether or not a pixel takes it) would buy nothing.
 #define SDF_HAS_DISTANCE_ALONG 1
@@ -364,9 +366,7 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
     advance = 0.0;
 #ifdef SDF_CELLS_PLANES
     if (affine) {
-        vec3 towards = mix(rd, vec3(1e-20), lessThan(abs(rd), vec3(1e-20)));
-        vec3 far = (cell.xyz + step(vec3(0.0), towards) * cell.w - p) / towards;
-        float exit = max(min(min(far.x, far.y), far.z), 0.0);
+        float exit = max(sdfBoxSpan(cell.xyz, cell.xyz + vec3(cell.w), p, rd).y, 0.0);
         float slope = count == 0u ? dot(planeGradient, rd) : sdfPlaneSlope(last, rd);
         advance = min(exit, sdfPlaneLanding(d, slope, t, epsilon));
     }

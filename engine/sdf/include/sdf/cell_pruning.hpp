@@ -156,9 +156,8 @@ struct SdfCellGrid {
     std::optional<SdfFieldFloor> floor;
     // What the outside list leaves out, by its floor: outside the grid the field is the least of
     // the list's value, the planes' and the floor's distance, distance(y, box) - drop
-    // (sdfCellOutsideFloor;
-    // never within a margin of zero there). The root's floor when the whole program has one
-    // that keeps the margin.
+    // (sdfCellOutsideFloor; never within a margin of zero there). The root's floor when the whole
+    // program has one that keeps the margin.
     std::optional<SdfFieldFloor> outsideFloor;
     SdfCellStats stats;
     // The words the last build or re-prune wrote, in order: all of them after a build; after a
