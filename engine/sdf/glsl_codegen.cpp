@@ -12,6 +12,7 @@
 #include "sdf/profiles.hpp"
 #include "sdf/sdf_tree.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <sstream>
@@ -347,8 +348,15 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
         for (const GpuSdfInstruction& in : program.instructions)
             if (SdfOpcode(in.opcode) == SdfOpcode::Shape) used[in.kind] = true;
         // A scene with a plane (a floor) marches across the cells that hold only it in a step
-        // (kSdfCellAffine); one without has no such cell the march would not leave anyway.
-        const bool planes = used[std::size_t(PrimitiveId::Plane)];
+        // (kSdfCellAffine); one without has no such cell the march would not leave anyway. The
+        // grid's planes (SdfCellGrid::planes) are some of the program's plane instructions: the
+        // shader reads as many header entries as there are such instructions, at most
+        // kSdfCellPlanes (the text changes with their number up to that, not with the shapes').
+        int planes = 0;
+        for (const GpuSdfInstruction& in : program.instructions)
+            planes += SdfOpcode(in.opcode) == SdfOpcode::Shape &&
+                      in.kind == std::uint32_t(PrimitiveId::Plane);
+        planes = std::min(planes, kSdfCellPlanes);
         if (strategy == SdfStrategy::Cells) used[std::size_t(PrimitiveId::Plane)] = true; // far
         out << generateGlslDispatch([&](PrimitiveId id) { return used[std::size_t(id)]; })
             << interpreterFeatures(program.instructions, strategy == SdfStrategy::Cells);
@@ -356,7 +364,8 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
             // (The lean loop reads one shape an iteration whatever the lists: one text.)
             const bool lean = sdfIsLeastOfShapes(program);
             out << (lean ? "#define SDF_CELLS_LEAN 1\n" : "")
-                << (planes ? "#define SDF_CELLS_PLANES 1\n" : "")
+                << (planes > 0 ? "#define SDF_CELLS_PLANES " + std::to_string(planes) + "\n"
+                               : std::string())
                 << (!lean && cellLoop == SdfCellLoop::OnePerIteration
                         ? "#define SDF_CELLS_SHORT_LISTS 1\n"
                         : "")

@@ -153,8 +153,12 @@ float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell, out vec3 p
         distance = outside ? min(distance, floorDistance) : max(distance, floorDistance);
     }
     planeGradient = vec3(0.0);
-#ifdef SDF_CELLS_PLANES // (a scene without a plane has none: no cost)
-    for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+// SDF_CELLS_PLANES (engine/sdf/glsl_codegen.cpp) is how many of the header's planes can be in use:
+// the program's plane instructions, at most SDF_CELL_PLANES. The loops over them read no more
+// (a scene without a plane reads none): llvmpipe runs every iteration of a loop of constant
+// length, used or not, and the 4,096-sphere tree's one floor read four at every step.
+#ifdef SDF_CELLS_PLANES
+    for (int k = 0; k < SDF_CELLS_PLANES; ++k) {
         vec4 field = sdfCellPlaneFields[k];
         float d = dot(field.xyz, p) + field.w;
         SDF_COUNT_PLANE(k, 1u);
@@ -182,7 +186,7 @@ SdfSurface sdfCellPlanesSurface(SdfSurface surface, vec3 p, bool withTaps, vec3 
                                 vec3 t2, vec3 t3, inout vec4 taps) {
 #ifdef SDF_CELLS_PLANES
     bool fromPlane = false;
-    for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+    for (int k = 0; k < SDF_CELLS_PLANES; ++k) {
         vec4 field = sdfCellPlaneFields[k];
         uint i = sdfCellPlaneInstructions[k];
         if (i == 0xffffffffu) continue;
@@ -269,7 +273,7 @@ SdfSurface sdfSurface(vec3 p) {
     }
 #ifdef SDF_CELLS_PLANES
     bool fromPlane = false;
-    for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+    for (int k = 0; k < SDF_CELLS_PLANES; ++k) {
         uint i = sdfCellPlaneInstructions[k];
         if (i == 0xffffffffu) continue;
         vec4 field = sdfCellPlaneFields[k];
@@ -375,7 +379,7 @@ float sdfDistanceAlong(vec3 p, vec3 rd, float t, float epsilon, out float advanc
     if (entry > 0.0) {
         float landing = SDF_FAR;
 #ifdef SDF_CELLS_PLANES
-        for (int k = 0; k < SDF_CELL_PLANES; ++k) {
+        for (int k = 0; k < SDF_CELLS_PLANES; ++k) {
             vec4 field = sdfCellPlaneFields[k];
             float planeLanding =
                 sdfPlaneLanding(dot(field.xyz, p) + field.w, dot(field.xyz, rd), t, epsilon);

@@ -218,6 +218,7 @@ TEST(SdfStrategies, CellsOfARoomOfPlanesAndBakedDrawTheSameImage) {
         const SdfCellGrid grid = buildSdfCells(prepared.sdf, sdfContentBox(*prepared.scene.sdf));
         ASSERT_GT(grid.levels, 0);
         EXPECT_EQ(grid.planes.size(), 3u);
+        EXPECT_NE(map.find("#define SDF_CELLS_PLANES 3\n"), std::string::npos); // (all read)
         // (Rays that come down to the content's box or land on a wall in a step, common/
         // sdf_cells.glsl sdfDistanceAlong, meet the seams of two planes at other points within
         // the hit threshold than generated code's march: 45 pixels of the smooth room differ

@@ -770,6 +770,31 @@ TEST(CellPruning, TheRootsPlanesAreInNoList) {
     };
     for (const SdfCellPlane& plane : grid.planes)
         ASSERT_TRUE(isPlane(plane.instruction));
+    // The shader reads as many of the header's planes as the map's SDF_CELLS_PLANES says: every
+    // plane the grid holds, whatever the program (seven plane instructions here: four), and none
+    // in a program without one.
+    const auto planesRead = [](const SdfProgram& program) {
+        const std::string map = generateSdfMap(program, SdfStrategy::Cells);
+        const std::string define = "#define SDF_CELLS_PLANES ";
+        const std::size_t at = map.find(define);
+        return at == std::string::npos ? 0 : std::stoi(map.substr(at + define.size()));
+    };
+    EXPECT_EQ(planesRead(c->program), kSdfCellPlanes);
+    const std::optional<Compiled> floorOnly = compileText(
+        R"({"children": [{"shape": "plane", "normal": [0, 1, 0], "offset": -1},
+            {"shape": "sphere", "radius": 0.3}, {"shape": "box", "half_extents": [0.2, 0.2, 0.2],
+             "position": [1, 0, 0]}]})",
+        false);
+    const std::optional<Compiled> noPlane = compileText(
+        R"({"children": [{"shape": "sphere", "radius": 0.3},
+            {"shape": "box", "half_extents": [0.2, 0.2, 0.2], "position": [1, 0, 0]}]})",
+        false);
+    ASSERT_TRUE(floorOnly && noPlane);
+    const SdfCellGrid floorGrid =
+        buildSdfCells(floorOnly->program, sdfContentBox(*floorOnly->scene.sdf), options);
+    ASSERT_EQ(floorGrid.planes.size(), 1u);
+    EXPECT_EQ(planesRead(floorOnly->program), 1);
+    EXPECT_EQ(planesRead(noPlane->program), 0);
     // Every list word that is a plane is one of the two the grid does not hold.
     const auto gridPlane = [&](std::uint32_t i) {
         return std::any_of(grid.planes.begin(), grid.planes.end(),
