@@ -107,7 +107,23 @@ TEST(SdfStrategies, CellsOfAUnionOfShapesAndBakedDrawTheSameImage) {
 // intersection's sides, a chamfer and a distance modifier; it must draw what generated code
 // draws. (The grids' lean loop has its own test above.)
 TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
-    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+    // The smooth operations' curves (sdf/glsl_codegen.cpp passes the one curve a program uses as
+    // a constant): the polynomial alone, the circular arc alone, and both.
+    struct Curves {
+        const char* outer;
+        const char* inner;
+        const char* subtraction;
+        const char* constant; // in the map's combine dispatch, or none where both are used
+    };
+    for (const Curves& curves :
+         {Curves{"polynomial", "polynomial", "polynomial", "vec4(opParams.x, 0.0, opParams.zw)"},
+          Curves{"circular", "circular", "circular", "vec4(opParams.x, 1.0, opParams.zw)"},
+          Curves{"circular", "polynomial", "circular", nullptr}}) {
+        SCOPED_TRACE(std::string(curves.outer) + " " + curves.inner);
+        const auto blend = [](const char* curve) {
+            return std::string(R"("blend": ")") + curve + "\", ";
+        };
+        const PreparedScene prepared = prepareSceneText(R"({"version": 1,
         "camera": {"position": [0.4, 1.6, 4.2], "target": [0, 0.4, 0], "fov": 45},
         "materials": {"a": {"base_color": "#e76f51", "roughness": 0.3},
                       "b": {"base_color": "#2a9d8f", "metallic": 0.6},
@@ -115,13 +131,16 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
         "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
         "sdf": {"children": [
           {"shape": "plane", "normal": [0, 1, 0], "offset": 0, "material": "b"},
-          {"op": "smooth_union", "smoothness": 0.35, "children": [
+          {"op": "smooth_union", )" + blend(curves.outer) +
+                                                        R"("smoothness": 0.35, "children": [
             {"shape": "sphere", "radius": 0.45, "position": [-0.8, 0.45, 0], "material": "a"},
-            {"op": "smooth_union", "smoothness": 0.25, "children": [
+            {"op": "smooth_union", )" + blend(curves.inner) +
+                                                        R"("smoothness": 0.25, "children": [
               {"shape": "sphere", "radius": 0.4, "position": [-0.2, 0.6, 0.1], "material": "c"},
               {"shape": "box", "half_extents": [0.3, 0.2, 0.3], "position": [-0.5, 0.2, 0.5],
                "material": "b", "modifiers": [{"type": "round", "radius": 0.05}]}]}]},
-          {"op": "smooth_subtraction", "smoothness": 0.1, "children": [
+          {"op": "smooth_subtraction", )" + blend(curves.subtraction) +
+                                                        R"("smoothness": 0.1, "children": [
             {"shape": "box", "half_extents": [0.35, 0.35, 0.35], "position": [0.7, 0.35, 0],
              "material": "c"},
             {"shape": "sphere", "radius": 0.3, "position": [0.7, 0.6, 0.3], "material": "a"}]},
@@ -133,11 +152,17 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
             {"shape": "sphere", "radius": 0.3, "position": [0.1, 0.3, -0.9], "material": "b"},
             {"shape": "sphere", "radius": 0.3, "position": [0.5, 0.3, -0.9], "material": "c"}]}
         ]}})");
-    const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
-    ASSERT_NE(map.find("common/sdf_cells.glsl"), std::string::npos); // cells, not a fallback
-    ASSERT_EQ(map.find("SDF_CELLS_LEAN"), std::string::npos);
-    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
-                     "strategy_cells_smooth_tree");
+        const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
+        ASSERT_NE(map.find("common/sdf_cells.glsl"), std::string::npos); // cells, not a fallback
+        ASSERT_EQ(map.find("SDF_CELLS_LEAN"), std::string::npos);
+        EXPECT_EQ(map.find("opParams.zw") != std::string::npos, curves.constant != nullptr);
+        if (curves.constant) {
+            EXPECT_NE(map.find(curves.constant), std::string::npos) << map;
+        }
+        expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells,
+                         std::string("strategy_cells_smooth_tree_") + curves.outer + "_" +
+                             curves.inner);
+    }
 }
 
 // A grid whose lists are all short is read one list instruction per loop iteration
