@@ -81,9 +81,12 @@ int Viewer::run() {
         updateView(actions.waitShaders, actions.waitView, !actions.windowShots.empty());
 
         ImGui::Render();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, fw, fh);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        {
+            std::lock_guard submitting(glSubmissionMutex());
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, fw, fh);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        }
 
         failures += writeScriptShots(actions);
         if (actions.quit) requestClose(dialogs_, session_, files_, messages_);
@@ -93,7 +96,10 @@ int Viewer::run() {
         // It is the window's opening, not a UI frame.
         const bool opening = !window_->shown();
         if (opening) window_->show();
-        window_->swapBuffers();
+        {
+            std::lock_guard submitting(glSubmissionMutex());
+            window_->swapBuffers();
+        }
         gpu_.frameDone();
         frameMilliseconds_ =
             std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - frameStart)

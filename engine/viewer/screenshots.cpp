@@ -2,6 +2,7 @@
 #include "screenshots.hpp"
 
 #include "core/image_io.hpp"
+#include "view_render_thread.hpp"
 
 #include <algorithm>
 #include <ctime>
@@ -29,10 +30,13 @@ bool writeWindowShot(const Window& window, const std::string& path, std::string&
     image.channels = 4;
     image.data.resize(std::size_t(fw) * std::size_t(fh) * 4);
     std::vector<std::uint8_t> rows(image.data.size());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, fw, fh, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    {
+        std::lock_guard submitting(glSubmissionMutex());
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, fw, fh, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    }
     for (int y = 0; y < fh; ++y) // GL reads bottom row first; images store the top row first
         std::copy_n(rows.data() + std::size_t(fh - 1 - y) * std::size_t(fw) * 4,
                     std::size_t(fw) * 4, image.data.data() + std::size_t(y) * std::size_t(fw) * 4);

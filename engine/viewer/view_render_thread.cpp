@@ -42,6 +42,11 @@ bool sameView(const ViewFrameRequest& a, const ViewFrameRequest& b) {
 
 } // namespace
 
+std::mutex& glSubmissionMutex() {
+    static std::mutex mutex;
+    return mutex;
+}
+
 ViewRenderThread::ViewRenderThread(Window& window) : preparing_(editorFileSource()) {
     threadWindow_ = Window::openHidden(startError_, &window);
     window.makeCurrent(); // (creating a window may leave another context current)
@@ -61,6 +66,7 @@ ViewRenderThread::ViewRenderThread(Window& window) : preparing_(editorFileSource
 // built here, with the window, for both filters update() uses. The texture's sides are not
 // powers of two, as a viewport's seldom are: llvmpipe builds other code for those.
 void ViewRenderThread::warmCopies() {
+    std::lock_guard submitting(glSubmissionMutex());
     gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(texture.id(), 1, GL_RGBA8, 3, 3);
     gl::Framebuffer source = gl::createFramebuffer();
@@ -163,6 +169,7 @@ void ViewRenderThread::run() {
 }
 
 void ViewRenderThread::runJob(Job job) {
+    std::unique_lock submitting(glSubmissionMutex());
     bool ok = false;
     std::string error;
     std::optional<Pixels<std::uint8_t>> image;
@@ -185,6 +192,7 @@ void ViewRenderThread::runJob(Job job) {
         image = view_->capture(view, width, height, error);
         ok = image.has_value();
     }
+    submitting.unlock();
     {
         std::lock_guard lock(mutex_);
         jobOk_ = ok;
@@ -196,7 +204,7 @@ void ViewRenderThread::runJob(Job job) {
     changed_.notify_all();
 }
 
-int ViewRenderThread::drawSlot(int width, int height) {
+int ViewRenderThread::drawSlot(int width, int height, std::unique_lock<std::mutex>& submitting) {
     int chosen = 0;
     GLsync shown = nullptr;
     {
@@ -211,7 +219,9 @@ int ViewRenderThread::drawSlot(int width, int height) {
     // The UI's copy from it (made before the fence, flushed after it) must be done before this
     // thread draws over it.
     if (shown) {
+        submitting.unlock(); // (the UI flushed its fence)
         glClientWaitSync(shown, 0, 1'000'000'000);
+        submitting.lock();
         glDeleteSync(shown);
     }
     Slot& slot = slots_[std::size_t(chosen)];
@@ -233,6 +243,7 @@ bool ViewRenderThread::step(const ViewFrameRequest& request, std::uint64_t seria
         std::lock_guard lock(mutex_);
         compiled = std::exchange(compiled_, std::nullopt);
     }
+    std::unique_lock submitting(glSubmissionMutex());
     if (compiled) view_->takeScene(*compiled);
     std::optional<std::string> sceneError;
     int frameNumber = request.frameNumber;
@@ -248,11 +259,18 @@ bool ViewRenderThread::step(const ViewFrameRequest& request, std::uint64_t seria
     }
     adaptive_.enabled = request.adaptive.enabled;
     adaptive_.targetMilliseconds = request.adaptive.targetMilliseconds;
-    const int slot = drawSlot(request.width, request.height);
+    const int slot = drawSlot(request.width, request.height, submitting);
     const bool rendered = view_->render(
         request.view, slots_[std::size_t(slot)].drawFbo.id(), request.width, request.height,
         adaptive_, kRenderShare * adaptive_.targetMilliseconds, request.refineAll);
-    glFinish(); // the picture is whole before the UI copies it
+    // The picture is whole before the UI copies it (waited for outside the lock).
+    GLsync whole = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    glFlush();
+    submitting.unlock();
+    glClientWaitSync(whole, 0, GL_TIMEOUT_IGNORED);
+    submitting.lock();
+    glDeleteSync(whole);
+    submitting.unlock();
     {
         std::lock_guard lock(mutex_);
         shownSlot_ = slot;
@@ -382,6 +400,7 @@ bool ViewRenderThread::update(const Scene& scene, const ViewFrameRequest& reques
             height = shown.height;
         }
     }
+    std::lock_guard submitting(glSubmissionMutex());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, viewport.framebufferWidth, viewport.framebufferHeight);
     glDisable(GL_SCISSOR_TEST);

@@ -1,9 +1,10 @@
 // The view's render thread: the scene is uploaded, its shaders linked and first drawn, and the
 // view rendered and composed (view_renderer.hpp) on a thread of its own, on a hidden window's
 // context that shares its textures with the UI's. The UI thread only asks for what it wants
-// shown and copies the newest finished picture into the viewport, so no UI frame waits for the
-// scene: not for a render, nor for what a driver does at a program's first draw or a large
-// buffer's creation (on llvmpipe, tens to hundreds of milliseconds each).
+// shown and copies the newest finished picture into the viewport, so no UI frame waits for a
+// render. (It does wait, at glSubmissionMutex below, while the render thread is in the driver:
+// at a program's first draw or a large buffer's creation, tens to hundreds of milliseconds on
+// llvmpipe.)
 //
 // A UI frame posts a request (the camera, the selection, the document's revision) when it asks
 // for another picture or brings a newly compiled scene; a newer request replaces one not yet
@@ -38,6 +39,13 @@
 #include <thread>
 
 namespace rmsc::app {
+
+// Held by the UI thread and the render thread around what they ask of the driver (their GL
+// calls but the waits for a fence), so the two contexts, which share objects, never enter it at
+// once: llvmpipe (Mesa 22.3) crashed, about one run in ten of the 10,000-shape grid's edits,
+// inside a draw of one while the other's upload looked through its queued draws
+// (docs/viewer.md, "Responsiveness").
+std::mutex& glSubmissionMutex();
 
 // What one UI frame asks of the view.
 struct ViewFrameRequest {
@@ -125,7 +133,8 @@ class ViewRenderThread {
     void publishSceneError(std::string message);
     // UI: posts `job` and waits for the thread to finish it.
     void waitForJob(Job job);
-    int drawSlot(int width, int height); // thread: a slot to draw into, waited for
+    // Thread: a slot to draw into, waited for (outside `submitting`, the held glSubmissionMutex()).
+    int drawSlot(int width, int height, std::unique_lock<std::mutex>& submitting);
 
     std::unique_ptr<Window> threadWindow_;
     std::unique_ptr<Window> warmerWindow_;
