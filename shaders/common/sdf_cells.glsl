@@ -25,7 +25,9 @@ layout(std140, binding = SDF_CELL_HEADER_BINDING) uniform SdfCellHeader {
     // The grid's planes: fields dot(xyz, p) + w (SDF_FAR where there is none), and their
     // instructions (0xffffffffu where there is none), the top bit set where the plane's surface
     // is kept over a list's at an equal distance (SdfCellPlane::leads: a union keeps the first
-    // of equal operands).
+    // of equal operands). The loops over them read the first SDF_CELLS_PLANES (engine/sdf/
+    // glsl_codegen.cpp: the program's plane instructions, at most SDF_CELL_PLANES; undefined
+    // where there is none): llvmpipe runs every iteration of a loop of constant length.
     vec4 sdfCellPlaneFields[SDF_CELL_PLANES];
     uvec4 sdfCellPlaneInstructions;
 }; // then the words (SdfCellGrid::words), read through sdfCellTexels below
@@ -153,10 +155,6 @@ float sdfCellDistance(float distance, vec3 p, bool affine, vec4 cell, out vec3 p
         distance = outside ? min(distance, floorDistance) : max(distance, floorDistance);
     }
     planeGradient = vec3(0.0);
-// SDF_CELLS_PLANES (engine/sdf/glsl_codegen.cpp) is how many of the header's planes can be in use:
-// the program's plane instructions, at most SDF_CELL_PLANES. The loops over them read no more
-// (a scene without a plane reads none): llvmpipe runs every iteration of a loop of constant
-// length, used or not, and the 4,096-sphere tree's one floor read four at every step.
 #ifdef SDF_CELLS_PLANES
     for (int k = 0; k < SDF_CELLS_PLANES; ++k) {
         vec4 field = sdfCellPlaneFields[k];
