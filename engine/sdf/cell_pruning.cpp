@@ -1028,9 +1028,10 @@ std::uint64_t hashList(std::span<const std::uint32_t> list) {
     return h;
 }
 
+// `list` in words, read as grid.reading.
 void appendOutsideList(SdfCellGrid& grid, std::span<const std::uint32_t> list) {
     grid.outsideOffset = std::uint32_t(grid.words.size());
-    grid.outsideLength = std::uint32_t(list.size());
+    grid.outsideLength = std::uint32_t(list.size() / sdfListWords(1, grid.reading));
     grid.words.insert(grid.words.end(), list.begin(), list.end());
 }
 
@@ -1105,14 +1106,16 @@ void wholeProgramOnly(SdfCellGrid& grid, const SdfProgram& program) {
     grid.planes.clear();
     grid.floor.reset();
     grid.outsideFloor.reset();
-    grid.reading = SdfListReading::Postfix;
+    grid.reading = SdfListReading::PostfixPairs;
     std::optional<std::vector<std::uint32_t>> list = wholeTreeList(grid.code);
     if (!list) {
         grid.code = program.instructions;
         list.emplace(program.instructions.size());
         std::iota(list->begin(), list->end(), 0u);
     }
-    appendOutsideList(grid, *list);
+    std::vector<std::uint32_t> pairs;
+    sdfPairList(grid.code, *list, pairs);
+    appendOutsideList(grid, pairs);
 }
 
 } // namespace
@@ -1168,7 +1171,11 @@ struct SdfCellState {
     // The program is of a least-of-shapes form (sdfIsLeastOfShapes): the lists leave their
     // unions out (SdfListReading::LeastOfShapes).
     bool leastOfShapes = false;
-    std::vector<std::uint32_t> shapesScratch; // setLeafCell's list without its unions
+    // Else they are in entries of two words (SdfListReading::PostfixPairs).
+    SdfListReading reading() const {
+        return leastOfShapes ? SdfListReading::LeastOfShapes : SdfListReading::PostfixPairs;
+    }
+    std::vector<std::uint32_t> shapesScratch; // setLeafCell's list without its unions, or paired
     int levels = 0;
     glm::vec3 origin{0.0f};
     float size = 0.0f;
@@ -1202,7 +1209,7 @@ struct SdfCellState {
     // blocks' entries changed since.
     struct BlockStats {
         int leafCells = 0, maxLength = 0, affineCells = 0;
-        long length = 0, leaves = 0;
+        long length = 0, instructions = 0, leaves = 0;
     };
     std::uint64_t packStamp = 0;
     std::size_t packedBase = 0, packedLists = 0;
@@ -1351,19 +1358,20 @@ std::uint32_t storeList(SdfCellState& s, std::span<const std::uint32_t> list) {
 void setLeafCell(SdfCellState& s, std::uint32_t k, const CellResult& r) {
     withoutPlanes(s, r.list, s.listScratch, s.stackScratch);
     std::span<const std::uint32_t> list = s.listScratch;
+    s.shapesScratch.clear();
     if (s.leastOfShapes) { // the running minimum needs no unions, nor a stack
-        s.shapesScratch.clear();
         for (std::uint32_t i : list)
             if (neededByLeastOfShapes(s.code[i])) s.shapesScratch.push_back(i);
-        list = s.shapesScratch;
-    } else if (stackDepth(s.code, list) > kSdfMaxStack) {
-        s.tooDeep = true;
+    } else {
+        if (stackDepth(s.code, list) > kSdfMaxStack) s.tooDeep = true;
+        sdfPairList(s.code, list, s.shapesScratch);
     }
+    list = s.shapesScratch;
     s.entries[2 * k] = storeList(s, list);
     // Affine when its program is one plane: a constant, a plane the lists hold, or one of the
     // grid's planes (then the list is empty).
     s.entries[2 * k + 1] =
-        std::uint32_t(list.size()) |
+        std::uint32_t(s.leastOfShapes ? list.size() : list.size() / 2) |
         (isOnePlane(s.code, r.list.data(), std::uint32_t(r.list.size())) ? kSdfCellAffine : 0u);
     s.cellLeaves[k] = std::uint32_t(r.leaves);
     markBlockChanged(s, k / 64);
@@ -1380,9 +1388,10 @@ void compactLists(SdfCellState& s) {
         if (s.blocks[b].live)
             for (std::uint32_t k = 64 * b; k < 64 * b + 64; ++k)
                 if (!(s.entries[2 * k] & kSdfCellRefined))
-                    s.entries[2 * k] =
-                        storeList(s, std::span(old).subspan(s.entries[2 * k], s.entries[2 * k + 1] &
-                                                                                  ~kSdfCellAffine));
+                    s.entries[2 * k] = storeList(
+                        s, std::span(old).subspan(
+                               s.entries[2 * k],
+                               sdfListWords(s.entries[2 * k + 1] & ~kSdfCellAffine, s.reading())));
     s.listsAtCompaction = s.lists.size();
     s.listsMoved = true;
 }
@@ -1747,6 +1756,12 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
             if (word & kSdfCellAffine) ++stats.affineCells;
             ++stats.leafCells;
             stats.length += long(length);
+            stats.instructions += long(length);
+            if (!s.leastOfShapes) // (the combines of the second words, less the placeholders)
+                for (std::uint32_t n = 0; n < length; ++n)
+                    stats.instructions +=
+                        long(s.lists[e + 2 * n + 1] != kSdfNoFusedCombine) -
+                        long(SdfOpcode(s.code[s.lists[e + 2 * n]].opcode) == SdfOpcode::Combine);
             stats.leaves += long(s.cellLeaves[k]);
             stats.maxLength = std::max(stats.maxLength, int(length));
         }
@@ -1754,8 +1769,8 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     const std::size_t listsFrom = inPlace ? s.packedLists : 0;
     std::copy(s.lists.begin() + std::ptrdiff_t(listsFrom), s.lists.end(),
               grid.words.begin() + base + std::ptrdiff_t(listsFrom));
+    grid.reading = s.reading();
     appendOutsideList(grid, s.outsideList);
-    grid.reading = s.leastOfShapes ? SdfListReading::LeastOfShapes : SdfListReading::Postfix;
     const std::uint32_t tail = inPlace ? base + std::uint32_t(listsFrom) : 0;
     if (grid.words.size() > tail)
         grid.changedWords.push_back({tail, std::uint32_t(grid.words.size()) - tail});
@@ -1766,7 +1781,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     s.packStamp = grid.packStamp = ++stamps;
 
     grid.stats.cellsPerLevel.assign(std::size_t(s.levels), 0);
-    long totalLength = 0, totalLeaves = 0;
+    long totalLength = 0, totalInstructions = 0, totalLeaves = 0;
     for (std::uint32_t b = 0; b < blockCount; ++b) {
         if (!s.blocks[b].live) continue;
         grid.stats.cellsPerLevel[std::size_t(s.blocks[b].level - 1)] += 64;
@@ -1774,6 +1789,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         grid.stats.leafCells += stats.leafCells;
         grid.stats.affineCells += stats.affineCells;
         totalLength += stats.length;
+        totalInstructions += stats.instructions;
         totalLeaves += stats.leaves;
         grid.stats.maxLength = std::max(grid.stats.maxLength, stats.maxLength);
     }
@@ -1782,6 +1798,8 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
     grid.stats.uniquePrograms = s.uniquePrograms;
     grid.stats.prunedCells = s.prunedCells;
     grid.stats.meanLength = grid.stats.leafCells ? double(totalLength) / grid.stats.leafCells : 0.0;
+    grid.stats.meanInstructions =
+        grid.stats.leafCells ? double(totalInstructions) / grid.stats.leafCells : 0.0;
     grid.stats.meanLeaves = grid.stats.leafCells ? double(totalLeaves) / grid.stats.leafCells : 0.0;
     grid.stats.bytes = grid.words.size() * sizeof(std::uint32_t);
 }
@@ -1826,11 +1844,15 @@ void setOutsideList(SdfCellState& s) {
         if (united++ > 0) list.push_back(s.unionInstruction);
     }
     withoutPlanes(s, list, s.outsideList, s.stackScratch);
-    if (s.leastOfShapes)
+    if (s.leastOfShapes) {
         std::erase_if(s.outsideList,
                       [&](std::uint32_t i) { return !neededByLeastOfShapes(s.code[i]); });
-    else if (stackDepth(s.code, s.outsideList) > kSdfMaxStack)
-        s.tooDeep = true;
+        return;
+    }
+    if (stackDepth(s.code, s.outsideList) > kSdfMaxStack) s.tooDeep = true;
+    list.clear();
+    sdfPairList(s.code, s.outsideList, list);
+    s.outsideList = std::move(list);
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -2002,15 +2024,20 @@ float sdfCellOutsideFloor(const SdfCellGrid& grid, glm::vec3 p) {
     return floorAt({grid.outsideFloor->box, grid.outsideFloor->drop, true}, p);
 }
 
-std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p) {
-    if (grid.levels == 0) return {};
-    const SdfCellRange r = sdfCellRange(grid, p);
-    return std::span(grid.words).subspan(r.offset, r.length);
+std::span<const std::uint32_t> sdfCellWords(const SdfCellGrid& grid, const SdfCellRange& r) {
+    return std::span(grid.words).subspan(r.offset, sdfListWords(r.length, grid.reading));
+}
+
+std::vector<std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p) {
+    std::vector<std::uint32_t> list;
+    if (grid.levels > 0)
+        sdfListInstructions(grid.code, sdfCellWords(grid, sdfCellRange(grid, p)), grid.reading,
+                            list);
+    return list;
 }
 
 float sdfCellsDistance(const SdfProgram& program, const SdfCellGrid& grid, glm::vec3 p) {
-    const SdfCellRange r = sdfCellRange(grid, p);
-    const auto list = std::span(grid.words).subspan(r.offset, r.length);
+    const auto list = sdfCellWords(grid, sdfCellRange(grid, p));
     float d = list.empty() ? INFINITY
                            : sdfDistanceOrdered(program, grid.code, list, p, nullptr, grid.reading);
     d = std::min(d, sdfCellOutsideFloor(grid, p));
@@ -2021,8 +2048,7 @@ float sdfCellsDistance(const SdfProgram& program, const SdfCellGrid& grid, glm::
 
 SdfSurface sdfCellsSurface(const SdfProgram& program, const SdfCellGrid& grid,
                            std::span<const Material> materials, glm::vec3 p) {
-    const SdfCellRange r = sdfCellRange(grid, p);
-    const auto list = std::span(grid.words).subspan(r.offset, r.length);
+    const auto list = sdfCellWords(grid, sdfCellRange(grid, p));
     SdfSurface surface;
     surface.distance = INFINITY;
     if (!list.empty())

@@ -59,6 +59,8 @@ std::vector<GlslConstant> sdfGlslConstants() {
         {"SDF_CELL_MAX_LEVELS", glslInt(limits::kSdfCellLevels)},
         {"SDF_CELL_AFFINE", glslUint(kSdfCellAffine)},
         {"SDF_CELL_PLANES", glslInt(kSdfCellPlanes)},
+        {"SDF_NO_FUSED_COMBINE", glslUint(kSdfNoFusedCombine)},
+        {"SDF_FUSED_INDEX_BITS", glslUint(kSdfFusedIndexBits)},
     };
     for (const OpcodeName& opcode : kOpcodes)
         out.push_back(

@@ -71,8 +71,6 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
     return span.y < max(span.x, 0.0) ? 0.0 : min(tMax, span.y);
 }
 
-#define SDF_PROGRAM_AT(n) sdfCellWord(n)
-
 // The list of the program that runs at p, as sdfCellRange in engine/sdf/cell_pruning.cpp. The
 // descent is written out level by level (at most SDF_CELL_MAX_LEVELS): a loop's iterations
 // would come out of llvmpipe's budget shared by every loop of the shader (see
@@ -205,8 +203,14 @@ SdfSurface sdfCellPlanesSurface(SdfSurface surface, vec3 p, bool withTaps, vec3 
 }
 
 #ifndef SDF_CELLS_LEAN
+// The lists are postfix in entries of two words, a texel each (SdfListReading::PostfixPairs in
+// engine/sdf/include/sdf/program.hpp): an instruction and the combine fused with it. `base` is
+// in words, and even.
+#define SDF_LIST_PAIRS 1
+#define SDF_LIST_ENTRY(base, n) sdfCellPair(((base) >> 1u) + (n))
 #include "common/sdf_interpreter.glsl"
 #else
+#define SDF_PROGRAM_AT(n) sdfCellWord(n) // (one word an entry)
 // A program whose every part is one shape (the grids: a plain union of shapes, with or without
 // its bounding hierarchy; sdfIsLeastOfShapes in engine/sdf/program_form.cpp) needs no stack:
 // each cell's list and the outside list are shapes, a running minimum. (A list with unions

@@ -8,8 +8,8 @@
 
 bool sdfSceneEmpty() { return sdfHeader.x == 0u; }
 
-// The program that runs at p: positions `base` to `base + count` of a list whose entry n is
-// instruction SDF_PROGRAM_AT(n). Without cells (common/sdf_cells.glsl): the whole program.
+// The program that runs at p: entries `base` to `base + count` of a list whose entry n is
+// SDF_LIST_ENTRY(base, n) (below). Without cells (common/sdf_cells.glsl): the whole program.
 #ifndef SDF_CELLS
 void sdfProgramRange(vec3 p, out uint base, out uint count) {
     base = 0u;
@@ -17,6 +17,13 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 }
 #define SDF_PROGRAM_AT(n) (n)
 #endif
+// Entry n of the list at `base`: its instruction, and the combine fused with it
+// (SDF_NO_FUSED_COMBINE where none: engine/sdf/include/sdf/program.hpp, PostfixPairs). The whole
+// program (SDF_PROGRAM_AT) fuses nothing; the cells' lists define it (common/sdf_cells.glsl).
+#ifndef SDF_LIST_PAIRS
+#define SDF_LIST_ENTRY(base, n) uvec2(SDF_PROGRAM_AT((base) + (n)), SDF_NO_FUSED_COMBINE)
+#endif
+#define SDF_FUSED_INDEX(word) ((word) & ((1u << SDF_FUSED_INDEX_BITS) - 1u))
 
 // One instruction of sdfDistance (the loop body, repeated to unroll the loop), its numbers read
 // once for every branch (SdfInstructionData). The point stack
@@ -64,7 +71,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #else
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS
 #endif
-#if SDF_HAS_COMBINE
+// (In pairs every combine is the entry's second word: SDF_DISTANCE_STEP_FUSED.)
+#if SDF_HAS_COMBINE && !defined(SDF_LIST_PAIRS)
 #define SDF_DISTANCE_STEP_COMBINE \
     else if (op == SDF_OPCODE_COMBINE) { \
         float weightA; \
@@ -76,9 +84,24 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #else
 #define SDF_DISTANCE_STEP_COMBINE
 #endif
+// The combine of the entry's second word, after its instruction: its kind from the entry, its
+// parameters (one texel) from its instruction.
+#if defined(SDF_LIST_PAIRS) && SDF_HAS_COMBINE
+#define SDF_DISTANCE_STEP_FUSED \
+    if (entry.y != SDF_NO_FUSED_COMBINE) { \
+        float weightA; \
+        stack[top - 2] = \
+            sdfCombineUsed(entry.y >> SDF_FUSED_INDEX_BITS, stack[top - 2], stack[top - 1], \
+                           sdfInstructionParams(SDF_FUSED_INDEX(entry.y), 0), weightA); \
+        --top; \
+    }
+#else
+#define SDF_DISTANCE_STEP_FUSED
+#endif
 #define SDF_DISTANCE_STEP \
     if (n < count) { \
-        uint i = SDF_PROGRAM_AT(base + n); \
+        uvec2 entry = SDF_LIST_ENTRY(base, n); \
+        uint i = entry.x; \
         SdfInstructionData data = sdfInstructionData(i); \
         last = data; \
         uvec4 head = data.head; /* opcode, kind, material, id */ \
@@ -92,6 +115,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
         SDF_DISTANCE_STEP_POINT_MODIFIERS \
         SDF_DISTANCE_STEP_DISTANCE_MODIFIERS \
         SDF_DISTANCE_STEP_COMBINE \
+        SDF_DISTANCE_STEP_FUSED \
     } \
     ++n;
 
@@ -142,6 +166,21 @@ float sdfDistance(vec3 p) {
 #endif
 }
 
+// A combine of kind `kind` and parameters `params` on the stack's two top entries
+// (sdfSurfaceRead's).
+#define SDF_SURFACE_COMBINE(kind, params) \
+    float w; \
+    SdfSurface below = stack[top - 2]; \
+    float d = sdfCombineUsed(kind, below.distance, surface.distance, params, w); \
+    surface = sdfBlendSurfaces(below, surface, d, w); \
+    if (withTaps) { \
+        vec4 a = tapStack[top - 2]; \
+        for (int k = SDF_ZERO; k < 4; ++k) \
+            a[k] = sdfCombineUsed(kind, a[k], surfaceTaps[k], params, w); \
+        surfaceTaps = a; \
+    } \
+    --top;
+
 // The same program as sdfDistance, carrying the material and object id (see
 // sdfCombineSurfaces). Evaluated once per hit. With `withTaps` (a constant at each call, so the
 // compiler drops what the call does not use) the program also runs at the normal's four taps
@@ -173,7 +212,8 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     SdfSurface surface = best; // (read only if the program pushes nothing)
     vec4 surfaceTaps = bestTaps;
     for (uint n = 0u; n < count; ++n) {
-        SdfInstructionData data = sdfInstructionData(SDF_PROGRAM_AT(base + n));
+        uvec2 entry = SDF_LIST_ENTRY(base, n);
+        SdfInstructionData data = sdfInstructionData(entry.x);
         uvec4 head = data.head; // opcode, kind, material, id
         uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
@@ -250,19 +290,14 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
             }
         }
 #endif
-#if SDF_HAS_COMBINE
+#if SDF_HAS_COMBINE && !defined(SDF_LIST_PAIRS)
         else if (op == SDF_OPCODE_COMBINE) {
-            float w;
-            SdfSurface below = stack[top - 2];
-            float d = sdfCombineUsed(head.y, below.distance, surface.distance, data.a0, w);
-            surface = sdfBlendSurfaces(below, surface, d, w);
-            if (withTaps) {
-                vec4 a = tapStack[top - 2];
-                for (int k = SDF_ZERO; k < 4; ++k)
-                    a[k] = sdfCombineUsed(head.y, a[k], surfaceTaps[k], data.a0, w);
-                surfaceTaps = a;
-            }
-            --top;
+            SDF_SURFACE_COMBINE(head.y, data.a0)
+        }
+#elif SDF_HAS_COMBINE // (the entry's second word)
+        if (entry.y != SDF_NO_FUSED_COMBINE) {
+            SDF_SURFACE_COMBINE(entry.y >> SDF_FUSED_INDEX_BITS,
+                                sdfInstructionParams(SDF_FUSED_INDEX(entry.y), 0))
         }
 #endif
     }

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <numeric>
 #include <random>
 #include <sstream>
 
@@ -141,8 +142,7 @@ int expectCellsAgree(const Compiled& c, const SdfCellGrid& grid, std::mt19937& r
     for (int s = 0; s < 10 * samples && checked < samples; ++s) {
         const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
         const SdfCellRange range = sdfCellRange(grid, p);
-        const std::span<const std::uint32_t> list =
-            std::span(grid.words).subspan(range.offset, range.length);
+        const std::vector<std::uint32_t> list = sdfCellProgram(grid, p);
         const float edge = grid.size / float(1 << (2 * range.level));
         const float whole = sdfDistance(c.program, p);
         if (std::abs(whole) > edge && s % 10 != 0) continue;
@@ -252,9 +252,7 @@ TEST(CellPruning, DeepSmoothTreesDropWhatIsAboveItsThreshold) {
         meanLength += grid.stats.meanLength / double(c->program.instructions.size()) / kTrees;
         for (int i = 0; i < 3000; ++i) {
             const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
-            const SdfCellRange range = sdfCellRange(grid, p);
-            const std::span<const std::uint32_t> list =
-                std::span(grid.words).subspan(range.offset, range.length);
+            const std::vector<std::uint32_t> list = sdfCellProgram(grid, p);
             const float whole = sdfDistance(c->program, p);
             ASSERT_NEAR(sdfCellsDistance(c->program, grid, p), whole,
                         1e-5f * (1.0f + std::abs(whole)))
@@ -402,10 +400,11 @@ void expectSameLists(const SdfCellGrid& a, const SdfCellGrid& b, std::mt19937& r
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     for (int i = 0; i < 2000; ++i) {
         const glm::vec3 p = a.origin + glm::vec3(u(rng), u(rng), u(rng)) * a.size;
-        const std::span<const std::uint32_t> la = sdfCellProgram(a, p), lb = sdfCellProgram(b, p);
+        const std::span<const std::uint32_t> la = sdfCellWords(a, sdfCellRange(a, p)),
+                                             lb = sdfCellWords(b, sdfCellRange(b, p));
         ASSERT_TRUE(std::equal(la.begin(), la.end(), lb.begin(), lb.end()))
             << what << " at " << p.x << " " << p.y << " " << p.z << ": " << la.size() << " and "
-            << lb.size() << " instructions";
+            << lb.size() << " words";
     }
     for (std::size_t i = 0; i < a.code.size(); ++i)
         ASSERT_EQ(std::memcmp(&a.code[i], &b.code[i], sizeof a.code[i]), 0) << what << " " << i;
@@ -859,6 +858,82 @@ TEST(CellPruning, APlaneFirstOfEqualOnesKeepsItsSurface) {
     EXPECT_EQ(expectCellsAgree(*c, grid, rng, 1000, "equal planes"), 1000);
 }
 
+// A postfix list in pairs (SdfListReading::PostfixPairs) is the same program: read back it is the
+// list, and run it gives the list's value; every combine is an entry's second word, fused with
+// the instruction before it wherever that one has none (the fewest entries), and where the list
+// has a BoundSkip (whose skips count entries) every combine has an entry of its own.
+TEST(CellPruning, AListInPairsIsItsPostfixProgram) {
+    RandomTree random{std::mt19937(20261207)};
+    std::uniform_real_distribution<float> u(-2.0f, 2.0f);
+    int fused = 0, alone = 0;
+    for (int t = 0; t < 40; ++t) {
+        const std::string sdf = random.group(3);
+        const bool bounded = t % 2 == 1;
+        const std::optional<Compiled> c =
+            compileText(R"({"children": [)" + sdf + ", " + random.shape() + "]}", bounded);
+        if (!c) continue; // e.g. a subtraction of only cut children
+        const std::vector<GpuSdfInstruction>& code = c->program.instructions;
+        std::vector<std::uint32_t> list(code.size());
+        std::iota(list.begin(), list.end(), 0u);
+        const auto isCombine = [&](std::uint32_t i) {
+            return SdfOpcode(code[i].opcode) == SdfOpcode::Combine;
+        };
+        const bool skips = std::any_of(list.begin(), list.end(), [&](std::uint32_t i) {
+            return SdfOpcode(code[i].opcode) == SdfOpcode::BoundSkip;
+        });
+        std::vector<std::uint32_t> pairs{7u}; // (appended after what is there)
+        sdfPairList(code, list, pairs);
+        pairs.erase(pairs.begin());
+        ASSERT_EQ(pairs.size() % 2, 0u);
+        std::vector<std::uint32_t> back;
+        sdfListInstructions(code, pairs, SdfListReading::PostfixPairs, back);
+        ASSERT_EQ(back, list) << sdf;
+        const std::size_t entries = pairs.size() / 2;
+        std::size_t combines = 0;
+        for (std::size_t n = 0; n < entries; ++n) {
+            const std::uint32_t first = pairs[2 * n], second = pairs[2 * n + 1];
+            if (second != kSdfNoFusedCombine) {
+                const std::uint32_t i = sdfFusedIndex(second);
+                ASSERT_TRUE(isCombine(i)) << sdf;
+                ASSERT_EQ(second >> kSdfFusedIndexBits, code[i].kind) << sdf;
+                ++combines;
+                (isCombine(first) ? alone : fused) += 1;
+            }
+            if (isCombine(first)) { // its own entry: the one before it had a combine
+                ASSERT_EQ(sdfFusedIndex(second), first) << sdf;
+                if (!skips) {
+                    ASSERT_TRUE(n > 0 && pairs[2 * n - 1] != kSdfNoFusedCombine) << sdf;
+                }
+            }
+        }
+        EXPECT_EQ(combines, std::size_t(std::count_if(list.begin(), list.end(), isCombine)));
+        if (skips) {
+            EXPECT_EQ(entries, list.size()) << sdf;
+        }
+        for (int n = 0; n < 50; ++n) {
+            const glm::vec3 p(u(random.rng), u(random.rng), u(random.rng));
+            ASSERT_EQ(sdfDistanceOrdered(c->program, code, pairs, p, nullptr,
+                                         SdfListReading::PostfixPairs),
+                      sdfDistance(c->program, p))
+                << sdf;
+        }
+    }
+    EXPECT_GT(fused, 100);
+    EXPECT_GT(alone, 10);
+    // Two spheres and their blend: two entries, the blend fused with the second sphere.
+    const std::optional<Compiled> two = compileText(
+        R"({"op": "smooth_union", "smoothness": 0.2, "children": [{"shape": "sphere"},
+        {"shape": "sphere", "position": [1, 0, 0]}]})",
+        false);
+    ASSERT_TRUE(two);
+    ASSERT_EQ(two->program.instructions.size(), 3u);
+    std::vector<std::uint32_t> pairs;
+    sdfPairList(two->program.instructions, std::vector<std::uint32_t>{0, 1, 2}, pairs);
+    EXPECT_EQ(pairs,
+              (std::vector<std::uint32_t>{0, kSdfNoFusedCombine, 1,
+                                          sdfFusedCombine(2, std::uint32_t(SdfOp::SmoothUnion))}));
+}
+
 // A union of shapes, with or without its bounding hierarchy, lists only the shapes each cell
 // needs (no unions: the lean loop of sdf_cells.glsl reads a running minimum), and nothing
 // outside the grid, where the union's floor stands for it; read so, both agree with the whole
@@ -919,12 +994,10 @@ TEST(CellPruning, AUnionOfShapesListsOnlyShapes) {
     ASSERT_TRUE(c);
     EXPECT_FALSE(sdfIsLeastOfShapes(c->program));
     const SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf));
-    EXPECT_EQ(grid.reading, SdfListReading::Postfix);
-    const SdfCellRange range = sdfCellRange(grid, glm::vec3(1.1f, 0.0f, 0.0f));
+    EXPECT_EQ(grid.reading, SdfListReading::PostfixPairs);
     bool combines = false;
-    for (std::uint32_t k = 0; k < range.length; ++k)
-        combines = combines ||
-                   SdfOpcode(grid.code[grid.words[range.offset + k]].opcode) == SdfOpcode::Combine;
+    for (std::uint32_t i : sdfCellProgram(grid, glm::vec3(1.1f, 0.0f, 0.0f)))
+        combines = combines || SdfOpcode(grid.code[i].opcode) == SdfOpcode::Combine;
     EXPECT_TRUE(combines);
     EXPECT_EQ(expectCellsAgree(*c, grid, rng, 500, "smooth"), 500);
 }

@@ -64,14 +64,15 @@ void expectAFullBuildsPrograms(const SdfCellGrid& grid, const editor::CellPrunin
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int i = 0; i < 500; ++i) {
         const glm::vec3 p = full.origin + full.size * glm::vec3(unit(rng), unit(rng), unit(rng));
-        const std::span<const std::uint32_t> a = sdfCellProgram(grid, p),
-                                             b = sdfCellProgram(full, p);
+        const std::span<const std::uint32_t> a = sdfCellWords(grid, sdfCellRange(grid, p)),
+                                             b = sdfCellWords(full, sdfCellRange(full, p));
         ASSERT_EQ(std::vector<std::uint32_t>(a.begin(), a.end()),
                   std::vector<std::uint32_t>(b.begin(), b.end()))
             << "at (" << p.x << ", " << p.y << ", " << p.z << ")";
     }
     const auto outsideList = [](const SdfCellGrid& g) {
-        const auto list = std::span(g.words).subspan(g.outsideOffset, g.outsideLength);
+        const auto list =
+            std::span(g.words).subspan(g.outsideOffset, sdfListWords(g.outsideLength, g.reading));
         return std::vector<std::uint32_t>(list.begin(), list.end());
     };
     EXPECT_EQ(outsideList(grid), outsideList(full));

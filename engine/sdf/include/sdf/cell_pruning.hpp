@@ -84,8 +84,9 @@ struct SdfCellOptions {
 struct SdfCellStats {
     std::vector<int> cellsPerLevel; // cells made at each level (64 per refined cell)
     int leafCells = 0;              // cells with a program of their own (not refined)
-    double meanLength = 0.0;        // instructions per leaf cell's program, mean
-    int maxLength = 0;              // and largest
+    double meanLength = 0.0;        // entries per leaf cell's list, mean (steps of the shader's
+    int maxLength = 0;              // loop: SdfCellGrid::reading), and largest
+    double meanInstructions = 0.0;  // instructions per leaf cell's program, mean
     double meanLeaves = 0.0;        // shape evaluations per leaf cell's program, mean
     std::size_t uniquePrograms = 0; // distinct programs after sharing equal ones
     std::size_t prunedCells = 0;    // cells pruned by the build (or the re-prune)
@@ -97,9 +98,10 @@ struct SdfCellStats {
 
 // The cells and their programs, laid out as the GPU reads them (sdf_cells.glsl): `words` holds
 // blocks of 64 cells of 2 words each (block 0: the cells of the first level, x + 4 y + 16 z),
-// then the programs' index lists. A cell is (offset in words of its list, length) or, when
-// refined, (kSdfCellRefined | the index of its block of 64, 0). Indices refer to `code`: the
-// program's instructions followed by the instructions the pruning adds.
+// then the programs' index lists. A cell is (offset in words of its list, its entries: one word
+// or two each, as SdfCellGrid::reading says) or, when refined, (kSdfCellRefined | the index of
+// its block of 64, 0). Indices refer to `code`: the program's instructions followed by the
+// instructions the pruning adds.
 constexpr std::uint32_t kSdfCellRefined = 0x80000000u;
 // Set in a leaf cell's length word (the length is the bits below it) when its program is one
 // plane instruction: a floor's plane, or a far cell's constant. Its field is affine along any
@@ -139,12 +141,13 @@ struct SdfCellGrid {
     // chain of unions that outsideFloor does not stand for and that are not the grid's planes
     // (an infinite repetition; none in a bounded scene, nor in one whose only unbounded
     // operands are planes). It holds no bounding hierarchy (unless sdfCellsNeedHierarchy).
-    std::uint32_t outsideOffset = 0;
-    std::uint32_t outsideLength = 0;
+    std::uint32_t outsideOffset = 0; // in words
+    std::uint32_t outsideLength = 0; // in entries
     // How every list is read (the cells' and the outside one): the cells of a program of a
     // least-of-shapes form (sdfIsLeastOfShapes) list its shapes without their unions, which
-    // the lean loop of sdf_cells.glsl would only step over.
-    SdfListReading reading = SdfListReading::Postfix;
+    // the lean loop of sdf_cells.glsl would only step over; the others' lists are postfix in
+    // pairs, each combine fused with the instruction before it (SdfListReading::PostfixPairs).
+    SdfListReading reading = SdfListReading::PostfixPairs;
     std::vector<GpuSdfInstruction> code; // program.instructions + the added ones
     // The root chain's planes, which no list holds: the field at p is the least of the planes'
     // and the list's (sdfCellsDistance). A cell whose program was one of them is affine with an
@@ -227,7 +230,9 @@ SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p);
 // the distance to what the outside list leaves out (outsideFloor); +infinity elsewhere. The
 // cells' value at p is the least of the two (common/sdf_cells.glsl, sdfCellDistance).
 float sdfCellOutsideFloor(const SdfCellGrid& grid, glm::vec3 p);
-std::span<const std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
+// The words of the list of `r` (read as grid.reading), and the list's instructions at p.
+std::span<const std::uint32_t> sdfCellWords(const SdfCellGrid& grid, const SdfCellRange& r);
+std::vector<std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
 // The cells' field at p as the shader reads it (common/sdf_cells.glsl): the list of
 // sdfCellRange(grid, p), with the outside floor outside the grid, united with the grid's planes
 // (but for the program's floor, which the shader may take in a far cell instead of its

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -125,10 +126,43 @@ inline bool sdfIsLeastOfShapes(const SdfProgram& program) {
     return sdfIsPartsOnly(program) || sdfIsUnionOfShapes(program);
 }
 
-// How a list of instruction indices (a cell's program, sdf/cell_pruning.hpp) is read: as a
-// postfix program, or as the least of its shapes and profiles, where unions and Accumulate do
-// nothing (the cells of a least-of-shapes program leave their unions out of their lists).
-// BoundSkip and SeedBest do what they do in a program either way.
-enum class SdfListReading { Postfix, LeastOfShapes };
+// How a list of instruction indices (a cell's program, sdf/cell_pruning.hpp) is read:
+// - Postfix: a postfix program, one instruction a word;
+// - PostfixPairs: the same program in entries of two words, one step of the shader's loop each
+//   (sdfPairList): an instruction, then the combine that follows it (sdfFusedCombine). Every
+//   combine is in a second word: one that follows another has an entry of its own, whose first
+//   word is the combine itself and runs nothing;
+// - LeastOfShapes: the least of its shapes and profiles, where unions and Accumulate do nothing
+//   (the cells of a least-of-shapes program leave their unions out of their lists).
+// BoundSkip and SeedBest do what they do in a program either way (a BoundSkip skips entries:
+// a list that has one fuses nothing).
+enum class SdfListReading { Postfix, PostfixPairs, LeastOfShapes };
+
+// An entry's second word (PostfixPairs): kSdfNoFusedCombine, or the index of the combine that
+// follows the entry's instruction, with its SdfOp in the top byte (the shader reads the kind
+// without the instruction's head). Indices stay below 2^24 (core/limits.hpp).
+constexpr std::uint32_t kSdfNoFusedCombine = 0xffffffffu;
+constexpr std::uint32_t kSdfFusedIndexBits = 24;
+inline std::uint32_t sdfFusedCombine(std::uint32_t index, std::uint32_t kind) {
+    return index | kind << kSdfFusedIndexBits;
+}
+inline std::uint32_t sdfFusedIndex(std::uint32_t word) {
+    return word & ((1u << kSdfFusedIndexBits) - 1u);
+}
+// The words of a list of `entries` entries read as `reading`.
+inline std::size_t sdfListWords(std::size_t entries, SdfListReading reading) {
+    return reading == SdfListReading::PostfixPairs ? 2 * entries : entries;
+}
+// `list` (a postfix list of `code`'s instructions) in entries of two words, appended to `out`:
+// each combine fused with the instruction before it unless that one has a combine already
+// (which leaves the fewest entries). In a list with a BoundSkip, whose skips count entries, every
+// combine has an entry of its own.
+void sdfPairList(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> list,
+                 std::vector<std::uint32_t>& out);
+// The instructions of `words` (a list of `code`'s read as `reading`), in order, appended to
+// `out`.
+void sdfListInstructions(std::span<const GpuSdfInstruction> code,
+                         std::span<const std::uint32_t> words, SdfListReading reading,
+                         std::vector<std::uint32_t>& out);
 
 } // namespace rmsc
