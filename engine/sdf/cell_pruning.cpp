@@ -1760,8 +1760,9 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
             if (!s.leastOfShapes) // (the combines of the second words, less the placeholders)
                 for (std::uint32_t n = 0; n < length; ++n)
                     stats.instructions +=
-                        long(s.lists[e + 2 * n + 1] != kSdfNoFusedCombine) -
-                        long(SdfOpcode(s.code[s.lists[e + 2 * n]].opcode) == SdfOpcode::Combine);
+                        long(sdfEntryCombine(s.lists[e + 2 * n]) != 0) -
+                        long(SdfOpcode(s.code[sdfEntryIndex(s.lists[e + 2 * n])].opcode) ==
+                             SdfOpcode::Combine);
             stats.leaves += long(s.cellLeaves[k]);
             stats.maxLength = std::max(stats.maxLength, int(length));
         }
@@ -2028,12 +2029,11 @@ std::span<const std::uint32_t> sdfCellWords(const SdfCellGrid& grid, const SdfCe
     return std::span(grid.words).subspan(r.offset, sdfListWords(r.length, grid.reading));
 }
 
-std::vector<std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p) {
-    std::vector<std::uint32_t> list;
+std::vector<GpuSdfInstruction> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p) {
+    std::vector<GpuSdfInstruction> program;
     if (grid.levels > 0)
-        sdfListInstructions(grid.code, sdfCellWords(grid, sdfCellRange(grid, p)), grid.reading,
-                            list);
-    return list;
+        sdfListProgram(grid.code, sdfCellWords(grid, sdfCellRange(grid, p)), grid.reading, program);
+    return program;
 }
 
 float sdfCellsDistance(const SdfProgram& program, const SdfCellGrid& grid, glm::vec3 p) {

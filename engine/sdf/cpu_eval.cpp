@@ -273,31 +273,35 @@ SdfSurface sdfSurface(const SdfProgram& program, std::span<const Material> mater
 }
 
 namespace {
-// The instructions of `order` read as `reading`: a list in pairs is unpaired first (its steps
-// run in order are the postfix program: sdf/program.hpp).
-OrderedProgram orderedProgram(std::span<const GpuSdfInstruction> code,
-                              std::span<const std::uint32_t> order, SdfListReading reading) {
-    if (reading == SdfListReading::PostfixPairs) {
-        thread_local std::vector<std::uint32_t> unpaired;
-        unpaired.clear();
-        sdfListInstructions(code, order, reading, unpaired);
-        return OrderedProgram{code, unpaired, false};
-    }
-    return OrderedProgram{code, order, reading == SdfListReading::LeastOfShapes};
+// The instructions a list in pairs runs, in order (sdfListProgram: its combines as its entries
+// hold them, as the shader reads them).
+const std::vector<GpuSdfInstruction>& pairedProgram(std::span<const GpuSdfInstruction> code,
+                                                    std::span<const std::uint32_t> words) {
+    thread_local std::vector<GpuSdfInstruction> run;
+    run.clear();
+    sdfListProgram(code, words, SdfListReading::PostfixPairs, run);
+    return run;
 }
 } // namespace
 
 float sdfDistanceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
                          std::span<const std::uint32_t> order, glm::vec3 p, int* evaluations,
                          SdfListReading reading) {
-    return distanceOf(program, orderedProgram(code, order, reading), p, evaluations);
+    if (reading == SdfListReading::PostfixPairs)
+        return distanceOf(program, WholeProgram{pairedProgram(code, order)}, p, evaluations);
+    return distanceOf(program,
+                      OrderedProgram{code, order, reading == SdfListReading::LeastOfShapes}, p,
+                      evaluations);
 }
 
 SdfSurface sdfSurfaceOrdered(const SdfProgram& program, std::span<const GpuSdfInstruction> code,
                              std::span<const std::uint32_t> order,
                              std::span<const Material> materials, glm::vec3 p,
                              SdfListReading reading) {
-    return surfaceOf(program, orderedProgram(code, order, reading), materials, p);
+    if (reading == SdfListReading::PostfixPairs)
+        return surfaceOf(program, WholeProgram{pairedProgram(code, order)}, materials, p);
+    return surfaceOf(program, OrderedProgram{code, order, reading == SdfListReading::LeastOfShapes},
+                     materials, p);
 }
 
 float sdfLeafDistance(const SdfProgram& program, const GpuSdfInstruction& instruction,

@@ -59,8 +59,7 @@ std::vector<GlslConstant> sdfGlslConstants() {
         {"SDF_CELL_MAX_LEVELS", glslInt(limits::kSdfCellLevels)},
         {"SDF_CELL_AFFINE", glslUint(kSdfCellAffine)},
         {"SDF_CELL_PLANES", glslInt(kSdfCellPlanes)},
-        {"SDF_NO_FUSED_COMBINE", glslUint(kSdfNoFusedCombine)},
-        {"SDF_FUSED_INDEX_BITS", glslUint(kSdfFusedIndexBits)},
+        {"SDF_ENTRY_INDEX_BITS", glslUint(kSdfEntryIndexBits)},
     };
     for (const OpcodeName& opcode : kOpcodes)
         out.push_back(

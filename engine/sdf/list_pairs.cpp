@@ -1,24 +1,41 @@
 // A cell's postfix list in entries of two words (SdfListReading::PostfixPairs, sdf/program.hpp):
-// an instruction, and the combine that follows it. The Cells shader's loop (common/
+// an instruction, and the combine that follows it, held whole. The Cells shader's loop (common/
 // sdf_interpreter.glsl) runs one entry a step, and on llvmpipe every step runs the code of every
 // branch, taken by a pixel or not: a step that ran a shape or a combine ran both. In pairs, each
 // step runs the shape's code and then a combine's, so a shape and the blend after it take one
 // step where they took two (the 4,096-sphere tree's lists, two spheres and their blend, take two
-// steps instead of three) and no step is a combine alone but one that follows another.
+// steps instead of three). The combine's numbers are in the entry: a texel read inside the
+// combine's branch cost the tree more than the steps saved (docs/performance.md).
 #include "sdf/program.hpp"
 
 #include <algorithm>
 #include <cassert>
+#include <cstring>
 
 namespace rmsc {
 
-static_assert(limits::kSdfInstructions < (1 << kSdfFusedIndexBits) / 2,
-              "a fused combine's index (and the pruning's added instructions) below 2^24");
+static_assert(limits::kSdfInstructions < (1 << kSdfEntryIndexBits) / 2,
+              "instruction indices (and the pruning's added instructions) below 2^24");
 
 namespace {
+
 bool isCombine(const GpuSdfInstruction& in) {
     return SdfOpcode(in.opcode) == SdfOpcode::Combine;
 }
+
+// sdfEntryCombine's code of a combine: 1 + 2 SdfOp + its curve (SmoothBlend, params[0].y: the
+// shader's sdfSmoothMin takes 0.5 and up as circular).
+std::uint32_t combineCode(const GpuSdfInstruction& in) {
+    assert(in.kind < 127); // (SdfOp: the code in a byte)
+    return 1 + 2 * in.kind + (in.params[0].y >= 0.5f ? 1 : 0);
+}
+
+std::uint32_t floatBits(float v) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits;
+}
+
 } // namespace
 
 void sdfPairList(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> list,
@@ -28,31 +45,42 @@ void sdfPairList(std::span<const GpuSdfInstruction> code, std::span<const std::u
     });
     const std::size_t first = out.size();
     for (std::uint32_t i : list) {
-        assert(i < (1u << kSdfFusedIndexBits));
+        assert(i < (1u << kSdfEntryIndexBits));
         if (!isCombine(code[i])) {
-            out.insert(out.end(), {i, kSdfNoFusedCombine});
+            out.insert(out.end(), {i, 0u});
             continue;
         }
-        assert(code[i].kind < 255); // (SdfOp: a byte)
-        const std::uint32_t fused = sdfFusedCombine(i, code[i].kind);
-        if (!skips && out.size() > first && out.back() == kSdfNoFusedCombine)
-            out.back() = fused;
-        else // its own entry, the combine itself in the first word (which runs nothing)
-            out.insert(out.end(), {i, fused});
+        const std::uint32_t combine = combineCode(code[i]) << kSdfEntryIndexBits;
+        const std::uint32_t smoothness = floatBits(code[i].params[0].x);
+        if (!skips && out.size() > first && sdfEntryCombine(out[out.size() - 2]) == 0) {
+            out[out.size() - 2] |= combine;
+            out.back() = smoothness;
+        } else { // its own entry, the combine itself the instruction (which runs nothing)
+            out.insert(out.end(), {i | combine, smoothness});
+        }
     }
 }
 
-void sdfListInstructions(std::span<const GpuSdfInstruction> code,
-                         std::span<const std::uint32_t> words, SdfListReading reading,
-                         std::vector<std::uint32_t>& out) {
+void sdfListProgram(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> words,
+                    SdfListReading reading, std::vector<GpuSdfInstruction>& out) {
     if (reading != SdfListReading::PostfixPairs) {
-        out.insert(out.end(), words.begin(), words.end());
+        for (std::uint32_t i : words)
+            out.push_back(code[i]);
         return;
     }
     assert(words.size() % 2 == 0);
     for (std::size_t n = 0; n + 1 < words.size(); n += 2) {
-        if (!isCombine(code[words[n]])) out.push_back(words[n]);
-        if (words[n + 1] != kSdfNoFusedCombine) out.push_back(sdfFusedIndex(words[n + 1]));
+        const GpuSdfInstruction& in = code[sdfEntryIndex(words[n])];
+        if (!isCombine(in)) out.push_back(in);
+        if (const std::uint32_t c = sdfEntryCombine(words[n]); c != 0) {
+            GpuSdfInstruction combine;
+            combine.opcode = std::uint32_t(SdfOpcode::Combine);
+            combine.kind = (c - 1) / 2;
+            float smoothness;
+            std::memcpy(&smoothness, &words[n + 1], sizeof smoothness);
+            combine.params[0] = glm::vec4(smoothness, float((c - 1) % 2), 0.0f, 0.0f);
+            out.push_back(combine);
+        }
     }
 }
 

@@ -204,8 +204,8 @@ SdfSurface sdfCellPlanesSurface(SdfSurface surface, vec3 p, bool withTaps, vec3 
 
 #ifndef SDF_CELLS_LEAN
 // The lists are postfix in entries of two words, a texel each (SdfListReading::PostfixPairs in
-// engine/sdf/include/sdf/program.hpp): an instruction and the combine fused with it. `base` is
-// in words, and even.
+// engine/sdf/include/sdf/program.hpp): an instruction and the combine after it. `base` is in
+// words, and even.
 #define SDF_LIST_PAIRS 1
 #define SDF_LIST_ENTRY(base, n) sdfCellPair(((base) >> 1u) + (n))
 #include "common/sdf_interpreter.glsl"

@@ -17,13 +17,19 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 }
 #define SDF_PROGRAM_AT(n) (n)
 #endif
-// Entry n of the list at `base`: its instruction, and the combine fused with it
-// (SDF_NO_FUSED_COMBINE where none: engine/sdf/include/sdf/program.hpp, PostfixPairs). The whole
-// program (SDF_PROGRAM_AT) fuses nothing; the cells' lists define it (common/sdf_cells.glsl).
+// Entry n of the list at `base`: x its instruction's index, and above SDF_ENTRY_INDEX_BITS the
+// combine after it (0: none, else 1 + 2 op + curve), y that combine's smoothness (float bits;
+// engine/sdf/include/sdf/program.hpp, PostfixPairs). The whole program (SDF_PROGRAM_AT) has no
+// combine in an entry; the cells' lists define it (common/sdf_cells.glsl).
 #ifndef SDF_LIST_PAIRS
-#define SDF_LIST_ENTRY(base, n) uvec2(SDF_PROGRAM_AT((base) + (n)), SDF_NO_FUSED_COMBINE)
+#define SDF_LIST_ENTRY(base, n) uvec2(SDF_PROGRAM_AT((base) + (n)), 0u)
 #endif
-#define SDF_FUSED_INDEX(word) ((word) & ((1u << SDF_FUSED_INDEX_BITS) - 1u))
+#define SDF_ENTRY_INDEX(entry) ((entry).x & ((1u << SDF_ENTRY_INDEX_BITS) - 1u))
+#define SDF_ENTRY_COMBINE(entry) ((entry).x >> SDF_ENTRY_INDEX_BITS)
+// The combine's op and parameters (opParams: x the smoothness, y the curve).
+#define SDF_ENTRY_OP(entry) ((SDF_ENTRY_COMBINE(entry) - 1u) >> 1u)
+#define SDF_ENTRY_PARAMS(entry) \
+    vec4(uintBitsToFloat((entry).y), float((SDF_ENTRY_COMBINE(entry) - 1u) & 1u), 0.0, 0.0)
 
 // One instruction of sdfDistance (the loop body, repeated to unroll the loop), its numbers read
 // once for every branch (SdfInstructionData). The point stack
@@ -71,7 +77,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #else
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS
 #endif
-// (In pairs every combine is the entry's second word: SDF_DISTANCE_STEP_FUSED.)
+// (In pairs every combine is in an entry's combine: SDF_DISTANCE_STEP_FUSED.)
 #if SDF_HAS_COMBINE && !defined(SDF_LIST_PAIRS)
 #define SDF_DISTANCE_STEP_COMBINE \
     else if (op == SDF_OPCODE_COMBINE) { \
@@ -84,15 +90,14 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #else
 #define SDF_DISTANCE_STEP_COMBINE
 #endif
-// The combine of the entry's second word, after its instruction: its kind from the entry, its
-// parameters (one texel) from its instruction.
+// The entry's combine, after its instruction, out of the entry alone: a texel read in its
+// branch cost more than the step it saves (docs/performance.md).
 #if defined(SDF_LIST_PAIRS) && SDF_HAS_COMBINE
 #define SDF_DISTANCE_STEP_FUSED \
-    if (entry.y != SDF_NO_FUSED_COMBINE) { \
+    if (SDF_ENTRY_COMBINE(entry) != 0u) { \
         float weightA; \
-        stack[top - 2] = \
-            sdfCombineUsed(entry.y >> SDF_FUSED_INDEX_BITS, stack[top - 2], stack[top - 1], \
-                           sdfInstructionParams(SDF_FUSED_INDEX(entry.y), 0), weightA); \
+        stack[top - 2] = sdfCombineUsed(SDF_ENTRY_OP(entry), stack[top - 2], stack[top - 1], \
+                                        SDF_ENTRY_PARAMS(entry), weightA); \
         --top; \
     }
 #else
@@ -101,7 +106,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #define SDF_DISTANCE_STEP \
     if (n < count) { \
         uvec2 entry = SDF_LIST_ENTRY(base, n); \
-        uint i = entry.x; \
+        uint i = SDF_ENTRY_INDEX(entry); \
         SdfInstructionData data = sdfInstructionData(i); \
         last = data; \
         uvec4 head = data.head; /* opcode, kind, material, id */ \
@@ -213,7 +218,7 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     vec4 surfaceTaps = bestTaps;
     for (uint n = 0u; n < count; ++n) {
         uvec2 entry = SDF_LIST_ENTRY(base, n);
-        SdfInstructionData data = sdfInstructionData(entry.x);
+        SdfInstructionData data = sdfInstructionData(SDF_ENTRY_INDEX(entry));
         uvec4 head = data.head; // opcode, kind, material, id
         uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
@@ -294,10 +299,9 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
         else if (op == SDF_OPCODE_COMBINE) {
             SDF_SURFACE_COMBINE(head.y, data.a0)
         }
-#elif SDF_HAS_COMBINE // (the entry's second word)
-        if (entry.y != SDF_NO_FUSED_COMBINE) {
-            SDF_SURFACE_COMBINE(entry.y >> SDF_FUSED_INDEX_BITS,
-                                sdfInstructionParams(SDF_FUSED_INDEX(entry.y), 0))
+#elif SDF_HAS_COMBINE // (the entry's combine)
+        if (SDF_ENTRY_COMBINE(entry) != 0u) {
+            SDF_SURFACE_COMBINE(SDF_ENTRY_OP(entry), SDF_ENTRY_PARAMS(entry))
         }
 #endif
     }

@@ -142,7 +142,7 @@ int expectCellsAgree(const Compiled& c, const SdfCellGrid& grid, std::mt19937& r
     for (int s = 0; s < 10 * samples && checked < samples; ++s) {
         const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
         const SdfCellRange range = sdfCellRange(grid, p);
-        const std::vector<std::uint32_t> list = sdfCellProgram(grid, p);
+        const std::vector<GpuSdfInstruction> list = sdfCellProgram(grid, p);
         const float edge = grid.size / float(1 << (2 * range.level));
         const float whole = sdfDistance(c.program, p);
         if (std::abs(whole) > edge && s % 10 != 0) continue;
@@ -252,7 +252,7 @@ TEST(CellPruning, DeepSmoothTreesDropWhatIsAboveItsThreshold) {
         meanLength += grid.stats.meanLength / double(c->program.instructions.size()) / kTrees;
         for (int i = 0; i < 3000; ++i) {
             const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
-            const std::vector<std::uint32_t> list = sdfCellProgram(grid, p);
+            const std::vector<GpuSdfInstruction> list = sdfCellProgram(grid, p);
             const float whole = sdfDistance(c->program, p);
             ASSERT_NEAR(sdfCellsDistance(c->program, grid, p), whole,
                         1e-5f * (1.0f + std::abs(whole)))
@@ -763,12 +763,12 @@ TEST(CellPruning, TheRootsPlanesAreInNoList) {
     SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf), options, &state);
     ASSERT_GT(grid.levels, 0);
     ASSERT_EQ(grid.planes.size(), std::size_t(kSdfCellPlanes));
-    const auto isPlane = [&](std::uint32_t i) {
-        return SdfOpcode(grid.code[i].opcode) == SdfOpcode::Shape &&
-               PrimitiveId(grid.code[i].kind) == PrimitiveId::Plane;
+    const auto isPlane = [&](const GpuSdfInstruction& in) {
+        return SdfOpcode(in.opcode) == SdfOpcode::Shape &&
+               PrimitiveId(in.kind) == PrimitiveId::Plane;
     };
     for (const SdfCellPlane& plane : grid.planes)
-        ASSERT_TRUE(isPlane(plane.instruction));
+        ASSERT_TRUE(isPlane(grid.code[plane.instruction]));
     // The shader reads as many of the header's planes as the map's SDF_CELLS_PLANES says: every
     // plane the grid holds, whatever the program (seven plane instructions here: four), and none
     // in a program without one.
@@ -794,19 +794,20 @@ TEST(CellPruning, TheRootsPlanesAreInNoList) {
     ASSERT_EQ(floorGrid.planes.size(), 1u);
     EXPECT_EQ(planesRead(floorOnly->program), 1);
     EXPECT_EQ(planesRead(noPlane->program), 0);
-    // Every list word that is a plane is one of the two the grid does not hold.
-    const auto gridPlane = [&](std::uint32_t i) {
-        return std::any_of(grid.planes.begin(), grid.planes.end(),
-                           [&](const SdfCellPlane& plane) { return plane.instruction == i; });
+    // Every plane a list runs is one of the two the grid does not hold.
+    const auto gridPlane = [&](const GpuSdfInstruction& in) {
+        return std::any_of(grid.planes.begin(), grid.planes.end(), [&](const SdfCellPlane& plane) {
+            return std::memcmp(&grid.code[plane.instruction], &in, sizeof in) == 0;
+        });
     };
     std::mt19937 rng(21);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     int listedPlanes = 0;
     for (int n = 0; n < 3000; ++n) {
         const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
-        for (std::uint32_t i : sdfCellProgram(grid, p)) {
-            ASSERT_FALSE(gridPlane(i));
-            listedPlanes += isPlane(i);
+        for (const GpuSdfInstruction& in : sdfCellProgram(grid, p)) {
+            ASSERT_FALSE(gridPlane(in));
+            listedPlanes += isPlane(in);
         }
     }
     EXPECT_GT(listedPlanes, 0) << "the subtracted plane and the fifth stay in the lists";
@@ -858,14 +859,15 @@ TEST(CellPruning, APlaneFirstOfEqualOnesKeepsItsSurface) {
     EXPECT_EQ(expectCellsAgree(*c, grid, rng, 1000, "equal planes"), 1000);
 }
 
-// A postfix list in pairs (SdfListReading::PostfixPairs) is the same program: read back it is the
-// list, and run it gives the list's value; every combine is an entry's second word, fused with
-// the instruction before it wherever that one has none (the fewest entries), and where the list
-// has a BoundSkip (whose skips count entries) every combine has an entry of its own.
+// A postfix list in pairs (SdfListReading::PostfixPairs) is the same program: the instructions
+// it runs are the list's (its combines' operation, curve and smoothness held in the entries), and
+// it gives the list's value. Every combine is in an entry, in that of the instruction before it
+// wherever that one has none (the fewest entries); where the list has a BoundSkip (whose skips
+// count entries) every combine has an entry of its own.
 TEST(CellPruning, AListInPairsIsItsPostfixProgram) {
     RandomTree random{std::mt19937(20261207)};
     std::uniform_real_distribution<float> u(-2.0f, 2.0f);
-    int fused = 0, alone = 0;
+    int fused = 0, alone = 0, circular = 0;
     for (int t = 0; t < 40; ++t) {
         const std::string sdf = random.group(3);
         const bool bounded = t % 2 == 1;
@@ -875,38 +877,42 @@ TEST(CellPruning, AListInPairsIsItsPostfixProgram) {
         const std::vector<GpuSdfInstruction>& code = c->program.instructions;
         std::vector<std::uint32_t> list(code.size());
         std::iota(list.begin(), list.end(), 0u);
-        const auto isCombine = [&](std::uint32_t i) {
-            return SdfOpcode(code[i].opcode) == SdfOpcode::Combine;
+        const auto isCombine = [&](const GpuSdfInstruction& in) {
+            return SdfOpcode(in.opcode) == SdfOpcode::Combine;
         };
-        const bool skips = std::any_of(list.begin(), list.end(), [&](std::uint32_t i) {
-            return SdfOpcode(code[i].opcode) == SdfOpcode::BoundSkip;
+        const bool skips = std::any_of(code.begin(), code.end(), [&](const GpuSdfInstruction& in) {
+            return SdfOpcode(in.opcode) == SdfOpcode::BoundSkip;
         });
         std::vector<std::uint32_t> pairs{7u}; // (appended after what is there)
         sdfPairList(code, list, pairs);
         pairs.erase(pairs.begin());
         ASSERT_EQ(pairs.size() % 2, 0u);
-        std::vector<std::uint32_t> back;
-        sdfListInstructions(code, pairs, SdfListReading::PostfixPairs, back);
-        ASSERT_EQ(back, list) << sdf;
-        const std::size_t entries = pairs.size() / 2;
-        std::size_t combines = 0;
-        for (std::size_t n = 0; n < entries; ++n) {
-            const std::uint32_t first = pairs[2 * n], second = pairs[2 * n + 1];
-            if (second != kSdfNoFusedCombine) {
-                const std::uint32_t i = sdfFusedIndex(second);
-                ASSERT_TRUE(isCombine(i)) << sdf;
-                ASSERT_EQ(second >> kSdfFusedIndexBits, code[i].kind) << sdf;
-                ++combines;
-                (isCombine(first) ? alone : fused) += 1;
+        std::vector<GpuSdfInstruction> run;
+        sdfListProgram(code, pairs, SdfListReading::PostfixPairs, run);
+        ASSERT_EQ(run.size(), code.size()) << sdf;
+        for (std::size_t n = 0; n < code.size(); ++n) {
+            if (!isCombine(code[n])) {
+                ASSERT_EQ(std::memcmp(&run[n], &code[n], sizeof code[n]), 0) << sdf << " " << n;
+                continue;
             }
-            if (isCombine(first)) { // its own entry: the one before it had a combine
-                ASSERT_EQ(sdfFusedIndex(second), first) << sdf;
+            ASSERT_TRUE(isCombine(run[n])) << sdf << " " << n;
+            ASSERT_EQ(run[n].kind, code[n].kind) << sdf << " " << n;
+            ASSERT_EQ(run[n].params[0].x, code[n].params[0].x) << sdf << " " << n;
+            ASSERT_EQ(run[n].params[0].y, code[n].params[0].y) << sdf << " " << n;
+            circular += code[n].params[0].y == 1.0f;
+        }
+        const std::size_t entries = pairs.size() / 2;
+        for (std::size_t n = 0; n < entries; ++n) {
+            const std::uint32_t i = sdfEntryIndex(pairs[2 * n]);
+            const bool combine = sdfEntryCombine(pairs[2 * n]) != 0;
+            if (combine) (isCombine(code[i]) ? alone : fused) += 1;
+            if (isCombine(code[i])) { // its own entry: the one before it had a combine
+                ASSERT_TRUE(combine) << sdf;
                 if (!skips) {
-                    ASSERT_TRUE(n > 0 && pairs[2 * n - 1] != kSdfNoFusedCombine) << sdf;
+                    ASSERT_TRUE(n > 0 && sdfEntryCombine(pairs[2 * n - 2]) != 0) << sdf;
                 }
             }
         }
-        EXPECT_EQ(combines, std::size_t(std::count_if(list.begin(), list.end(), isCombine)));
         if (skips) {
             EXPECT_EQ(entries, list.size()) << sdf;
         }
@@ -920,18 +926,19 @@ TEST(CellPruning, AListInPairsIsItsPostfixProgram) {
     }
     EXPECT_GT(fused, 100);
     EXPECT_GT(alone, 10);
-    // Two spheres and their blend: two entries, the blend fused with the second sphere.
+    EXPECT_GT(circular, 10);
+    // Two spheres and their blend: two entries, the blend in the second sphere's.
     const std::optional<Compiled> two = compileText(
-        R"({"op": "smooth_union", "smoothness": 0.2, "children": [{"shape": "sphere"},
-        {"shape": "sphere", "position": [1, 0, 0]}]})",
+        R"({"op": "smooth_union", "smoothness": 0.25, "blend": "circular", "children": [
+        {"shape": "sphere"}, {"shape": "sphere", "position": [1, 0, 0]}]})",
         false);
     ASSERT_TRUE(two);
     ASSERT_EQ(two->program.instructions.size(), 3u);
     std::vector<std::uint32_t> pairs;
     sdfPairList(two->program.instructions, std::vector<std::uint32_t>{0, 1, 2}, pairs);
-    EXPECT_EQ(pairs,
-              (std::vector<std::uint32_t>{0, kSdfNoFusedCombine, 1,
-                                          sdfFusedCombine(2, std::uint32_t(SdfOp::SmoothUnion))}));
+    const std::uint32_t smoothUnion = 1 + 2 * std::uint32_t(SdfOp::SmoothUnion) + 1;
+    EXPECT_EQ(pairs, (std::vector<std::uint32_t>{0, 0, 1 | smoothUnion << kSdfEntryIndexBits,
+                                                 0x3e800000u /* 0.25f */}));
 }
 
 // A union of shapes, with or without its bounding hierarchy, lists only the shapes each cell
@@ -996,8 +1003,8 @@ TEST(CellPruning, AUnionOfShapesListsOnlyShapes) {
     const SdfCellGrid grid = buildSdfCells(c->program, sdfContentBox(*c->scene.sdf));
     EXPECT_EQ(grid.reading, SdfListReading::PostfixPairs);
     bool combines = false;
-    for (std::uint32_t i : sdfCellProgram(grid, glm::vec3(1.1f, 0.0f, 0.0f)))
-        combines = combines || SdfOpcode(grid.code[i].opcode) == SdfOpcode::Combine;
+    for (const GpuSdfInstruction& in : sdfCellProgram(grid, glm::vec3(1.1f, 0.0f, 0.0f)))
+        combines = combines || SdfOpcode(in.opcode) == SdfOpcode::Combine;
     EXPECT_TRUE(combines);
     EXPECT_EQ(expectCellsAgree(*c, grid, rng, 500, "smooth"), 500);
 }

@@ -230,9 +230,10 @@ SdfCellRange sdfCellRange(const SdfCellGrid& grid, glm::vec3 p);
 // the distance to what the outside list leaves out (outsideFloor); +infinity elsewhere. The
 // cells' value at p is the least of the two (common/sdf_cells.glsl, sdfCellDistance).
 float sdfCellOutsideFloor(const SdfCellGrid& grid, glm::vec3 p);
-// The words of the list of `r` (read as grid.reading), and the list's instructions at p.
+// The words of the list of `r` (read as grid.reading), and the instructions the list at p runs
+// (sdfListProgram).
 std::span<const std::uint32_t> sdfCellWords(const SdfCellGrid& grid, const SdfCellRange& r);
-std::vector<std::uint32_t> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
+std::vector<GpuSdfInstruction> sdfCellProgram(const SdfCellGrid& grid, glm::vec3 p);
 // The cells' field at p as the shader reads it (common/sdf_cells.glsl): the list of
 // sdfCellRange(grid, p), with the outside floor outside the grid, united with the grid's planes
 // (but for the program's floor, which the shader may take in a far cell instead of its

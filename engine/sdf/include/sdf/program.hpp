@@ -129,40 +129,39 @@ inline bool sdfIsLeastOfShapes(const SdfProgram& program) {
 // How a list of instruction indices (a cell's program, sdf/cell_pruning.hpp) is read:
 // - Postfix: a postfix program, one instruction a word;
 // - PostfixPairs: the same program in entries of two words, one step of the shader's loop each
-//   (sdfPairList): an instruction, then the combine that follows it (sdfFusedCombine). Every
-//   combine is in a second word: one that follows another has an entry of its own, whose first
-//   word is the combine itself and runs nothing;
+//   (sdfPairList): an instruction, then the combine that follows it, held whole in the entry
+//   (its operation, curve and smoothness: no read of its instruction). Every combine is in an
+//   entry that way; one that follows another has an entry of its own, whose instruction is the
+//   combine itself and runs nothing there;
 // - LeastOfShapes: the least of its shapes and profiles, where unions and Accumulate do nothing
 //   (the cells of a least-of-shapes program leave their unions out of their lists).
 // BoundSkip and SeedBest do what they do in a program either way (a BoundSkip skips entries:
-// a list that has one fuses nothing).
+// a list that has one gives each combine an entry of its own).
 enum class SdfListReading { Postfix, PostfixPairs, LeastOfShapes };
 
-// An entry's second word (PostfixPairs): kSdfNoFusedCombine, or the index of the combine that
-// follows the entry's instruction, with its SdfOp in the top byte (the shader reads the kind
-// without the instruction's head). Indices stay below 2^24 (core/limits.hpp).
-constexpr std::uint32_t kSdfNoFusedCombine = 0xffffffffu;
-constexpr std::uint32_t kSdfFusedIndexBits = 24;
-inline std::uint32_t sdfFusedCombine(std::uint32_t index, std::uint32_t kind) {
-    return index | kind << kSdfFusedIndexBits;
+// An entry in pairs: word 0 the instruction's index (bits below kSdfEntryIndexBits; indices stay
+// below 2^24, core/limits.hpp) and the combine after it in the bits above (sdfEntryCombine: 0
+// none, else 1 + 2 SdfOp + SmoothBlend); word 1 the combine's smoothness (float bits; 0 for none).
+constexpr std::uint32_t kSdfEntryIndexBits = 24;
+inline std::uint32_t sdfEntryIndex(std::uint32_t word) {
+    return word & ((1u << kSdfEntryIndexBits) - 1u);
 }
-inline std::uint32_t sdfFusedIndex(std::uint32_t word) {
-    return word & ((1u << kSdfFusedIndexBits) - 1u);
+inline std::uint32_t sdfEntryCombine(std::uint32_t word) {
+    return word >> kSdfEntryIndexBits;
 }
 // The words of a list of `entries` entries read as `reading`.
 inline std::size_t sdfListWords(std::size_t entries, SdfListReading reading) {
     return reading == SdfListReading::PostfixPairs ? 2 * entries : entries;
 }
 // `list` (a postfix list of `code`'s instructions) in entries of two words, appended to `out`:
-// each combine fused with the instruction before it unless that one has a combine already
-// (which leaves the fewest entries). In a list with a BoundSkip, whose skips count entries, every
-// combine has an entry of its own.
+// each combine in the entry of the instruction before it unless that one has a combine already
+// (which leaves the fewest entries).
 void sdfPairList(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> list,
                  std::vector<std::uint32_t>& out);
-// The instructions of `words` (a list of `code`'s read as `reading`), in order, appended to
-// `out`.
-void sdfListInstructions(std::span<const GpuSdfInstruction> code,
-                         std::span<const std::uint32_t> words, SdfListReading reading,
-                         std::vector<std::uint32_t>& out);
+// The instructions `words` (a list of `code`'s read as `reading`) run, in order, appended to
+// `out`: a combine in pairs as its entry holds it (its opcode, kind and params[0]; the rest of it
+// zero).
+void sdfListProgram(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> words,
+                    SdfListReading reading, std::vector<GpuSdfInstruction>& out);
 
 } // namespace rmsc
