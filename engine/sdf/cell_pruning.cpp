@@ -1031,7 +1031,7 @@ std::uint64_t hashList(std::span<const std::uint32_t> list) {
 // `list` in words, read as grid.reading.
 void appendOutsideList(SdfCellGrid& grid, std::span<const std::uint32_t> list) {
     grid.outsideOffset = std::uint32_t(grid.words.size());
-    grid.outsideLength = std::uint32_t(list.size() / sdfListWords(1, grid.reading));
+    grid.outsideLength = std::uint32_t(sdfListEntries(list.size(), grid.reading));
     grid.words.insert(grid.words.end(), list.begin(), list.end());
 }
 
@@ -1175,7 +1175,7 @@ struct SdfCellState {
     SdfListReading reading() const {
         return leastOfShapes ? SdfListReading::LeastOfShapes : SdfListReading::PostfixPairs;
     }
-    std::vector<std::uint32_t> shapesScratch; // setLeafCell's list without its unions, or paired
+    std::vector<std::uint32_t> storedScratch; // setLeafCell's list as stored (s.reading())
     int levels = 0;
     glm::vec3 origin{0.0f};
     float size = 0.0f;
@@ -1358,20 +1358,20 @@ std::uint32_t storeList(SdfCellState& s, std::span<const std::uint32_t> list) {
 void setLeafCell(SdfCellState& s, std::uint32_t k, const CellResult& r) {
     withoutPlanes(s, r.list, s.listScratch, s.stackScratch);
     std::span<const std::uint32_t> list = s.listScratch;
-    s.shapesScratch.clear();
+    s.storedScratch.clear();
     if (s.leastOfShapes) { // the running minimum needs no unions, nor a stack
         for (std::uint32_t i : list)
-            if (neededByLeastOfShapes(s.code[i])) s.shapesScratch.push_back(i);
+            if (neededByLeastOfShapes(s.code[i])) s.storedScratch.push_back(i);
     } else {
         if (stackDepth(s.code, list) > kSdfMaxStack) s.tooDeep = true;
-        sdfPairList(s.code, list, s.shapesScratch);
+        sdfPairList(s.code, list, s.storedScratch);
     }
-    list = s.shapesScratch;
+    list = s.storedScratch;
     s.entries[2 * k] = storeList(s, list);
     // Affine when its program is one plane: a constant, a plane the lists hold, or one of the
     // grid's planes (then the list is empty).
     s.entries[2 * k + 1] =
-        std::uint32_t(s.leastOfShapes ? list.size() : list.size() / 2) |
+        std::uint32_t(sdfListEntries(list.size(), s.reading())) |
         (isOnePlane(s.code, r.list.data(), std::uint32_t(r.list.size())) ? kSdfCellAffine : 0u);
     s.cellLeaves[k] = std::uint32_t(r.leaves);
     markBlockChanged(s, k / 64);
@@ -1756,13 +1756,9 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
             if (word & kSdfCellAffine) ++stats.affineCells;
             ++stats.leafCells;
             stats.length += long(length);
-            stats.instructions += long(length);
-            if (!s.leastOfShapes) // (the combines of the second words, less the placeholders)
-                for (std::uint32_t n = 0; n < length; ++n)
-                    stats.instructions +=
-                        long(sdfEntryCombine(s.lists[e + 2 * n]) != 0) -
-                        long(SdfOpcode(s.code[sdfEntryIndex(s.lists[e + 2 * n])].opcode) ==
-                             SdfOpcode::Combine);
+            stats.instructions += long(sdfListInstructionCount(
+                s.code, std::span(s.lists).subspan(e, sdfListWords(length, s.reading())),
+                s.reading()));
             stats.leaves += long(s.cellLeaves[k]);
             stats.maxLength = std::max(stats.maxLength, int(length));
         }

@@ -84,4 +84,14 @@ void sdfListProgram(std::span<const GpuSdfInstruction> code, std::span<const std
     }
 }
 
+std::size_t sdfListInstructionCount(std::span<const GpuSdfInstruction> code,
+                                    std::span<const std::uint32_t> words, SdfListReading reading) {
+    if (reading != SdfListReading::PostfixPairs) return words.size();
+    std::size_t count = 0;
+    for (std::size_t n = 0; n + 1 < words.size(); n += 2)
+        count += std::size_t(!isCombine(code[sdfEntryIndex(words[n])])) +
+                 std::size_t(sdfEntryCombine(words[n]) != 0);
+    return count;
+}
+
 } // namespace rmsc

@@ -149,9 +149,12 @@ inline std::uint32_t sdfEntryIndex(std::uint32_t word) {
 inline std::uint32_t sdfEntryCombine(std::uint32_t word) {
     return word >> kSdfEntryIndexBits;
 }
-// The words of a list of `entries` entries read as `reading`.
+// The words of a list of `entries` entries read as `reading`, and the entries of `words` words.
 inline std::size_t sdfListWords(std::size_t entries, SdfListReading reading) {
     return reading == SdfListReading::PostfixPairs ? 2 * entries : entries;
+}
+inline std::size_t sdfListEntries(std::size_t words, SdfListReading reading) {
+    return reading == SdfListReading::PostfixPairs ? words / 2 : words;
 }
 // `list` (a postfix list of `code`'s instructions) in entries of two words, appended to `out`:
 // each combine in the entry of the instruction before it unless that one has a combine already
@@ -163,5 +166,8 @@ void sdfPairList(std::span<const GpuSdfInstruction> code, std::span<const std::u
 // zero).
 void sdfListProgram(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> words,
                     SdfListReading reading, std::vector<GpuSdfInstruction>& out);
+// How many instructions that is (without making them).
+std::size_t sdfListInstructionCount(std::span<const GpuSdfInstruction> code,
+                                    std::span<const std::uint32_t> words, SdfListReading reading);
 
 } // namespace rmsc
