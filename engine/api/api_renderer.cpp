@@ -250,7 +250,8 @@ struct Renderer::Impl {
                            prepared.lights.empty() ? prepared.scene.lights : prepared.lights);
             uploaded.hostLit = false;
         }
-        const bool ready = renderer->hasPrograms(found->second.gpu.sdfMap);
+        const bool ready =
+            renderer->hasPrograms(found->second.gpu.shading, found->second.gpu.sdfMap);
         std::string error;
         if (!renderer->prepare(found->second.gpu, error))
             throw Error(ErrorKind::Context,

@@ -14,6 +14,15 @@
 namespace rmsc {
 namespace {
 
+// Does any material have a texture (drawn on SDF surfaces: SHADING_SDF_TEXTURES)?
+bool hasSdfTextures(const std::vector<Material>& materials) {
+    for (const Material& m : materials)
+        if (m.baseColorTexture.present() || m.normalTexture.present() ||
+            m.roughnessTexture.present())
+            return true;
+    return false;
+}
+
 // A buffer holding `header` followed by `items` (std430: the header is 16 bytes).
 template <class Header, class Item>
 gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& items) {
@@ -134,6 +143,8 @@ bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellG
     glNamedBufferSubData(gpu.materialBuffer.id(), 0,
                          GLsizeiptr(materials.size() * sizeof(GpuMaterial)), materials.data());
     gpu.materials = prepared.materials;
+    gpu.sdfTextures = hasSdfTextures(prepared.materials);
+    gpu.shading = sceneShading(prepared);
     setSceneLights(gpu, prepared, prepared.lights.empty() ? scene.lights : prepared.lights);
     gpu.environment = scene.environment;
     gpu.sdf = prepared.sdf;
@@ -190,6 +201,10 @@ void setSceneLights(GpuScene& gpu, const PreparedScene& prepared,
     gpu.shadowSlopeBias = shadows.slopeBias;
 }
 
+std::string sceneShading(const PreparedScene& prepared) {
+    return shadingDefines(shadingCode(prepared.scene.render, hasSdfTextures(prepared.materials)));
+}
+
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const SdfCellGrid* cells,
                      const SdfProgram* sdf) {
     const SdfProgram& drawn = sdf ? *sdf : prepared.sdf;
@@ -209,6 +224,8 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
         gpu.instances.push_back(instance);
     }
     gpu.materials = prepared.materials;
+    gpu.sdfTextures = hasSdfTextures(prepared.materials);
+    gpu.shading = sceneShading(prepared);
 
     // The program buffer holds the scene's instructions, then each shell's; the data buffer the
     // same, with the shells' profile instructions pointing at their data's new place.

@@ -60,19 +60,24 @@ std::optional<Renderer> Renderer::create(ShaderFiles files, std::string& error) 
 
 namespace {
 
-// The key of a shell's programs: they include the scene's map and the shell's.
-std::string shellKey(const GpuScene& scene, const GpuShell& shell) {
-    return scene.sdfMap + '\0' + shell.map;
+// The key of a shell's programs: they include the shading code, the scene's map and the
+// shell's.
+std::string shellKey(const std::string& shading, const GpuScene& scene, const GpuShell& shell) {
+    return sdfProgramsKey(shading, scene.sdfMap) + '\0' + shell.map;
 }
 
 } // namespace
+
+std::string sdfProgramsKey(const std::string& shading, const std::string& sdfMap) {
+    return shading + '\0' + sdfMap;
+}
 
 void Renderer::forgetScenePrograms() {
     sdfPasses_.clear();
     shellPasses_.clear();
 }
 
-bool Renderer::prepare(const GpuScene& scene, std::string& error) {
+bool Renderer::prepare(const GpuScene& scene, const std::string& shading, std::string& error) {
     lastCompileMs_ = 0.0;
     const auto start = std::chrono::steady_clock::now();
     bool compiled = false;
@@ -81,7 +86,9 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
     constexpr std::size_t kMaxCached = 16;
     ShaderFiles files = files_;
     files.files["generated/sdf_map.glsl"] = scene.sdfMap;
-    if (!sdfPasses_.contains(scene.sdfMap)) {
+    files.files["generated/shading.glsl"] = shading;
+    const std::string key = sdfProgramsKey(shading, scene.sdfMap);
+    if (!sdfPasses_.contains(key)) {
         std::optional<RasterPass> raster = RasterPass::create(files, error);
         if (!raster) return false;
         std::optional<ConePass> cone = ConePass::create(files, error);
@@ -92,11 +99,11 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
             sdfPasses_.erase(std::min_element(
                 sdfPasses_.begin(), sdfPasses_.end(),
                 [](const auto& a, const auto& b) { return a.second.lastUse < b.second.lastUse; }));
-        sdfPasses_.emplace(scene.sdfMap, SdfPasses{std::move(*raster), std::move(*cone),
-                                                   std::move(*march), std::nullopt, std::nullopt});
+        sdfPasses_.emplace(key, SdfPasses{std::move(*raster), std::move(*cone), std::move(*march),
+                                          std::nullopt, std::nullopt});
         compiled = true;
     }
-    SdfPasses& passes = sdfPasses_.find(scene.sdfMap)->second;
+    SdfPasses& passes = sdfPasses_.find(key)->second;
     passes.lastUse = ++useClock_;
     if (countEvaluations_ && !passes.countingMarch) {
         passes.countingCone = ConePass::create(files, error, true);
@@ -106,15 +113,16 @@ bool Renderer::prepare(const GpuScene& scene, std::string& error) {
         compiled = true;
     }
     for (const GpuShell& shell : scene.shells) {
-        std::string key = shellKey(scene, shell);
-        if (const auto found = shellPasses_.find(key); found != shellPasses_.end()) {
+        std::string shellProgramsKey = shellKey(shading, scene, shell);
+        if (const auto found = shellPasses_.find(shellProgramsKey); found != shellPasses_.end()) {
             found->second.lastUse = useClock_;
             continue;
         }
         files.files["generated/shell_map.glsl"] = shell.map;
         std::optional<ShellPass> pass = ShellPass::create(files, error);
         if (!pass) return false;
-        shellPasses_.emplace(std::move(key), CachedShellPass{std::move(*pass), useClock_});
+        shellPasses_.emplace(std::move(shellProgramsKey),
+                             CachedShellPass{std::move(*pass), useClock_});
         compiled = true;
     }
     // Past the cache's size, drop the least recently used shell programs, never one this scene
@@ -152,8 +160,10 @@ const SdfPasses& Renderer::beginFrame(const GpuScene& scene, const FrameCamera& 
                                       int width, int height, std::vector<const ShellPass*>& shells,
                                       bool drawShadowMaps) {
     std::string error;
-    if (!prepare(scene, error)) throw std::runtime_error("the SDF shaders do not build: " + error);
-    const SdfPasses& sdf = sdfPasses_.find(scene.sdfMap)->second;
+    const std::string shading = shadingDefines(shadingCode(settings, scene.sdfTextures));
+    if (!prepare(scene, shading, error))
+        throw std::runtime_error("the SDF shaders do not build: " + error);
+    const SdfPasses& sdf = sdfPasses_.find(sdfProgramsKey(shading, scene.sdfMap))->second;
     GpuFrame frame = packFrame(frameCamera, settings, width, height);
     packEnvironment(scene.environment, scene.skyLevels, frame);
     frame.shadowMap.x = settings.shadows.enabled ? float(scene.shadowMapSize) : 0.0f;
@@ -164,7 +174,7 @@ const SdfPasses& Renderer::beginFrame(const GpuScene& scene, const FrameCamera& 
     scene.bindBuffers();
 
     for (const GpuShell& shell : scene.shells) {
-        const auto found = shellPasses_.find(shellKey(scene, shell));
+        const auto found = shellPasses_.find(shellKey(shading, scene, shell));
         if (found == shellPasses_.end()) throw std::logic_error("a shell's programs are missing");
         shells.push_back(&found->second.pass);
     }

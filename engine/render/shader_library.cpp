@@ -4,6 +4,7 @@
 #include "core/embedded.hpp"
 #include "render/cone_pass.hpp"
 #include "render/gpu_layout.hpp"
+#include "render/shading_code.hpp"
 #include "scene/material_textures.hpp"
 #include "sdf/primitives.hpp"
 
@@ -61,6 +62,8 @@ ShaderFiles embeddedShaderFiles() {
     shaderFiles.files.emplace("generated/sdf_map.glsl",
                               "#include \"generated/primitives.glsl\"\n"
                               "#include \"common/sdf_interpreter.glsl\"\n");
+    // Until a scene supplies its own: every optional part of the shading code.
+    shaderFiles.files.emplace("generated/shading.glsl", shadingDefines(ShadingCode{}));
     return shaderFiles;
 }
 

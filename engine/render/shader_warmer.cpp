@@ -50,10 +50,13 @@ void ShaderWarmer::request(std::shared_ptr<const PreparedScene> scene,
     {
         std::lock_guard lock(mutex_);
         if (stopping_) return;
+        const std::string shading = sceneShading(*scene);
         std::deque<std::string> wanted;
-        for (const std::string& map : sdfMaps)
-            if (!warm_.contains(map) && !failed_.contains(map) && building_ != map)
+        for (const std::string& map : sdfMaps) {
+            const std::string key = sdfProgramsKey(shading, map);
+            if (!warm_.contains(key) && !failed_.contains(key) && building_ != key)
                 wanted.push_back(map);
+        }
         if (pending_ && pending_->sdfMaps == wanted) return; // the scene too: same structure
         // A new request: the map being built counts in, as it finishes first.
         progressDone_ = 0;
@@ -66,9 +69,9 @@ void ShaderWarmer::request(std::shared_ptr<const PreparedScene> scene,
     changed_.notify_all();
 }
 
-bool ShaderWarmer::isWarm(const std::string& sdfMap) const {
+bool ShaderWarmer::isWarm(const std::string& shading, const std::string& sdfMap) const {
     std::lock_guard lock(mutex_);
-    return warm_.contains(sdfMap);
+    return warm_.contains(sdfProgramsKey(shading, sdfMap));
 }
 
 bool ShaderWarmer::idle() const {
@@ -101,9 +104,9 @@ ShaderWarmer::Progress ShaderWarmer::progress() const {
     return {std::min(progressDone_, progressTotal_), progressTotal_, seconds};
 }
 
-double ShaderWarmer::buildMs(const std::string& sdfMap) const {
+double ShaderWarmer::buildMs(const std::string& shading, const std::string& sdfMap) const {
     std::lock_guard lock(mutex_);
-    const auto found = warm_.find(sdfMap);
+    const auto found = warm_.find(sdfProgramsKey(shading, sdfMap));
     return found == warm_.end() ? 0.0 : found->second;
 }
 
@@ -131,6 +134,7 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
     for (;;) {
         std::shared_ptr<const PreparedScene> scene;
         std::string sdfMap;
+        std::string key; // sdfProgramsKey
         {
             std::unique_lock lock(mutex_);
             changed_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
@@ -139,7 +143,8 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
             pending_->sdfMaps.pop_front();
             scene = pending_->scene;
             if (pending_->sdfMaps.empty()) pending_.reset();
-            building_ = sdfMap;
+            key = sdfProgramsKey(sceneShading(*scene), sdfMap);
+            building_ = key;
             buildStart_ = std::chrono::steady_clock::now();
         }
         const auto start = std::chrono::steady_clock::now();
@@ -168,10 +173,10 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
             std::lock_guard lock(mutex_);
             if (failure.empty()) {
                 if (warm_.size() >= kMaxRemembered) warm_.clear();
-                warm_[sdfMap] = ms;
+                warm_[key] = ms;
             } else {
                 if (failed_.size() >= kMaxRemembered) failed_.clear();
-                failed_.insert(sdfMap);
+                failed_.insert(key);
                 error_ = "a background shader build failed: " + failure;
             }
             ++finished_;

@@ -34,9 +34,10 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
     // interpreter would take seconds a frame on such a scene).
     const bool cellsPending = cellsRequested_ == uploadedRevision_ &&
                               (cellGridRevision_ != uploadedRevision_ || !cellGrid_);
-    auto isReady = [this, first, cellsPending](const std::string& map) {
-        return !cellsPending &&
-               (!warmer_ || first || renderer_->hasPrograms(map) || warmer_->isWarm(map));
+    const std::string shading = sceneShading(*prepared_); // what its frames are shaded with
+    auto isReady = [this, first, cellsPending, &shading](const std::string& map) {
+        return !cellsPending && (!warmer_ || first || renderer_->hasPrograms(shading, map) ||
+                                 warmer_->isWarm(shading, map));
     };
     const SdfCellLoop cellLoop =
         cellGrid_ ? sdfCellLoop(sdfLongestCellList(*cellGrid_)) : SdfCellLoop::TwoPerIteration;
@@ -98,14 +99,14 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
     }
     if (sameMap) return;
     const std::string name(editor::editingMapName(maps.kind));
-    const bool background = warmer_ && warmer_->isWarm(maps.draw);
+    const bool background = warmer_ && warmer_->isWarm(shading, maps.draw);
     if (!background && compileMs > 0.0)
         std::fprintf(stderr, "rmsc view: frame %d: built the %s map's shaders in %.0f ms\n",
                      frameNumber, name.c_str(), compileMs);
     std::fprintf(stderr, "rmsc view: frame %d: drawing with the %s map (%s)\n", frameNumber,
                  name.c_str(),
                  background ? ("built in the background in " +
-                               std::to_string(int(warmer_->buildMs(maps.draw))) + " ms, " +
+                               std::to_string(int(warmer_->buildMs(shading, maps.draw))) + " ms, " +
                                std::to_string(int(compileMs)) + " ms to switch")
                                   .c_str()
                  : compileMs > 0 ? "built on the render thread"

@@ -3,8 +3,10 @@
 // microfacet specular with the height-correlated Smith visibility term and Schlick's Fresnel,
 // summed over the scene's lights (directional, point and spot as in glTF KHR_lights_punctual),
 // with shadows and ambient occlusion (common/shadows.glsl), sky ambient and fog
-// (common/sky.glsl).
+// (common/sky.glsl). Shadows and ambient occlusion are compiled only where the frame uses them
+// (generated/shading.glsl, render/shading_code.hpp).
 #include "common/frame.glsl"
+#include "generated/shading.glsl"
 #include "common/scene_buffers.glsl"
 #include "common/shadows.glsl"
 #include "common/sky.glsl"
@@ -93,8 +95,12 @@ vec3 lightContribution(SurfacePoint s, vec3 toEye, GpuLight light) {
     }
     if (attenuation <= 0.0 || dot(s.normal, toLight) <= 0.0) return vec3(0.0);
     vec3 irradiance = light.colorIntensity.rgb * light.colorIntensity.a * attenuation;
+#ifdef SHADING_SHADOWS
     float visibility = lightVisibility(light, s.position, s.normal, toLight, lightDistance);
     if (visibility <= 0.0) return vec3(0.0);
+#else
+    float visibility = 1.0;
+#endif
     return brdfDirect(s, toEye, toLight, irradiance * visibility);
 }
 
@@ -102,7 +108,11 @@ vec3 lightContribution(SurfacePoint s, vec3 toEye, GpuLight light) {
 vec3 shadeSurface(SurfacePoint s) {
     vec3 toEye = toViewer(s.position);
     vec3 color = s.emissive;
+#ifdef SHADING_AMBIENT_OCCLUSION
     float occlusion = s.occlusion * sdfAmbientOcclusion(s.position, s.normal);
+#else
+    float occlusion = s.occlusion;
+#endif
     vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
     if (hasSky()) {
         // Diffuse: the sky averaged around the normal; specular: the sky along the reflection,

@@ -53,8 +53,10 @@ void main() {
         s.roughness = surface.roughness;
         s.emissive = surface.emissive;
         s.occlusion = 1.0;
+#ifdef SHADING_SDF_TEXTURES // (generated/shading.glsl: the scene's materials have textures)
         if (materialHasTextures(surface.material))
             applySdfTextures(surface, p, t * forwardness, s);
+#endif
         outColor = vec4(shadeSurface(s), 1.0);
         countMarchedFragment(steps, 0); // after the shading: its evaluations count too
         outNormal = vec4(s.normal, float(steps)); // w: march steps (the steps AOV)

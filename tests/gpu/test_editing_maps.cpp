@@ -89,11 +89,11 @@ TEST(EditingMaps, ForgottenProgramsAreBuiltAgainAndDrawTheSame) {
     const GpuScene gpu = uploadScene(prepared, SdfStrategy::Baked);
     FrameTargets first = createFrameTargets(96, 64), again = createFrameTargets(96, 64);
     renderer->render(gpu, prepared.scene.camera, prepared.scene.render, first);
-    EXPECT_TRUE(renderer->hasPrograms(gpu.sdfMap));
+    EXPECT_TRUE(renderer->hasPrograms(gpu.shading, gpu.sdfMap));
     renderer->forgetScenePrograms();
-    EXPECT_FALSE(renderer->hasPrograms(gpu.sdfMap));
+    EXPECT_FALSE(renderer->hasPrograms(gpu.shading, gpu.sdfMap));
     renderer->render(gpu, prepared.scene.camera, prepared.scene.render, again);
-    EXPECT_TRUE(renderer->hasPrograms(gpu.sdfMap));
+    EXPECT_TRUE(renderer->hasPrograms(gpu.shading, gpu.sdfMap));
     EXPECT_GT(renderer->lastCompileMs(), 0.0) << "the map was not built again";
     expectNoGlErrors();
     EXPECT_TRUE(imagesMatch(readDisplayColor(again), readDisplayColor(first),
@@ -103,6 +103,7 @@ TEST(EditingMaps, ForgottenProgramsAreBuiltAgainAndDrawTheSame) {
 TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     sharedRenderer(); // the tests' context first: the warmer's is the second
     const PreparedScene prepared = openRepositoryScene("samples/bench/grid_10.json");
+    const std::string shading = sceneShading(prepared);
     auto mapFor = [&](std::uint32_t id) {
         return generateSdfMap(prepared.sdf, SdfStrategy::Baked, {}, SdfLiveRange{id, id});
     };
@@ -116,17 +117,28 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     warmer.waitUntilIdle();
     EXPECT_TRUE(warmer.idle());
     EXPECT_EQ(warmer.takeError(), "");
-    EXPECT_TRUE(warmer.isWarm(c)) << "the newest request is built";
-    EXPECT_FALSE(warmer.isWarm(a) && warmer.isWarm(b)) << "b replaced a, or c replaced b";
-    EXPECT_GT(warmer.buildMs(c), 0.0);
-    EXPECT_EQ(warmer.buildMs(c + "\n"), 0.0) << "not warm";
+    EXPECT_TRUE(warmer.isWarm(shading, c)) << "the newest request is built";
+    EXPECT_FALSE(warmer.isWarm(shading, a) && warmer.isWarm(shading, b))
+        << "b replaced a, or c replaced b";
+    EXPECT_GT(warmer.buildMs(shading, c), 0.0);
+    EXPECT_EQ(warmer.buildMs(shading, c + "\n"), 0.0) << "not warm";
+    // Programs are a map with the shading code of its scene's settings: the same map for a
+    // scene shaded otherwise is built again.
+    auto shaded = std::make_shared<PreparedScene>(prepared);
+    shaded->scene.render.shadows.enabled = !prepared.scene.render.shadows.enabled;
+    const std::string otherShading = sceneShading(*shaded);
+    EXPECT_NE(otherShading, shading);
+    EXPECT_FALSE(warmer.isWarm(otherShading, c));
+    warmer.request(shaded, {c});
+    warmer.waitUntilIdle();
+    EXPECT_TRUE(warmer.isWarm(otherShading, c) && warmer.isWarm(shading, c));
 
     // A request is a list built in order; maps already warm are skipped.
     const std::size_t finished = warmer.finishedCount();
     const std::string d = mapFor(kSdfIdBase + 4), e = mapFor(kSdfIdBase + 5);
     warmer.request(shared, {c, d, e});
     warmer.waitUntilIdle();
-    EXPECT_TRUE(warmer.isWarm(d) && warmer.isWarm(e));
+    EXPECT_TRUE(warmer.isWarm(shading, d) && warmer.isWarm(shading, e));
     EXPECT_EQ(warmer.finishedCount(), finished + 2) << "c was warm already";
 
     // The map the warmer built is one the tests' context builds and draws.
@@ -139,13 +151,13 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     const std::string broken = c + "\nthis is not GLSL\n";
     warmer.request(shared, {broken});
     warmer.waitUntilIdle();
-    EXPECT_FALSE(warmer.isWarm(broken));
+    EXPECT_FALSE(warmer.isWarm(shading, broken));
     EXPECT_NE(warmer.takeError().find("background shader build failed"), std::string::npos);
     warmer.request(shared, {broken});
     EXPECT_TRUE(warmer.idle()) << "a failed map is not asked for again";
     warmer.request(shared, {a});
     warmer.waitUntilIdle();
-    EXPECT_TRUE(warmer.isWarm(a));
+    EXPECT_TRUE(warmer.isWarm(shading, a));
     expectNoGlErrors();
 }
 
@@ -200,5 +212,5 @@ TEST(ShaderWarmer, WithoutAContextItSaysSoAndIgnoresRequests) {
     const std::string map = generateSdfMap(prepared.sdf, SdfStrategy::Baked);
     warmer.request(std::make_shared<const PreparedScene>(prepared), {map});
     EXPECT_TRUE(warmer.idle());
-    EXPECT_FALSE(warmer.isWarm(map));
+    EXPECT_FALSE(warmer.isWarm(sceneShading(prepared), map));
 }

@@ -7,6 +7,7 @@
 #include "render/gpu_layout.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/sdf_program_buffer.hpp"
+#include "render/shading_code.hpp"
 #include "sdf/cell_pruning.hpp"
 #include "sdf/glsl_codegen.hpp"
 
@@ -67,6 +68,10 @@ struct GpuScene {
     SdfProgram sdf;     // the scene's program (not the shells'), kept for the interpreter's first
                         // guess of the nearest part (sdfNearestLeaf, per frame)
     std::string sdfMap; // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
+    // What the shading code is built with (render/shading_code.hpp): whether any material has
+    // textures, and "generated/shading.glsl" for the scene's own settings (sceneShading).
+    bool sdfTextures = false;
+    std::string shading;
     std::vector<GpuShell> shells; // their instructions follow the scene's in sdfProgram
 
     // Lighting: the shadow-map views planned from the lights and the mesh bounds, the
@@ -88,6 +93,9 @@ struct GpuScene {
 // planned against the scene's meshes and shells. uploadScene gives the prepared scene's own;
 // a host may draw with its own (rmsc::api::Renderer::drawInto).
 void setSceneLights(GpuScene& gpu, const PreparedScene& prepared, const std::vector<Light>& lights);
+
+// "generated/shading.glsl" for a frame of `prepared` drawn with its own render settings.
+std::string sceneShading(const PreparedScene& prepared);
 
 // Under the Cells strategy the program is pruned here, unless `cells` gives the grid already
 // pruned for prepared.sdf (the viewer's, pruned again after an edit: sdf/cell_pruning.hpp).

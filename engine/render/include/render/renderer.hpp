@@ -73,18 +73,26 @@ struct SdfPasses {
     std::uint64_t lastUse = 0; // Renderer::useClock_ when last prepared
 };
 
+// The key of the programs built with shading code `shading` ("generated/shading.glsl",
+// render/shading_code.hpp) and SDF map `sdfMap` ("generated/sdf_map.glsl"): their texts.
+std::string sdfProgramsKey(const std::string& shading, const std::string& sdfMap);
+
 class Renderer {
   public:
     // Builds the passes that do not depend on the scene; the SDF passes are built per map.
     static std::optional<Renderer> create(ShaderFiles files, std::string& error);
 
-    // Makes the programs for the scene's SDF map ready: from the cache (keyed by the map's
-    // text, so scenes of one structure share them) or compiled now. False with the compile
-    // log in `error` when the shaders do not build.
-    bool prepare(const GpuScene& scene, std::string& error);
-    // Are the programs of this SDF map (GpuScene::sdfMap) built, so prepare() compiles nothing
-    // for it (shells aside)?
-    bool hasPrograms(const std::string& sdfMap) const { return sdfPasses_.contains(sdfMap); }
+    // Makes the programs for the scene's SDF map and its shading (GpuScene::shading) ready: from
+    // the cache (keyed by their text, sdfProgramsKey, so scenes of one structure share them) or
+    // compiled now. False with the compile log in `error` when the shaders do not build.
+    bool prepare(const GpuScene& scene, std::string& error) {
+        return prepare(scene, scene.shading, error);
+    }
+    // Are the programs of this shading code and SDF map (GpuScene::shading and sdfMap) built,
+    // so prepare() compiles nothing for them (shells aside)?
+    bool hasPrograms(const std::string& shading, const std::string& sdfMap) const {
+        return sdfPasses_.contains(sdfProgramsKey(shading, sdfMap));
+    }
     // Milliseconds the last prepare() spent compiling and linking (0 on a cache hit).
     double lastCompileMs() const { return lastCompileMs_; }
     // Deletes the programs built for SDF maps and shells (the driver's machine code with them);
@@ -119,6 +127,9 @@ class Renderer {
     void setGroundGrid(bool on) { groundGrid_ = on; }
 
   private:
+    // prepare() for the shading code `shading` ("generated/shading.glsl"): a frame's settings
+    // may ask for other code than the scene's own.
+    bool prepare(const GpuScene& scene, const std::string& shading, std::string& error);
     // What both kinds of frame do first: prepare, the frame UBO, the buffers and the shadow
     // pass. Returns the scene's SDF passes and its shells' passes.
     const SdfPasses& beginFrame(const GpuScene& scene, const FrameCamera& frameCamera,
@@ -128,7 +139,7 @@ class Renderer {
     void endFrame() const;
 
     ShaderFiles files_;
-    std::map<std::string, SdfPasses, std::less<>> sdfPasses_; // by map text
+    std::map<std::string, SdfPasses, std::less<>> sdfPasses_; // by sdfProgramsKey
     struct CachedShellPass {
         ShellPass pass;
         std::uint64_t lastUse = 0; // useClock_ when a scene last needed it

@@ -48,8 +48,9 @@ class ShaderWarmer {
     // The scene is shared, not copied: the caller's thread never waits for a copy of it.
     void request(std::shared_ptr<const PreparedScene> scene,
                  const std::vector<std::string>& sdfMaps);
-    // Has a request for this map finished building?
-    bool isWarm(const std::string& sdfMap) const;
+    // Has a request for this map with this shading code (a scene's sceneShading) finished
+    // building?
+    bool isWarm(const std::string& shading, const std::string& sdfMap) const;
     // How many maps have finished building (or failed) since the start: changes when there may be
     // a better map to draw.
     std::size_t finishedCount() const;
@@ -60,7 +61,7 @@ class ShaderWarmer {
     // Why the warmer stopped (no context, or a map that did not build), once; empty if it runs.
     std::string takeError();
     // Milliseconds a warm map took to build (0 when it is not warm).
-    double buildMs(const std::string& sdfMap) const;
+    double buildMs(const std::string& shading, const std::string& sdfMap) const;
 
     // How far the current request has come: the maps of it built (or failed) and how many it
     // has (the one being built when it was made counts in), and the seconds the map being built
@@ -82,8 +83,9 @@ class ShaderWarmer {
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;
     std::optional<Request> pending_;
-    std::string building_;               // the map being built, "" when none
-    std::map<std::string, double> warm_; // map, milliseconds its build took
+    // By sdfProgramsKey (render/renderer.hpp): a map with the shading code of its scene.
+    std::string building_;               // the programs being built, "" when none
+    std::map<std::string, double> warm_; // programs, milliseconds their build took
     std::set<std::string> failed_;
     std::string error_;
     std::size_t finished_ = 0;
