@@ -57,7 +57,8 @@ void ShaderWarmer::request(std::shared_ptr<const PreparedScene> scene,
             if (!warm_.contains(key) && !failed_.contains(key) && building_ != key)
                 wanted.push_back(map);
         }
-        if (pending_ && pending_->sdfMaps == wanted) return; // the scene too: same structure
+        if (pending_ && pending_->sdfMaps == wanted && sceneShading(*pending_->scene) == shading)
+            return; // the scene too: same structure, same shading
         // A new request: the map being built counts in, as it finishes first.
         progressDone_ = 0;
         progressTotal_ = int(wanted.size()) + (building_.empty() ? 0 : 1);
@@ -143,6 +144,8 @@ void ShaderWarmer::run(ContextBinder bindContext, ShaderFiles files) {
             pending_->sdfMaps.pop_front();
             scene = pending_->scene;
             if (pending_->sdfMaps.empty()) pending_.reset();
+            // (The frame below is shaded as the scene's own settings say: warmingSettings keeps
+            // what turns shading code on or off.)
             key = sdfProgramsKey(sceneShading(*scene), sdfMap);
             building_ = key;
             buildStart_ = std::chrono::steady_clock::now();
