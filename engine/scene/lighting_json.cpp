@@ -264,8 +264,17 @@ Json lightToJson(const Light& light) {
 }
 
 void writeRenderLighting(const RenderSettings& render, Json& renderObject) {
+    // Shadows or occlusion turned off keep their numbers in the file where those differ from
+    // the defaults ("enabled": false, "samples": 0), so turning them on again gives what they
+    // were.
     const ShadowSettings& s = render.shadows;
-    if (s.enabled) {
+    const ShadowSettings noShadows;
+    const bool shadowNumbers =
+        s.steps != noShadows.steps || s.softness != noShadows.softness ||
+        s.minDistance != noShadows.minDistance || s.maxDistance != noShadows.maxDistance ||
+        s.mapSize != noShadows.mapSize || s.pcfRadius != noShadows.pcfRadius ||
+        s.normalOffset != noShadows.normalOffset || s.slopeBias != noShadows.slopeBias;
+    if (s.enabled || shadowNumbers) {
         renderObject["shadows"] = {{"steps", s.steps},
                                    {"softness", floatToJson(s.softness)},
                                    {"min_distance", floatToJson(s.minDistance)},
@@ -274,8 +283,11 @@ void writeRenderLighting(const RenderSettings& render, Json& renderObject) {
                                    {"pcf_radius", s.pcfRadius},
                                    {"normal_offset", floatToJson(s.normalOffset)},
                                    {"slope_bias", floatToJson(s.slopeBias)}};
+        if (!s.enabled) renderObject["shadows"]["enabled"] = false;
     }
-    if (render.ao.samples > 0) {
+    const AoSettings noAo;
+    if (render.ao.samples > 0 || render.ao.distance != noAo.distance ||
+        render.ao.strength != noAo.strength) {
         renderObject["ao"] = {{"samples", render.ao.samples},
                               {"distance", floatToJson(render.ao.distance)},
                               {"strength", floatToJson(render.ao.strength)}};

@@ -158,6 +158,27 @@ TEST(LightingJson, BadEnvironmentsAreReported) {
                  ">= 0");
 }
 
+// Turned off in the editor, shadows and occlusion keep their numbers through a save: turned on
+// again, they are what the file had.
+TEST(LightingJson, SettingsTurnedOffKeepTheirNumbers) {
+    Scene scene = parseOk(R"({"version": 1, "render": {"shadows": {"steps": 48, "softness": 0.1},
+        "ao": {"samples": 5, "distance": 0.4, "strength": 0.8}}})");
+    scene.render.shadows.enabled = false;
+    scene.render.ao.samples = 0;
+    const std::string text = sceneToJson(scene);
+    const Scene again = parseOk(text);
+    EXPECT_FALSE(again.render.shadows.enabled) << text;
+    EXPECT_EQ(again.render.shadows.steps, 48);
+    EXPECT_FLOAT_EQ(again.render.shadows.softness, 0.1f);
+    EXPECT_EQ(again.render.ao.samples, 0) << text;
+    EXPECT_FLOAT_EQ(again.render.ao.distance, 0.4f);
+    EXPECT_FLOAT_EQ(again.render.ao.strength, 0.8f);
+    // Off with the default numbers: nothing is written for them.
+    const std::string plain = sceneToJson(parseOk(R"({"version": 1})"));
+    EXPECT_EQ(plain.find("shadows"), std::string::npos) << plain;
+    EXPECT_EQ(plain.find("\"ao\""), std::string::npos) << plain;
+}
+
 TEST(LightingJson, WrittenScenesReadBackTheSame) {
     const Scene scene = parseOk(R"({"version": 1,
         "render": {"shadows": {"steps": 40, "pcf_radius": 2}, "ao": {"samples": 3}, "fxaa": true},
