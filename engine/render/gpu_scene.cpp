@@ -143,7 +143,6 @@ bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellG
     glNamedBufferSubData(gpu.materialBuffer.id(), 0,
                          GLsizeiptr(materials.size() * sizeof(GpuMaterial)), materials.data());
     gpu.materials = prepared.materials;
-    gpu.sdfTextures = hasSdfTextures(prepared.materials);
     gpu.shading = sceneShading(prepared);
     setSceneLights(gpu, prepared, prepared.lights.empty() ? scene.lights : prepared.lights);
     gpu.environment = scene.environment;
@@ -201,8 +200,8 @@ void setSceneLights(GpuScene& gpu, const PreparedScene& prepared,
     gpu.shadowSlopeBias = shadows.slopeBias;
 }
 
-std::string sceneShading(const PreparedScene& prepared) {
-    return shadingDefines(shadingCode(prepared.scene.render, hasSdfTextures(prepared.materials)));
+ShadingCode sceneShading(const PreparedScene& prepared) {
+    return shadingCode(prepared.scene.render, hasSdfTextures(prepared.materials));
 }
 
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const SdfCellGrid* cells,
@@ -224,7 +223,6 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
         gpu.instances.push_back(instance);
     }
     gpu.materials = prepared.materials;
-    gpu.sdfTextures = hasSdfTextures(prepared.materials);
     gpu.shading = sceneShading(prepared);
 
     // The program buffer holds the scene's instructions, then each shell's; the data buffer the

@@ -62,14 +62,22 @@ namespace {
 
 // The key of a shell's programs: they include the shading code, the scene's map and the
 // shell's.
-std::string shellKey(const std::string& shading, const GpuScene& scene, const GpuShell& shell) {
+std::string shellKey(const ShadingCode& shading, const GpuScene& scene, const GpuShell& shell) {
     return sdfProgramsKey(shading, scene.sdfMap) + '\0' + shell.map;
 }
 
 } // namespace
 
-std::string sdfProgramsKey(const std::string& shading, const std::string& sdfMap) {
-    return shading + '\0' + sdfMap;
+std::string sdfProgramsKey(const ShadingCode& shading, const std::string& sdfMap) {
+    return shadingDefines(shading) + '\0' + sdfMap;
+}
+
+ShadingCode Renderer::drawnShading(const GpuScene& scene, const ShadingCode& needed) const {
+    if (sdfPasses_.contains(sdfProgramsKey(needed, scene.sdfMap))) return needed;
+    for (const auto& [key, passes] : sdfPasses_)
+        if (passes.shading.holds(needed) && key == sdfProgramsKey(passes.shading, scene.sdfMap))
+            return passes.shading;
+    return needed;
 }
 
 void Renderer::forgetScenePrograms() {
@@ -77,7 +85,7 @@ void Renderer::forgetScenePrograms() {
     shellPasses_.clear();
 }
 
-bool Renderer::prepare(const GpuScene& scene, const std::string& shading, std::string& error) {
+bool Renderer::prepare(const GpuScene& scene, const ShadingCode& shading, std::string& error) {
     lastCompileMs_ = 0.0;
     const auto start = std::chrono::steady_clock::now();
     bool compiled = false;
@@ -86,7 +94,7 @@ bool Renderer::prepare(const GpuScene& scene, const std::string& shading, std::s
     constexpr std::size_t kMaxCached = 16;
     ShaderFiles files = files_;
     files.files["generated/sdf_map.glsl"] = scene.sdfMap;
-    files.files["generated/shading.glsl"] = shading;
+    files.files["generated/shading.glsl"] = shadingDefines(shading);
     const std::string key = sdfProgramsKey(shading, scene.sdfMap);
     if (!sdfPasses_.contains(key)) {
         std::optional<RasterPass> raster = RasterPass::create(files, error);
@@ -99,8 +107,8 @@ bool Renderer::prepare(const GpuScene& scene, const std::string& shading, std::s
             sdfPasses_.erase(std::min_element(
                 sdfPasses_.begin(), sdfPasses_.end(),
                 [](const auto& a, const auto& b) { return a.second.lastUse < b.second.lastUse; }));
-        sdfPasses_.emplace(key, SdfPasses{std::move(*raster), std::move(*cone), std::move(*march),
-                                          std::nullopt, std::nullopt});
+        sdfPasses_.emplace(key, SdfPasses{shading, std::move(*raster), std::move(*cone),
+                                          std::move(*march), std::nullopt, std::nullopt});
         compiled = true;
     }
     SdfPasses& passes = sdfPasses_.find(key)->second;
@@ -160,7 +168,8 @@ const SdfPasses& Renderer::beginFrame(const GpuScene& scene, const FrameCamera& 
                                       int width, int height, std::vector<const ShellPass*>& shells,
                                       bool drawShadowMaps) {
     std::string error;
-    const std::string shading = shadingDefines(shadingCode(settings, scene.sdfTextures));
+    const ShadingCode shading =
+        drawnShading(scene, shadingCode(settings, scene.shading.sdfTextures));
     if (!prepare(scene, shading, error))
         throw std::runtime_error("the SDF shaders do not build: " + error);
     const SdfPasses& sdf = sdfPasses_.find(sdfProgramsKey(shading, scene.sdfMap))->second;

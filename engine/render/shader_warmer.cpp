@@ -50,7 +50,7 @@ void ShaderWarmer::request(std::shared_ptr<const PreparedScene> scene,
     {
         std::lock_guard lock(mutex_);
         if (stopping_) return;
-        const std::string shading = sceneShading(*scene);
+        const ShadingCode shading = sceneShading(*scene);
         std::deque<std::string> wanted;
         for (const std::string& map : sdfMaps) {
             const std::string key = sdfProgramsKey(shading, map);
@@ -70,7 +70,7 @@ void ShaderWarmer::request(std::shared_ptr<const PreparedScene> scene,
     changed_.notify_all();
 }
 
-bool ShaderWarmer::isWarm(const std::string& shading, const std::string& sdfMap) const {
+bool ShaderWarmer::isWarm(const ShadingCode& shading, const std::string& sdfMap) const {
     std::lock_guard lock(mutex_);
     return warm_.contains(sdfProgramsKey(shading, sdfMap));
 }
@@ -105,7 +105,7 @@ ShaderWarmer::Progress ShaderWarmer::progress() const {
     return {std::min(progressDone_, progressTotal_), progressTotal_, seconds};
 }
 
-double ShaderWarmer::buildMs(const std::string& shading, const std::string& sdfMap) const {
+double ShaderWarmer::buildMs(const ShadingCode& shading, const std::string& sdfMap) const {
     std::lock_guard lock(mutex_);
     const auto found = warm_.find(sdfProgramsKey(shading, sdfMap));
     return found == warm_.end() ? 0.0 : found->second;

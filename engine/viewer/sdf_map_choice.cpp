@@ -34,7 +34,7 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
     // interpreter would take seconds a frame on such a scene).
     const bool cellsPending = cellsRequested_ == uploadedRevision_ &&
                               (cellGridRevision_ != uploadedRevision_ || !cellGrid_);
-    const std::string shading = sceneShading(*prepared_); // what its frames are shaded with
+    const ShadingCode shading = sceneShading(*prepared_); // what its frames are shaded with
     auto isReady = [this, first, cellsPending, &shading](const std::string& map) {
         return !cellsPending && (!warmer_ || first || renderer_->hasPrograms(shading, map) ||
                                  warmer_->isWarm(shading, map));

@@ -103,7 +103,7 @@ TEST(EditingMaps, ForgottenProgramsAreBuiltAgainAndDrawTheSame) {
 TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     sharedRenderer(); // the tests' context first: the warmer's is the second
     const PreparedScene prepared = openRepositoryScene("samples/bench/grid_10.json");
-    const std::string shading = sceneShading(prepared);
+    const ShadingCode shading = sceneShading(prepared);
     auto mapFor = [&](std::uint32_t id) {
         return generateSdfMap(prepared.sdf, SdfStrategy::Baked, {}, SdfLiveRange{id, id});
     };
@@ -126,8 +126,8 @@ TEST(ShaderWarmer, BuildsTheNewestRequestAndReportsFailures) {
     // scene shaded otherwise is built again.
     auto shaded = std::make_shared<PreparedScene>(prepared);
     shaded->scene.render.shadows.enabled = !prepared.scene.render.shadows.enabled;
-    const std::string otherShading = sceneShading(*shaded);
-    EXPECT_NE(otherShading, shading);
+    const ShadingCode otherShading = sceneShading(*shaded);
+    EXPECT_FALSE(otherShading == shading);
     EXPECT_FALSE(warmer.isWarm(otherShading, c));
     warmer.request(shaded, {c});
     warmer.waitUntilIdle();

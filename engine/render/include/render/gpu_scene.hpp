@@ -68,10 +68,9 @@ struct GpuScene {
     SdfProgram sdf;     // the scene's program (not the shells'), kept for the interpreter's first
                         // guess of the nearest part (sdfNearestLeaf, per frame)
     std::string sdfMap; // GLSL of "generated/sdf_map.glsl" (sdf/glsl_codegen.hpp)
-    // What the shading code is built with (render/shading_code.hpp): whether any material has
-    // textures, and "generated/shading.glsl" for the scene's own settings (sceneShading).
-    bool sdfTextures = false;
-    std::string shading;
+    // The shading code of the scene's own settings and materials (sceneShading): its
+    // sdfTextures says whether any material has a texture.
+    ShadingCode shading;
     std::vector<GpuShell> shells; // their instructions follow the scene's in sdfProgram
 
     // Lighting: the shadow-map views planned from the lights and the mesh bounds, the
@@ -94,8 +93,8 @@ struct GpuScene {
 // a host may draw with its own (rmsc::api::Renderer::drawInto).
 void setSceneLights(GpuScene& gpu, const PreparedScene& prepared, const std::vector<Light>& lights);
 
-// "generated/shading.glsl" for a frame of `prepared` drawn with its own render settings.
-std::string sceneShading(const PreparedScene& prepared);
+// The shading code of a frame of `prepared` drawn with its own render settings.
+ShadingCode sceneShading(const PreparedScene& prepared);
 
 // Under the Cells strategy the program is pruned here, unless `cells` gives the grid already
 // pruned for prepared.sdf (the viewer's, pruned again after an edit: sdf/cell_pruning.hpp).

@@ -65,7 +65,8 @@ using PassTimes = std::array<double, std::size_t(Pass::Count)>;
 
 // The passes whose shaders include the scene's SDF map (generated/sdf_map.glsl).
 struct SdfPasses {
-    RasterPass raster; // marches shadow rays and AO through the SDF
+    ShadingCode shading; // what they are built with
+    RasterPass raster;   // marches shadow rays and AO through the SDF
     ConePass cone;
     MarchPass march;
     std::optional<ConePass> countingCone; // the instrumented variants, built when asked for
@@ -75,7 +76,7 @@ struct SdfPasses {
 
 // The key of the programs built with shading code `shading` ("generated/shading.glsl",
 // render/shading_code.hpp) and SDF map `sdfMap` ("generated/sdf_map.glsl"): their texts.
-std::string sdfProgramsKey(const std::string& shading, const std::string& sdfMap);
+std::string sdfProgramsKey(const ShadingCode& shading, const std::string& sdfMap);
 
 class Renderer {
   public:
@@ -90,7 +91,7 @@ class Renderer {
     }
     // Are the programs of this shading code and SDF map (GpuScene::shading and sdfMap) built,
     // so prepare() compiles nothing for them (shells aside)?
-    bool hasPrograms(const std::string& shading, const std::string& sdfMap) const {
+    bool hasPrograms(const ShadingCode& shading, const std::string& sdfMap) const {
         return sdfPasses_.contains(sdfProgramsKey(shading, sdfMap));
     }
     // Milliseconds the last prepare() spent compiling and linking (0 on a cache hit).
@@ -127,9 +128,14 @@ class Renderer {
     void setGroundGrid(bool on) { groundGrid_ = on; }
 
   private:
-    // prepare() for the shading code `shading` ("generated/shading.glsl"): a frame's settings
-    // may ask for other code than the scene's own.
-    bool prepare(const GpuScene& scene, const std::string& shading, std::string& error);
+    // prepare() for the shading code `shading`: a frame's settings may ask for other code than
+    // the scene's own.
+    bool prepare(const GpuScene& scene, const ShadingCode& shading, std::string& error);
+    // The shading code a frame that needs `needed` is drawn with: that, or where its programs are
+    // not built, code already built for the scene's map that holds more (the frame's uniforms
+    // turn off what it holds beyond, and the picture is the same), so a frame whose settings
+    // turn shadows or occlusion off does not wait for a compile.
+    ShadingCode drawnShading(const GpuScene& scene, const ShadingCode& needed) const;
     // What both kinds of frame do first: prepare, the frame UBO, the buffers and the shadow
     // pass. Returns the scene's SDF passes and its shells' passes.
     const SdfPasses& beginFrame(const GpuScene& scene, const FrameCamera& frameCamera,

@@ -50,7 +50,7 @@ class ShaderWarmer {
                  const std::vector<std::string>& sdfMaps);
     // Has a request for this map with this shading code (a scene's sceneShading) finished
     // building?
-    bool isWarm(const std::string& shading, const std::string& sdfMap) const;
+    bool isWarm(const ShadingCode& shading, const std::string& sdfMap) const;
     // How many maps have finished building (or failed) since the start: changes when there may be
     // a better map to draw.
     std::size_t finishedCount() const;
@@ -61,7 +61,7 @@ class ShaderWarmer {
     // Why the warmer stopped (no context, or a map that did not build), once; empty if it runs.
     std::string takeError();
     // Milliseconds a warm map took to build (0 when it is not warm).
-    double buildMs(const std::string& shading, const std::string& sdfMap) const;
+    double buildMs(const ShadingCode& shading, const std::string& sdfMap) const;
 
     // How far the current request has come: the maps of it built (or failed) and how many it
     // has (the one being built when it was made counts in), and the seconds the map being built

@@ -19,6 +19,14 @@ struct ShadingCode {
     bool shadows = true;          // soft shadows through the SDF and the mesh shadow maps
     bool ambientOcclusion = true; // the SDF's ambient occlusion
     bool sdfTextures = true;      // material textures on SDF surfaces
+
+    bool operator==(const ShadingCode&) const = default;
+    // Does this code hold every part `other` has? (Programs built with it draw a frame that
+    // needs `other` the same: the frame's uniforms turn off what it holds beyond.)
+    bool holds(const ShadingCode& other) const {
+        return (shadows || !other.shadows) && (ambientOcclusion || !other.ambientOcclusion) &&
+               (sdfTextures || !other.sdfTextures);
+    }
 };
 
 // What a frame drawn with `settings` needs, where the scene's materials have textures or not.
