@@ -87,6 +87,7 @@ TEST(ShadingCode, CodeLeftOutChangesNoPixel) {
 
 // The editor's case: the user turns shadows and occlusion off, then on again.
 TEST(ShadingCode, TurningPartsOffDrawsAtOnceWithTheCodeBuilt) {
+    Renderer renderer = freshRenderer(); // (and the context, before the upload)
     const PreparedScene prepared = openRepositoryScene("samples/scenes/csg.json");
     const RenderSettings own = prepared.scene.render;
     ASSERT_TRUE(own.shadows.enabled && own.ao.samples > 0);
@@ -94,7 +95,6 @@ TEST(ShadingCode, TurningPartsOffDrawsAtOnceWithTheCodeBuilt) {
     const GpuScene gpu = uploadScene(prepared, SdfStrategy::Baked);
     const ShadingCode offCode = shadingCode(off, gpu.shading.sdfTextures);
 
-    Renderer renderer = freshRenderer();
     FrameTargets first = createFrameTargets(160, 96), turnedOff = createFrameTargets(160, 96);
     renderer.render(gpu, prepared.scene.camera, own, first);
     EXPECT_GT(renderer.lastCompileMs(), 0.0);
