@@ -4,7 +4,7 @@
 // Shadows, ambient occlusion and the SDF materials' textures each inline the scene's SDF map
 // once more (a shadow ray and the occlusion taps march it, a texture's frame reads the surface
 // beside the hit). A frame that has them off paid for them anyway on llvmpipe, which runs the
-// code of a branch, and a loop's body once, whether or not a pixel takes it: a fifth of the
+// code of a branch, and a loop's body once, whether or not a pixel takes it: a sixth of the
 // frame of the 4,096-sphere tree and a quarter of the 10-shape grid's (docs/performance.md). So
 // each is compiled only where the frame uses it; the uniforms still say how much of it runs.
 #pragma once
