@@ -263,6 +263,11 @@ bool ViewRenderThread::step(const ViewFrameRequest& request, std::uint64_t seria
     const bool rendered = view_->render(
         request.view, slots_[std::size_t(slot)].drawFbo.id(), request.width, request.height,
         adaptive_, kRenderShare * adaptive_.targetMilliseconds, request.refineAll);
+    if (rendered && view_->lastRenderCompileMs() > 0.0)
+        std::fprintf(stderr,
+                     "rmsc view: frame %d: built the shaders of the view's shading settings in "
+                     "%.0f ms (on the render thread)\n",
+                     frameNumber, view_->lastRenderCompileMs());
     // The picture is whole before the UI copies it (waited for outside the lock).
     GLsync whole = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glFlush();

@@ -106,6 +106,10 @@ class ViewRenderer {
     // a band), false when it only drew the last image again.
     bool render(const ViewInput& view, GLuint framebuffer, int width, int height,
                 editor::AdaptiveScale& adaptive, float budgetMilliseconds, bool refineAll);
+    // Milliseconds the last render() that rendered spent building programs: a frame whose
+    // settings turn on a part of the shading code never built for the scene (render/
+    // shading_code.hpp). 0 when it built none.
+    double lastRenderCompileMs() const { return renderer_ ? renderer_->lastCompileMs() : 0.0; }
     // The view at `width` x `height` pixels and full resolution: the last render when it is
     // that, or a new render. nullopt with `error` when nothing is rendered yet.
     std::optional<Pixels<std::uint8_t>> capture(const ViewInput& view, int width, int height,

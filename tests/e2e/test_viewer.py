@@ -735,6 +735,45 @@ def scale_run(rmsc, source, tmp, xvfb_run, check):
               34 <= bar - 1 <= 38, bar - 1)
 
 
+def shading_run(rmsc, source, tmp, xvfb_run, check):
+    """The shading run (tests/e2e/viewer_shading_script.txt): shadows turned on, off and on again
+    in the Render tab of a scene without them; the code for them is built once (logged), and
+    the pictures follow each click."""
+    folder = os.path.join(tmp, "shading")
+    os.makedirs(folder)
+    scene = os.path.join(folder, "scene.json")
+    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
+    script = os.path.join(folder, "script.txt")
+    text = open(os.path.join(source, "tests/e2e/viewer_shading_script.txt")).read()
+    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    run = run_viewer(xvfb_run, rmsc, scene, script)
+    check("shading run: viewer exits 0", run.returncode == 0, run.returncode)
+    builds = [int(m.group(1)) for m in re.finditer(
+        r"rmsc view: frame (\d+): built the shaders of the view's shading settings", run.stderr)]
+    check("turning shadows on builds their code once, right after the click; off and on "
+          "again build nothing", len(builds) == 1 and 12 <= builds[0] <= 14, builds)
+    shots = {}
+    for name in ("off", "on", "off_again", "on_again"):
+        path = os.path.join(folder, name + ".png")
+        check(f"shading run: screenshot {name} written", os.path.exists(path))
+        if os.path.exists(path):
+            shots[name] = read_png(path)
+    if len(shots) == 4:
+        shadowed = len(differing_pixels(shots["off"], shots["on"]))
+        # (Measured: the ball's shadow on the base changes 2,134 pixels by more than 24.)
+        check("shadows on darken the view", shadowed > 2000, shadowed)
+        check("off again is the picture without them",
+              len(differing_pixels(shots["off"], shots["off_again"], 2)) == 0,
+              len(differing_pixels(shots["off"], shots["off_again"], 2)))
+        check("on again is the picture with them",
+              len(differing_pixels(shots["on"], shots["on_again"], 2)) == 0,
+              len(differing_pixels(shots["on"], shots["on_again"], 2)))
+    saved = json.load(open(scene))
+    shadows = saved.get("render", {}).get("shadows")
+    check("saved with shadows on", isinstance(shadows, dict) and shadows.get("enabled", True),
+          shadows)
+
+
 def gltf_run(rmsc, source, tmp, xvfb_run, check):
     """The glTF run (tests/e2e/viewer_gltf_script.txt): a .gltf with an animation, a camera and
     two scenes opened by itself; its animation played for 1 s and paused, its second scene
@@ -1000,6 +1039,7 @@ def main():
         export_run(rmsc, source, tmp, xvfb_run, check)
         scale_run(rmsc, source, tmp, xvfb_run, check)
         gltf_run(rmsc, source, tmp, xvfb_run, check)
+        shading_run(rmsc, source, tmp, xvfb_run, check)
     return check.summary()
 
 
