@@ -14,15 +14,6 @@
 namespace rmsc {
 namespace {
 
-// Does any material have a texture (drawn on SDF surfaces: SHADING_SDF_TEXTURES)?
-bool hasSdfTextures(const std::vector<Material>& materials) {
-    for (const Material& m : materials)
-        if (m.baseColorTexture.present() || m.normalTexture.present() ||
-            m.roughnessTexture.present())
-            return true;
-    return false;
-}
-
 // A buffer holding `header` followed by `items` (std430: the header is 16 bytes).
 template <class Header, class Item>
 gl::Buffer createHeaderedBuffer(const Header& header, const std::vector<Item>& items) {
@@ -201,7 +192,8 @@ void setSceneLights(GpuScene& gpu, const PreparedScene& prepared,
 }
 
 ShadingCode sceneShading(const PreparedScene& prepared) {
-    return shadingCode(prepared.scene.render, hasSdfTextures(prepared.materials));
+    // (The images of the materials' textures, loaded: what SDF surfaces draw.)
+    return shadingCode(prepared.scene.render, !prepared.textures.empty());
 }
 
 GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const SdfCellGrid* cells,

@@ -154,15 +154,22 @@ def run_viewer(xvfb_run, rmsc, scene, script, size="640x360", tail=2000, extra=(
     return run
 
 
-def create_run(rmsc, source, tmp, xvfb_run, check):
-    """The second run (tests/e2e/viewer_create_script.txt): lights, a revolution, a group."""
-    folder = os.path.join(tmp, "create")
+def run_folder(source, tmp, name, script_name):
+    """A run's folder in `tmp`: a copy of the viewer's scene (scene.json) and of the script
+    tests/e2e/SCRIPT_NAME with OUT/ replaced by the folder. Returns (folder, scene, script)."""
+    folder = os.path.join(tmp, name)
     os.makedirs(folder)
     scene = os.path.join(folder, "scene.json")
     shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
     script = os.path.join(folder, "script.txt")
-    text = open(os.path.join(source, "tests/e2e/viewer_create_script.txt")).read()
+    text = open(os.path.join(source, "tests/e2e", script_name)).read()
     open(script, "w").write(text.replace("OUT/", folder + "/"))
+    return folder, scene, script
+
+
+def create_run(rmsc, source, tmp, xvfb_run, check):
+    """The second run (tests/e2e/viewer_create_script.txt): lights, a revolution, a group."""
+    folder, scene, script = run_folder(source, tmp, "create", "viewer_create_script.txt")
     run = run_viewer(xvfb_run, rmsc, scene, script)
     check("second run: viewer exits 0", run.returncode == 0, run.returncode)
     keep = os.environ.get("RMSC_E2E_KEEP")  # a folder to copy the run's files to, for a look
@@ -487,13 +494,7 @@ def gizmo_run(rmsc, source, tmp, xvfb_run, check):
     """The sixth run (tests/e2e/viewer_gizmo_script.txt): the transform gizmo with snapping, the
     numpad views, an orthographic view, a bookmark, a shape put in front of the camera and the
     save's question about the scene camera."""
-    folder = os.path.join(tmp, "gizmo")
-    os.makedirs(folder)
-    scene = os.path.join(folder, "scene.json")
-    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
-    script = os.path.join(folder, "script.txt")
-    text = open(os.path.join(source, "tests/e2e/viewer_gizmo_script.txt")).read()
-    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    folder, scene, script = run_folder(source, tmp, "gizmo", "viewer_gizmo_script.txt")
     run = run_viewer(xvfb_run, rmsc, scene, script)
     check("sixth run: viewer exits 0", run.returncode == 0, run.returncode)
     keep = os.environ.get("RMSC_E2E_KEEP")
@@ -710,13 +711,7 @@ def real_drop_run(rmsc, source, tmp, xvfb_run, check):
 
 def scale_run(rmsc, source, tmp, xvfb_run, check):
     """`rmsc view --ui-scale 2` (tests/e2e/viewer_scale_script.txt): the menu bar twice as high."""
-    folder = os.path.join(tmp, "scale")
-    os.makedirs(folder)
-    scene = os.path.join(folder, "scene.json")
-    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
-    script = os.path.join(folder, "script.txt")
-    text = open(os.path.join(source, "tests/e2e/viewer_scale_script.txt")).read()
-    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    folder, scene, script = run_folder(source, tmp, "scale", "viewer_scale_script.txt")
     run = run_viewer(xvfb_run, rmsc, scene, script, "1280x720", extra=["--ui-scale", "2"],
                      screen="1400x900")
     check("scaled run: viewer exits 0", run.returncode == 0, run.returncode)
@@ -739,13 +734,7 @@ def shading_run(rmsc, source, tmp, xvfb_run, check):
     """The shading run (tests/e2e/viewer_shading_script.txt): shadows turned on, off and on again
     in the Render tab of a scene without them; the code for them is built once (logged), and
     the pictures follow each click."""
-    folder = os.path.join(tmp, "shading")
-    os.makedirs(folder)
-    scene = os.path.join(folder, "scene.json")
-    shutil.copy(os.path.join(source, "tests/e2e/viewer_scene.json"), scene)
-    script = os.path.join(folder, "script.txt")
-    text = open(os.path.join(source, "tests/e2e/viewer_shading_script.txt")).read()
-    open(script, "w").write(text.replace("OUT/", folder + "/"))
+    folder, scene, script = run_folder(source, tmp, "shading", "viewer_shading_script.txt")
     run = run_viewer(xvfb_run, rmsc, scene, script)
     check("shading run: viewer exits 0", run.returncode == 0, run.returncode)
     builds = [int(m.group(1)) for m in re.finditer(
