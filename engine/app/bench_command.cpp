@@ -466,12 +466,13 @@ void printJson(const BenchOptions& options, const HeadlessContext& context, doub
                 std::printf("%s%d", l ? ", " : "", c.cellsPerLevel[l]);
             std::printf("], \"leaf_cells\": %d, \"affine_cells\": %d, \"programs\": %zu, "
                         "\"mean_length\": %.2f, \"mean_instructions\": %.2f, "
-                        "\"max_length\": %d, \"mean_shapes\": %.2f, \"prune_ms\": %.1f, "
+                        "\"max_length\": %d, \"max_stack\": %d, \"mean_shapes\": %.2f, "
+                        "\"prune_ms\": %.1f, "
                         "\"reprune_one_shape_ms\": %.1f, \"reprune_upload_ms\": %.1f, "
                         "\"reprune_cells\": %zu, \"gpu_bytes\": %zu}",
                         c.leafCells, c.affineCells, c.uniquePrograms, c.meanLength,
-                        c.meanInstructions, c.maxLength, c.meanLeaves, c.buildMs, run.repruneMs,
-                        run.repruneUploadMs, run.repruneCells, c.bytes);
+                        c.meanInstructions, c.maxLength, c.maxStack, c.meanLeaves, c.buildMs,
+                        run.repruneMs, run.repruneUploadMs, run.repruneCells, c.bytes);
         }
         std::printf("}");
     }
@@ -504,12 +505,13 @@ void printText(const BenchOptions& options, const HeadlessContext& context, doub
                 std::printf(" %d", n);
             std::printf("; %d leaf cells (%d of them a plane or a constant), %zu distinct "
                         "programs; a cell's list is %.1f steps (%.1f instructions, %.1f shapes) on "
-                        "average, %d steps at most; "
+                        "average, %d steps and a value stack %d deep at most; "
                         "pruned in %.1f ms, again after a one-shape edit in %.1f ms (%zu cells) "
                         "and uploaded in %.1f ms; %.2f MiB on the GPU",
                         c.leafCells, c.affineCells, c.uniquePrograms, c.meanLength,
-                        c.meanInstructions, c.meanLeaves, c.maxLength, c.buildMs, run.repruneMs,
-                        run.repruneCells, run.repruneUploadMs, double(c.bytes) / (1024.0 * 1024.0));
+                        c.meanInstructions, c.meanLeaves, c.maxLength, c.maxStack, c.buildMs,
+                        run.repruneMs, run.repruneCells, run.repruneUploadMs,
+                        double(c.bytes) / (1024.0 * 1024.0));
         }
         std::printf("\n%-9s %9s %9s %9s\n", "ms", "median", "min", "max");
         std::printf("%-9s %9.2f %9.2f %9.2f\n", "frame", wallStats.median, wallStats.min,

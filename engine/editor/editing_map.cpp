@@ -14,7 +14,7 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection) 
 EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& interpreted,
                               const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady,
-                              SdfCellLoop cellLoop) {
+                              SdfCellFit cellFit) {
     struct Candidate {
         std::string map;
         EditingMapKind kind;
@@ -28,9 +28,9 @@ EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& inter
             {generateSdfMap(program, SdfStrategy::Buffer), EditingMapKind::Buffer});
     } else {
         std::string anyGrid = generateSdfMap(program, SdfStrategy::Cells);
-        std::string shortLists = generateSdfMap(program, SdfStrategy::Cells, {}, {}, cellLoop);
-        if (shortLists != anyGrid) // (one text where the lists are long, or for the lean loop)
-            byPreference.push_back({std::move(shortLists), EditingMapKind::Cells});
+        std::string fitted = generateSdfMap(program, SdfStrategy::Cells, {}, {}, cellFit);
+        if (fitted != anyGrid) // (one text where the grid fits nothing more, or for the lean loop)
+            byPreference.push_back({std::move(fitted), EditingMapKind::Cells});
         byPreference.push_back({std::move(anyGrid), EditingMapKind::Cells});
     }
     byPreference.push_back(

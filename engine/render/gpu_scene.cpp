@@ -117,6 +117,10 @@ bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellG
         dataCount != gpu.sdfDataCount || prepared.materials.size() != gpu.materials.size() ||
         prepared.sdf.instructions.size() != std::size_t(gpu.sdfInstructionCount))
         return false;
+    // A grid deeper than the drawn map's stack variables (an edit moved shapes together) needs
+    // the map for it: the variables would lose stack entries.
+    if (sdfMapCellFit(gpu.sdfMap).shallowStacks && sdfDeepestCellStack(grid) > kSdfRegisterStack)
+        return false;
     GpuSdfHeader sdfHeader;
     sdfHeader.instructionCount = std::uint32_t(prepared.sdf.instructions.size());
     sdfHeader.stackDepth = std::uint32_t(prepared.sdf.stackDepth);
@@ -276,9 +280,9 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
     gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, sceneCode, shellCode);
-    gpu.sdfMap = generateSdfMap(drawn, strategy, {}, {},
-                                pruned ? sdfCellLoop(sdfLongestCellList(grid))
-                                       : SdfCellLoop::TwoPerIteration);
+    gpu.sdfMap = generateSdfMap(
+        drawn, strategy, {}, {},
+        pruned ? sdfCellFit(sdfLongestCellList(grid), sdfDeepestCellStack(grid)) : SdfCellFit{});
     if (pruned) {
         GpuSdfCellHeader header;
         header.originSize = glm::vec4(grid.origin, grid.size);

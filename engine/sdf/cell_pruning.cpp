@@ -1032,6 +1032,7 @@ std::uint64_t hashList(std::span<const std::uint32_t> list) {
 void appendOutsideList(SdfCellGrid& grid, std::span<const std::uint32_t> list) {
     grid.outsideOffset = std::uint32_t(grid.words.size());
     grid.outsideLength = std::uint32_t(sdfListEntries(list.size(), grid.reading));
+    grid.outsideStack = sdfListStackDepth(grid.code, list, grid.reading);
     grid.words.insert(grid.words.end(), list.begin(), list.end());
 }
 
@@ -1208,7 +1209,7 @@ struct SdfCellState {
     // eighth more blocks) and how many list words it held, each block's statistics, and which
     // blocks' entries changed since.
     struct BlockStats {
-        int leafCells = 0, maxLength = 0, affineCells = 0;
+        int leafCells = 0, maxLength = 0, maxStack = 0, affineCells = 0;
         long length = 0, instructions = 0, leaves = 0;
     };
     std::uint64_t packStamp = 0;
@@ -1756,9 +1757,10 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
             if (word & kSdfCellAffine) ++stats.affineCells;
             ++stats.leafCells;
             stats.length += long(length);
-            stats.instructions += long(sdfListInstructionCount(
-                s.code, std::span(s.lists).subspan(e, sdfListWords(length, s.reading())),
-                s.reading()));
+            const std::span<const std::uint32_t> list =
+                std::span(s.lists).subspan(e, sdfListWords(length, s.reading()));
+            stats.instructions += long(sdfListInstructionCount(s.code, list, s.reading()));
+            stats.maxStack = std::max(stats.maxStack, sdfListStackDepth(s.code, list, s.reading()));
             stats.leaves += long(s.cellLeaves[k]);
             stats.maxLength = std::max(stats.maxLength, int(length));
         }
@@ -1789,6 +1791,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         totalInstructions += stats.instructions;
         totalLeaves += stats.leaves;
         grid.stats.maxLength = std::max(grid.stats.maxLength, stats.maxLength);
+        grid.stats.maxStack = std::max(grid.stats.maxStack, stats.maxStack);
     }
     while (!grid.stats.cellsPerLevel.empty() && grid.stats.cellsPerLevel.back() == 0)
         grid.stats.cellsPerLevel.pop_back();

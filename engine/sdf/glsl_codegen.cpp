@@ -327,6 +327,15 @@ std::string interpreterFeatures(const std::vector<GpuSdfInstruction>& code, bool
 
 } // namespace
 
+// The lines of a Cells map that say what it assumes of its grid's lists (SdfCellFit).
+constexpr std::string_view kShortListsDefine = "#define SDF_CELLS_SHORT_LISTS 1\n";
+constexpr std::string_view kShallowStacksDefine = "#define SDF_CELLS_SHALLOW_STACKS 1\n";
+
+SdfCellFit sdfMapCellFit(std::string_view map) {
+    return {map.find(kShortListsDefine) != std::string_view::npos,
+            map.find(kShallowStacksDefine) != std::string_view::npos};
+}
+
 SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requested) {
     if (requested == SdfStrategy::Interpreter || requested == SdfStrategy::Cells) return requested;
     int leaves = 0;
@@ -340,8 +349,7 @@ SdfStrategy effectiveSdfStrategy(const SdfProgram& program, SdfStrategy requeste
 }
 
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
-                           const SdfMapNames& names, const SdfLiveRange& live,
-                           SdfCellLoop cellLoop) {
+                           const SdfMapNames& names, const SdfLiveRange& live, SdfCellFit cellFit) {
     const std::string& prefix = names.prefix;
     SdfStrategy strategy = effectiveSdfStrategy(program, requested);
     // The interpreter runs the scene's own map only (it reads the program from its start);
@@ -376,9 +384,8 @@ std::string generateSdfMap(const SdfProgram& program, SdfStrategy requested,
             out << (lean ? "#define SDF_CELLS_LEAN 1\n" : "")
                 << (planes > 0 ? "#define SDF_CELLS_PLANES " + std::to_string(planes) + "\n"
                                : std::string())
-                << (!lean && cellLoop == SdfCellLoop::OnePerIteration
-                        ? "#define SDF_CELLS_SHORT_LISTS 1\n"
-                        : "")
+                << (!lean && cellFit.shortLists ? kShortListsDefine : "")
+                << (!lean && cellFit.shallowStacks ? kShallowStacksDefine : "")
                 << "#include \"common/sdf_cells.glsl\"\n";
         } else
             out << (sdfIsPartsOnly(program) ? "#include \"common/sdf_parts_loop.glsl\"\n"

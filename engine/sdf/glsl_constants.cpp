@@ -54,6 +54,7 @@ std::vector<GlslConstant> sdfGlslConstants() {
     std::vector<GlslConstant> out = {
         {"SDF_MAX_STACK", glslInt(kSdfMaxStack)},
         {"SDF_MAX_POINT_STACK", glslInt(kSdfMaxPointStack)},
+        {"SDF_REGISTER_STACK", glslInt(kSdfRegisterStack)},
         {"SDF_UNIFORM_INSTRUCTIONS", glslInt(kSdfUniformInstructions)},
         {"SDF_FAR", glslFloat(kSdfFar)},
         {"SDF_CELL_MAX_LEVELS", glslInt(limits::kSdfCellLevels)},

@@ -94,4 +94,20 @@ std::size_t sdfListInstructionCount(std::span<const GpuSdfInstruction> code,
     return count;
 }
 
+int sdfListStackDepth(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> words,
+                      SdfListReading reading) {
+    if (reading == SdfListReading::LeastOfShapes) return 0;
+    const bool pairs = reading == SdfListReading::PostfixPairs;
+    int top = 0, most = 0;
+    for (std::size_t n = 0; n < words.size(); n += pairs ? 2 : 1) {
+        const SdfOpcode opcode = SdfOpcode(code[pairs ? sdfEntryIndex(words[n]) : words[n]].opcode);
+        if (opcode == SdfOpcode::Shape || opcode == SdfOpcode::Profile)
+            most = std::max(most, ++top);
+        else if (opcode == SdfOpcode::Accumulate || (!pairs && opcode == SdfOpcode::Combine))
+            --top;
+        if (pairs && sdfEntryCombine(words[n]) != 0) --top;
+    }
+    return most;
+}
+
 } // namespace rmsc

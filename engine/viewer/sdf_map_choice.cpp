@@ -39,15 +39,16 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
         return !cellsPending && (!warmer_ || first || renderer_->hasPrograms(shading, map) ||
                                  warmer_->isWarm(shading, map));
     };
-    const SdfCellLoop cellLoop =
-        cellGrid_ ? sdfCellLoop(sdfLongestCellList(*cellGrid_)) : SdfCellLoop::TwoPerIteration;
+    const SdfCellFit cellFit =
+        cellGrid_ ? sdfCellFit(sdfLongestCellList(*cellGrid_), sdfDeepestCellStack(*cellGrid_))
+                  : SdfCellFit{};
     editor::EditingMaps maps =
-        editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady, cellLoop);
+        editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady, cellFit);
     if (warmer_) {
         warmer_->request(prepared_, maps.build);
         if (waitForBuilds && !maps.build.empty()) {
             warmer_->waitUntilIdle();
-            maps = editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady, cellLoop);
+            maps = editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady, cellFit);
             choiceBuilt_ = warmer_->finishedCount();
         }
     }

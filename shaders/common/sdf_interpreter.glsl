@@ -24,6 +24,35 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #ifndef SDF_LIST_PAIRS
 #define SDF_LIST_ENTRY(base, n) uvec2(SDF_PROGRAM_AT((base) + (n)), 0u)
 #endif
+// The value stacks below their top entry, which the interpreters hold in a variable of its own:
+// entry k of `name` (k from 0, the bottom). An array, which llvmpipe keeps in memory and reads or
+// writes one pixel at a time where the index differs between pixels (each of a surface's fields
+// too). Where every list of the cells' grid is at most SDF_REGISTER_STACK deep
+// (SDF_CELLS_SHALLOW_STACKS, engine/sdf/glsl_codegen.cpp: SdfCellFit), the entries below the top
+// are that many less one variables instead, read and written through selects: the 4,096-sphere
+// tree's frame about a sixth faster (docs/performance.md). SDF_STACK_SET's value is read once per
+// variable: pass a variable.
+#ifdef SDF_CELLS_SHALLOW_STACKS
+#if SDF_REGISTER_STACK != 5
+#error "the shallow stacks hold SDF_REGISTER_STACK - 1 entries: write them out"
+#endif
+#define SDF_STACK(T, name, init) T name##0 = init, name##1 = init, name##2 = init, name##3 = init
+#define SDF_STACK_GET(name, k) \
+    ((k) == 0 ? name##0 : (k) == 1 ? name##1 : (k) == 2 ? name##2 : name##3)
+#define SDF_STACK_SET(name, k, value) \
+    { \
+        int k_ = (k); \
+        name##0 = k_ == 0 ? (value) : name##0; \
+        name##1 = k_ == 1 ? (value) : name##1; \
+        name##2 = k_ == 2 ? (value) : name##2; \
+        name##3 = k_ == 3 ? (value) : name##3; \
+    }
+#else
+#define SDF_STACK(T, name, init) T name[SDF_MAX_STACK]
+#define SDF_STACK_GET(name, k) name[k]
+#define SDF_STACK_SET(name, k, value) name[k] = (value)
+#endif
+
 #define SDF_ENTRY_INDEX(entry) ((entry).x & ((1u << SDF_ENTRY_INDEX_BITS) - 1u))
 #define SDF_ENTRY_COMBINE(entry) ((entry).x >> SDF_ENTRY_INDEX_BITS)
 // The combine's op and parameters (opParams: x the smoothness, y the curve).
@@ -43,7 +72,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
         best = min(best, sdfSeedDistanceOf(data, p)); \
     } else if (op == SDF_OPCODE_ACCUMULATE) { \
         --top; \
-        best = min(best, stack[top]); \
+        best = min(best, value); \
+        if (top > 0) value = SDF_STACK_GET(stack, top - 1); \
     }
 #else
 #define SDF_DISTANCE_STEP_BOUNDS
@@ -72,7 +102,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_DISTANCE_MODIFIERS
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS \
     else if (op == SDF_OPCODE_DISTANCE_MODIFIER) { \
-        stack[top - 1] = sdfDistanceModifierUsed(head.y, stack[top - 1], p, data.a0); \
+        value = sdfDistanceModifierUsed(head.y, value, p, data.a0); \
     }
 #else
 #define SDF_DISTANCE_STEP_DISTANCE_MODIFIERS
@@ -82,9 +112,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #define SDF_DISTANCE_STEP_COMBINE \
     else if (op == SDF_OPCODE_COMBINE) { \
         float weightA; \
-        float b = stack[top - 1]; \
-        float a = stack[top - 2]; \
-        stack[top - 2] = sdfCombineUsed(head.y, a, b, data.a0, weightA); \
+        value = sdfCombineUsed(head.y, SDF_STACK_GET(stack, top - 2), value, data.a0, weightA); \
         --top; \
     }
 #else
@@ -96,8 +124,8 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #define SDF_DISTANCE_STEP_FUSED \
     if (SDF_ENTRY_COMBINE(entry) != 0u) { \
         float weightA; \
-        stack[top - 2] = sdfCombineUsed(SDF_ENTRY_OP(entry), stack[top - 2], stack[top - 1], \
-                                        SDF_ENTRY_PARAMS(entry), weightA); \
+        value = sdfCombineUsed(SDF_ENTRY_OP(entry), SDF_STACK_GET(stack, top - 2), value, \
+                               SDF_ENTRY_PARAMS(entry), weightA); \
         --top; \
     }
 #else
@@ -112,7 +140,9 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
         uvec4 head = data.head; /* opcode, kind, material, id */ \
         uint op = head.x; \
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) { \
-            stack[top] = sdfLeafDistanceOf(data, p); \
+            float leaf = sdfLeafDistanceOf(data, p); \
+            if (top > 0) SDF_STACK_SET(stack, top - 1, value); \
+            value = leaf; \
             ++top; \
         } \
         SDF_DISTANCE_STEP_BOUNDS \
@@ -128,18 +158,19 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 // the numbers of its last instruction (a cell's plane, common/sdf_cells.glsl).
 float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData last) {
     if (count == 0u) return SDF_FAR;
-    float stack[SDF_MAX_STACK];
-    int top = 0; // number of entries on the stack
+    // The stack's top entry is `value`, the ones below it in `stack` (SDF_STACK).
+    SDF_STACK(float, stack, SDF_FAR);
+    float value = SDF_FAR;
+    int top = 0; // entries in all, the top one included
     vec3 saved[SDF_MAX_POINT_STACK];
     int savedTop = 0;
     float best = SDF_FAR; // what SDF_OPCODE_ACCUMULATE unites into
-    stack[0] = SDF_FAR;   // (read only if the program pushes nothing)
     // Eight instructions per loop iteration: Mesa's llvmpipe ends a shader invocation's loops
     // after a budget of iterations shared by every loop (LP_MAX_TGSI_LOOP_ITERATIONS), which
     // large programs would exhaust within a few march steps; unrolling stretches it 8 times.
     // A cell's program is short (sdf/cell_pruning.hpp): there llvmpipe would run the unrolled
     // instructions past its end for nothing (masked), so two per iteration, and one where every
-    // list of the grid is short (SdfCellLoop in sdf/glsl_codegen.hpp).
+    // list of the grid is short (SdfCellFit in sdf/glsl_codegen.hpp).
     for (uint n = 0u; n < count;) {
 #if defined(SDF_CELLS_SHORT_LISTS)
         SDF_DISTANCE_STEP
@@ -150,7 +181,7 @@ float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData 
         SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP SDF_DISTANCE_STEP
 #endif
     }
-    return top == 0 ? best : stack[0];
+    return top == 0 ? best : top == 1 ? value : SDF_STACK_GET(stack, 0);
 }
 float sdfListDistance(vec3 p, uint base, uint count) {
     SdfInstructionData last;
@@ -175,11 +206,11 @@ float sdfDistance(vec3 p) {
 // (sdfSurfaceRead's).
 #define SDF_SURFACE_COMBINE(kind, params) \
     float w; \
-    SdfSurface below = stack[top - 2]; \
+    SdfSurface below = SDF_STACK_GET(stack, top - 2); \
     float d = sdfCombineUsed(kind, below.distance, surface.distance, params, w); \
     surface = sdfBlendSurfaces(below, surface, d, w); \
     if (withTaps) { \
-        vec4 a = tapStack[top - 2]; \
+        vec4 a = SDF_STACK_GET(tapStack, top - 2); \
         for (int k = SDF_ZERO; k < 4; ++k) \
             a[k] = sdfCombineUsed(kind, a[k], surfaceTaps[k], params, w); \
         surfaceTaps = a; \
@@ -199,13 +230,9 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     uint base, count;
     sdfProgramRange(p, base, count);
     taps = vec4(SDF_FAR);
-    // The stack's top entry is held in `surface` and `surfaceTaps`, the ones below it in the
-    // arrays: an operation reads one array entry instead of two and writes none. (llvmpipe keeps
-    // an array indexed by a value that differs between pixels in memory, and reads or writes each
-    // of an SdfSurface's fields there one pixel at a time: the arrays cost the 4,096-sphere tree
-    // about a tenth of its frame; docs/performance.md.)
-    SdfSurface stack[SDF_MAX_STACK];
-    vec4 tapStack[SDF_MAX_STACK];
+    // The stack's top entry is held in `surface` and `surfaceTaps`, the ones below it in `stack`
+    // and `tapStack` (SDF_STACK): an operation reads one entry below the top instead of two and
+    // writes none.
     int top = 0; // entries in all, the top one included
     vec3 saved[SDF_MAX_POINT_STACK];
     vec3 savedTaps[4 * SDF_MAX_POINT_STACK];
@@ -216,6 +243,8 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     vec4 bestTaps = vec4(SDF_FAR);
     SdfSurface surface = best; // (read only if the program pushes nothing)
     vec4 surfaceTaps = bestTaps;
+    SDF_STACK(SdfSurface, stack, best);
+    SDF_STACK(vec4, tapStack, bestTaps);
     for (uint n = 0u; n < count; ++n) {
         uvec2 entry = SDF_LIST_ENTRY(base, n);
         SdfInstructionData data = sdfInstructionData(SDF_ENTRY_INDEX(entry));
@@ -223,8 +252,8 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
         uint op = head.x;
         if (op == SDF_OPCODE_SHAPE || op == SDF_OPCODE_PROFILE) {
             if (top > 0) {
-                stack[top - 1] = surface;
-                tapStack[top - 1] = surfaceTaps;
+                SDF_STACK_SET(stack, top - 1, surface);
+                SDF_STACK_SET(tapStack, top - 1, surfaceTaps);
             }
             surface = sdfMaterialSurface(sdfLeafDistanceOf(data, p), head.w, head.z,
                                          sdfInstructionPointOf(data, p));
@@ -239,8 +268,8 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
             if (surface.distance < best.distance) best = surface;
             if (withTaps) bestTaps = min(bestTaps, surfaceTaps);
             if (top > 0) {
-                surface = stack[top - 1];
-                surfaceTaps = tapStack[top - 1];
+                surface = SDF_STACK_GET(stack, top - 1);
+                surfaceTaps = SDF_STACK_GET(tapStack, top - 1);
             }
         } // SDF_OPCODE_SEED_BEST: surfaces are not seeded (`best` must be a part's surface)
 #endif

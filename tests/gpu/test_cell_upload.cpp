@@ -1,11 +1,14 @@
 // The cells buffer after an edit (render/gpu_scene.hpp, updateSdfCells): the words a re-prune
 // changed are written into the buffer in place, and the buffer then holds exactly the edited
-// grid; a grid that does not fit gets a new buffer.
+// grid; a grid that does not fit gets a new buffer, and one deeper than the map's stack
+// variables a new upload.
 #include "gpu_test_support.hpp"
 
 #include "render/gpu_scene.hpp"
 #include "render/readback.hpp"
+#include "scene_text.hpp"
 #include "sdf/cell_pruning.hpp"
+#include "sdf/glsl_codegen.hpp"
 
 #include <gtest/gtest.h>
 
@@ -138,4 +141,44 @@ TEST(CellUpload, AnEditOfNumbersIsWrittenIntoTheSceneInPlace) {
     PreparedScene longer = edited;
     longer.sdf.instructions.push_back(longer.sdf.instructions.front());
     EXPECT_FALSE(updateSdfScene(gpu, longer, grid));
+}
+
+// A map that holds its stacks in variables (sdf/glsl_codegen.hpp, SdfCellFit) is not given a
+// grid whose lists an edit made deeper than they hold: seven spheres nested to the right,
+// op(s0, op(s1, ... s6)), apart (each cell lists one or two) and then moved together (the cells
+// there list all seven, seven leaves before the first combine). updateSdfScene refuses; a new
+// upload gets the map for any grid.
+TEST(CellUpload, AnEditThatDeepensTheListsIsNotWrittenIntoShallowStacks) {
+    std::string nested;
+    for (int i = 6; i >= 0; --i) {
+        const std::string sphere =
+            R"({"shape": "sphere", "radius": 0.3, "position": [)" + std::to_string(i) + ", 0, 0]}";
+        nested = i == 6 ? sphere
+                        : R"({"op": "smooth_union", "smoothness": 0.3, "children": [)" + sphere +
+                              ", " + nested + "]}";
+    }
+    const PreparedScene apart = prepareSceneText(R"({"version": 1, "sdf": )" + nested + "}");
+    SdfCellStatePtr state;
+    SdfCellGrid grid = buildSdfCells(apart.sdf, sdfContentBox(*apart.scene.sdf), {}, &state);
+    ASSERT_TRUE(state);
+    EXPECT_LE(sdfDeepestCellStack(grid), kSdfRegisterStack);
+    GpuScene gpu = uploadScene(apart, SdfStrategy::Cells, &grid);
+    ASSERT_TRUE(sdfMapCellFit(gpu.sdfMap).shallowStacks);
+
+    PreparedScene together = apart;
+    for (GpuSdfInstruction& in : together.sdf.instructions)
+        if (SdfOpcode(in.opcode) == SdfOpcode::Shape) in.worldToLocal[0].w = -3.0f;
+    ASSERT_TRUE(repruneSdfCells(*state, together.sdf, grid));
+    EXPECT_EQ(sdfDeepestCellStack(grid), 7);
+    EXPECT_FALSE(updateSdfScene(gpu, together, grid));
+    const GpuScene fresh = uploadScene(together, SdfStrategy::Cells, &grid);
+    EXPECT_FALSE(sdfMapCellFit(fresh.sdfMap).shallowStacks);
+    EXPECT_TRUE(sdfMapCellFit(fresh.sdfMap).shortLists);
+
+    // Moved apart again, the lists are shallow: written in place into the map for any grid.
+    GpuScene anyGrid = uploadScene(together, SdfStrategy::Cells, &grid);
+    ASSERT_TRUE(repruneSdfCells(*state, apart.sdf, grid));
+    EXPECT_LE(sdfDeepestCellStack(grid), kSdfRegisterStack);
+    EXPECT_TRUE(updateSdfScene(anyGrid, apart, grid));
+    expectNoGlErrors();
 }

@@ -165,11 +165,12 @@ TEST(SdfStrategies, CellsOfASmoothTreeAndBakedDrawTheSameImage) {
     }
 }
 
-// A grid whose lists are all short is read one list instruction per loop iteration
-// (sdf/glsl_codegen.hpp, SdfCellLoop), and draws what the loop for any grid (two per
-// iteration) draws: the same instructions in the same order, so the same pixels. A grid with a
-// long list gets the second loop (the first would spend llvmpipe's loop budget: the 1,000-node
-// test of test_sdf_hierarchy.cpp loses ids with it).
+// A grid whose lists are all short is read one list instruction per loop iteration, and one
+// whose lists' stacks are all shallow holds the stacks in variables (sdf/glsl_codegen.hpp,
+// SdfCellFit): the 256-sphere tree fits both, and draws what the text for any grid (two per
+// iteration, arrays) draws: the same instructions in the same order, so the same pixels. A grid
+// with a long list gets the second loop (the first would spend llvmpipe's loop budget: the
+// 1,000-node test of test_sdf_hierarchy.cpp loses ids with it).
 TEST(SdfStrategies, CellsOfShortListsDrawTheSameWithEitherLoop) {
     Renderer& renderer = sharedRenderer(); // (and the context)
     const PreparedScene prepared = openRepositoryScene("samples/bench/tree_256.json");
@@ -177,17 +178,24 @@ TEST(SdfStrategies, CellsOfShortListsDrawTheSameWithEitherLoop) {
     ASSERT_NE(gpu.sdfMap.find("common/sdf_cells.glsl"), std::string::npos);
     ASSERT_EQ(gpu.sdfMap.find("SDF_CELLS_LEAN"), std::string::npos); // the postfix loop
     EXPECT_NE(gpu.sdfMap.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+    EXPECT_NE(gpu.sdfMap.find("SDF_CELLS_SHALLOW_STACKS"), std::string::npos);
+    EXPECT_GT(gpu.sdfCellStats.maxStack, 2); // (stacks the variables hold, below the top)
     const int width = 160, height = 96;
     FrameTargets one = createFrameTargets(width, height);
     renderer.render(gpu, prepared.scene.camera, prepared.scene.render, one);
-    gpu.sdfMap = generateSdfMap(prepared.sdf, SdfStrategy::Cells);
-    ASSERT_EQ(gpu.sdfMap.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
-    FrameTargets two = createFrameTargets(width, height);
-    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, two);
-    expectNoGlErrors();
-    EXPECT_TRUE(imagesMatch(readDisplayColor(two), readDisplayColor(one),
-                            "strategy_cells_short_lists", {0, 0.0}));
-    EXPECT_EQ(readObjectIds(two).data, readObjectIds(one).data);
+    for (const SdfCellFit fit : {SdfCellFit{.shortLists = true}, SdfCellFit{}}) {
+        gpu.sdfMap = generateSdfMap(prepared.sdf, SdfStrategy::Cells, {}, {}, fit);
+        ASSERT_EQ(gpu.sdfMap.find("SDF_CELLS_SHALLOW_STACKS"), std::string::npos);
+        ASSERT_EQ(gpu.sdfMap.find("SDF_CELLS_SHORT_LISTS") != std::string::npos, fit.shortLists);
+        FrameTargets two = createFrameTargets(width, height);
+        renderer.render(gpu, prepared.scene.camera, prepared.scene.render, two);
+        expectNoGlErrors();
+        EXPECT_TRUE(imagesMatch(readDisplayColor(two), readDisplayColor(one),
+                                fit.shortLists ? "strategy_cells_shallow_stacks"
+                                               : "strategy_cells_short_lists",
+                                {0, 0.0}));
+        EXPECT_EQ(readObjectIds(two).data, readObjectIds(one).data);
+    }
 
     std::string spheres;
     for (int i = 0; i < 80; ++i)
@@ -201,6 +209,50 @@ TEST(SdfStrategies, CellsOfShortListsDrawTheSameWithEitherLoop) {
     ASSERT_NE(long_.sdfMap.find("common/sdf_cells.glsl"), std::string::npos);
     EXPECT_GT(long_.sdfCellStats.maxLength, kSdfShortCellList);
     EXPECT_EQ(long_.sdfMap.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+}
+
+// A grid with a list deeper than the stack variables hold (seven spheres nested to the right,
+// op(s0, op(s1, ... s6)): seven leaves before the first combine) keeps its stacks in arrays, and
+// must: drawn with the variables it loses the entries they do not hold (the fifth and sixth
+// spheres, here the largest), and the picture changes.
+TEST(SdfStrategies, CellsOfDeepListsKeepTheirStacksInArrays) {
+    Renderer& renderer = sharedRenderer();
+    std::string nested;
+    for (int i = 6; i >= 0; --i) {
+        const bool large = i == 4 || i == 5;
+        const std::string sphere = std::string(R"({"shape": "sphere", "radius": )") +
+                                   (large ? "0.5" : "0.3") + R"(, "position": [)" +
+                                   std::to_string(0.02 * i) + R"(, 0, 0], "material": ")" +
+                                   (large ? "a" : "b") + "\"}";
+        nested = i == 6 ? sphere
+                        : R"({"op": "smooth_union", "smoothness": 0.3, "children": [)" + sphere +
+                              ", " + nested + "]}";
+    }
+    const PreparedScene prepared = prepareSceneText(R"({"version": 1,
+        "camera": {"position": [0, 0.4, 1.8], "target": [0.06, 0, 0], "fov": 50},
+        "materials": {"a": {"base_color": "#e76f51"}, "b": {"base_color": "#2a9d8f"}},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+        "sdf": )" + nested + "}");
+    GpuScene gpu = uploadScene(prepared, SdfStrategy::Cells);
+    ASSERT_NE(gpu.sdfMap.find("common/sdf_cells.glsl"), std::string::npos);
+    EXPECT_EQ(gpu.sdfCellStats.maxStack, 7);
+    EXPECT_EQ(gpu.sdfMap.find("SDF_CELLS_SHALLOW_STACKS"), std::string::npos);
+    const int width = 96, height = 64;
+    FrameTargets arrays = createFrameTargets(width, height);
+    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, arrays);
+    gpu.sdfMap = generateSdfMap(prepared.sdf, SdfStrategy::Cells, {}, {},
+                                SdfCellFit{.shortLists = true, .shallowStacks = true});
+    FrameTargets variables = createFrameTargets(width, height);
+    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, variables);
+    expectNoGlErrors();
+    expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells, "strategy_cells_deep_lists");
+    const Pixels<std::uint8_t> a = readDisplayColor(arrays), v = readDisplayColor(variables);
+    int differing = 0;
+    for (std::size_t k = 0; k < a.data.size(); k += 4)
+        differing += std::abs(int(a.data[k]) - int(v.data[k])) > 8 ||
+                     std::abs(int(a.data[k + 1]) - int(v.data[k + 1])) > 8 ||
+                     std::abs(int(a.data[k + 2]) - int(v.data[k + 2])) > 8;
+    EXPECT_GT(differing, width * height / 5); // (measured: 1,486 of 6,144 pixels)
 }
 
 // A room: a floor and two walls are the grid's planes, in no list (engine/sdf/cell_pruning.hpp,

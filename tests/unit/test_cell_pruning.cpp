@@ -354,10 +354,10 @@ TEST(CellPruning, AGridOfSpheresPrunesToTheNearOnes) {
     }
 }
 
-// The map's loop (sdf/glsl_codegen.hpp, SdfCellLoop) follows the longest list a point reads:
-// one instruction per iteration for a grid of spheres apart, two where 80 spheres overlap in a
-// smooth union (the cells where they meet list them all) and where there is no grid (every
-// point runs the outside list, the whole program).
+// The map's loop (sdf/glsl_codegen.hpp, SdfCellFit::shortLists) follows the longest list a point
+// reads: one instruction per iteration for a grid of spheres apart, two where 80 spheres overlap in
+// a smooth union (the cells where they meet list them all) and where there is no grid (every point
+// runs the outside list, the whole program).
 TEST(CellPruning, TheLongestListDecidesTheLoop) {
     std::ostringstream apart, together;
     apart << R"({"children": [)";
@@ -376,19 +376,92 @@ TEST(CellPruning, TheLongestListDecidesTheLoop) {
     const SdfCellGrid short_ = buildSdfCells(a->program, sdfContentBox(*a->scene.sdf));
     EXPECT_GT(short_.levels, 0);
     EXPECT_LE(sdfLongestCellList(short_), kSdfShortCellList);
-    EXPECT_EQ(sdfCellLoop(sdfLongestCellList(short_)), SdfCellLoop::OnePerIteration);
+    EXPECT_TRUE(sdfCellFit(sdfLongestCellList(short_), 0).shortLists);
 
     const SdfCellGrid overlapping = buildSdfCells(t->program, sdfContentBox(*t->scene.sdf));
     EXPECT_GT(overlapping.levels, 0);
     EXPECT_GT(overlapping.stats.maxLength, kSdfShortCellList);
     EXPECT_EQ(sdfLongestCellList(overlapping), overlapping.stats.maxLength);
-    EXPECT_EQ(sdfCellLoop(sdfLongestCellList(overlapping)), SdfCellLoop::TwoPerIteration);
+    EXPECT_FALSE(sdfCellFit(sdfLongestCellList(overlapping), 0).shortLists);
 
     const SdfCellGrid none = buildSdfCells(a->program, Aabb{});
     EXPECT_EQ(none.levels, 0);
     EXPECT_EQ(none.stats.maxLength, 0);
     EXPECT_GT(int(none.outsideLength), kSdfShortCellList);
-    EXPECT_EQ(sdfCellLoop(sdfLongestCellList(none)), SdfCellLoop::TwoPerIteration);
+    EXPECT_FALSE(sdfCellFit(sdfLongestCellList(none), 0).shortLists);
+}
+
+// The map holds its value stacks in variables (sdf/glsl_codegen.hpp, SdfCellFit::shallowStacks)
+// only where every list a point reads is at most kSdfRegisterStack deep: the deepest stack the
+// grid reports is that of the deepest list at any point, and of the outside list. Seven spheres
+// nested to the right, op(s0, op(s1, ... op(s5, s6))), all near one point, are listed whole in
+// the cells there: seven leaves before the first combine. The same seven as one smooth union
+// combine as they come: two deep.
+TEST(CellPruning, TheDeepestListDecidesTheStacks) {
+    const int spheres = 7;
+    auto sphere = [](int i) {
+        return R"({"shape": "sphere", "radius": 0.3, "position": [)" + std::to_string(0.01 * i) +
+               ", 0, 0]}";
+    };
+    std::string nested = sphere(spheres - 1), flat = sphere(0);
+    for (int i = spheres - 2; i >= 0; --i)
+        nested = R"({"op": "smooth_union", "smoothness": 0.1, "children": [)" + sphere(i) + ", " +
+                 nested + "]}";
+    for (int i = 1; i < spheres; ++i)
+        flat += ", " + sphere(i);
+    const std::optional<Compiled> deep = compileText(nested, false);
+    const std::optional<Compiled> shallow = compileText(
+        R"({"op": "smooth_union", "smoothness": 0.1, "children": [)" + flat + "]}", false);
+    ASSERT_TRUE(deep && shallow);
+
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (const auto& [compiled, depth] : {std::pair{&*deep, spheres}, std::pair{&*shallow, 2}}) {
+        const SdfCellGrid grid =
+            buildSdfCells(compiled->program, sdfContentBox(*compiled->scene.sdf));
+        ASSERT_GT(grid.levels, 0);
+        EXPECT_EQ(grid.stats.maxStack, depth);
+        EXPECT_EQ(sdfDeepestCellStack(grid), depth);
+        EXPECT_EQ(sdfCellFit(sdfLongestCellList(grid), sdfDeepestCellStack(grid)).shallowStacks,
+                  depth <= kSdfRegisterStack);
+        // The cell at the spheres' middle lists them all; no cell lists a deeper one.
+        const std::span<const std::uint32_t> middle =
+            sdfCellWords(grid, sdfCellRange(grid, glm::vec3(0.03f, 0.0f, 0.0f)));
+        EXPECT_EQ(sdfListStackDepth(grid.code, middle, grid.reading), depth);
+        for (int i = 0; i < 2000; ++i) {
+            const glm::vec3 p = grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * grid.size;
+            ASSERT_LE(sdfListStackDepth(grid.code, sdfCellWords(grid, sdfCellRange(grid, p)),
+                                        grid.reading),
+                      depth);
+        }
+        // Without a grid every point runs the outside list, the whole program.
+        const SdfCellGrid none = buildSdfCells(compiled->program, Aabb{});
+        EXPECT_EQ(none.levels, 0);
+        EXPECT_EQ(none.stats.maxStack, 0);
+        EXPECT_EQ(sdfDeepestCellStack(none), depth);
+    }
+    EXPECT_GT(spheres, kSdfRegisterStack); // (the nested tree is too deep for the variables)
+}
+
+// A list's stack depth as the shader counts it: a shape pushes, a combine (its own instruction
+// in a postfix list, an entry's in pairs) and Accumulate pop; a least-of-shapes list needs none.
+TEST(CellPruning, AListsStackDepthFollowsItsReading) {
+    std::vector<GpuSdfInstruction> code(3);
+    code[0].opcode = code[1].opcode = std::uint32_t(SdfOpcode::Shape);
+    code[2].opcode = std::uint32_t(SdfOpcode::Combine);
+    const std::vector<std::uint32_t> flat{0, 1, 2, 0, 2, 1, 2}, nested{0, 1, 0, 1, 2, 2, 2};
+    EXPECT_EQ(sdfListStackDepth(code, flat, SdfListReading::Postfix), 2);
+    EXPECT_EQ(sdfListStackDepth(code, nested, SdfListReading::Postfix), 4);
+    EXPECT_EQ(sdfListStackDepth(code, nested, SdfListReading::LeastOfShapes), 0);
+    for (const auto& [list, depth] : {std::pair{&flat, 2}, std::pair{&nested, 4}}) {
+        std::vector<std::uint32_t> pairs;
+        sdfPairList(code, *list, pairs);
+        EXPECT_EQ(sdfListStackDepth(code, pairs, SdfListReading::PostfixPairs), depth);
+    }
+    code.push_back(code[0]);
+    code.back().opcode = std::uint32_t(SdfOpcode::Accumulate);
+    const std::vector<std::uint32_t> parts{0, 3, 0, 1, 2, 3, 0, 3};
+    EXPECT_EQ(sdfListStackDepth(code, parts, SdfListReading::Postfix), 2);
 }
 
 // The lists two grids over the same cube run at random points of it: equal everywhere.

@@ -112,7 +112,8 @@ TEST(EditingMap, ScenesTooLargeForGeneratedCodeHaveTheCellsMapThenTheInterpreter
 // A grid whose postfix lists are all short has the cells map that reads one instruction per
 // loop iteration first, then the one for any grid, built too and drawn until the first is ready
 // (and after an edit that makes a list long); a grid with a long list has only the second, and
-// so does a union of shapes (the lean loop, one text).
+// so does a union of shapes (the lean loop, one text). A grid whose stacks are shallow too has
+// the text that fits both first; a deeper grid never draws that one, ready or not.
 TEST(EditingMap, ShortListsHaveTheirOwnCellsMapThenTheOneForAnyGrid) {
     std::string children;
     for (int i = 0; i <= kMaxGeneratedLeaves; ++i)
@@ -123,35 +124,51 @@ TEST(EditingMap, ShortListsHaveTheirOwnCellsMapThenTheOneForAnyGrid) {
     const SdfProgram lean = test::compileSdfText(R"({"children": [)" + children + "]}");
     const std::string leanMap = generateSdfMap(lean, SdfStrategy::Cells);
     ASSERT_NE(leanMap.find("SDF_CELLS_LEAN"), std::string::npos);
-    EXPECT_EQ(generateSdfMap(lean, SdfStrategy::Cells, {}, {}, SdfCellLoop::OnePerIteration),
+    EXPECT_EQ(generateSdfMap(lean, SdfStrategy::Cells, {}, {}, SdfCellFit{.shortLists = true}),
               leanMap);
     const editor::EditingMaps leanMaps = editor::chooseEditingMaps(
-        lean, lean, {}, [](const std::string&) { return false; }, SdfCellLoop::OnePerIteration);
+        lean, lean, {}, [](const std::string&) { return false; }, SdfCellFit{.shortLists = true});
     EXPECT_EQ(leanMaps.build,
               (std::vector<std::string>{leanMap, generateSdfMap(lean, SdfStrategy::Interpreter)}));
     const std::string anyGrid = generateSdfMap(large, SdfStrategy::Cells);
     const std::string shortLists =
-        generateSdfMap(large, SdfStrategy::Cells, {}, {}, SdfCellLoop::OnePerIteration);
+        generateSdfMap(large, SdfStrategy::Cells, {}, {}, SdfCellFit{.shortLists = true});
     const std::string interpreter = generateSdfMap(large, SdfStrategy::Interpreter);
     EXPECT_EQ(anyGrid.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
     EXPECT_NE(shortLists.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
     auto none = [](const std::string&) { return false; };
     const editor::EditingMaps building =
-        editor::chooseEditingMaps(large, large, {}, none, SdfCellLoop::OnePerIteration);
+        editor::chooseEditingMaps(large, large, {}, none, SdfCellFit{.shortLists = true});
     EXPECT_EQ(building.draw, "");
     EXPECT_EQ(building.build, (std::vector<std::string>{shortLists, anyGrid, interpreter}));
     const editor::EditingMaps meanwhile = editor::chooseEditingMaps(
         large, large, {}, [&](const std::string& map) { return map == anyGrid; },
-        SdfCellLoop::OnePerIteration);
+        SdfCellFit{.shortLists = true});
     EXPECT_EQ(meanwhile.draw, anyGrid);
     EXPECT_EQ(meanwhile.kind, editor::EditingMapKind::Cells);
     EXPECT_EQ(meanwhile.build, (std::vector<std::string>{shortLists, interpreter}));
     const editor::EditingMaps ready = editor::chooseEditingMaps(
-        large, large, {}, [](const std::string&) { return true; }, SdfCellLoop::OnePerIteration);
+        large, large, {}, [](const std::string&) { return true; }, SdfCellFit{.shortLists = true});
     EXPECT_EQ(ready.draw, shortLists);
     const editor::EditingMaps longLists = editor::chooseEditingMaps(
-        large, large, {}, [](const std::string&) { return true; }, SdfCellLoop::TwoPerIteration);
+        large, large, {}, [](const std::string&) { return true; }, SdfCellFit{});
     EXPECT_EQ(longLists.draw, anyGrid);
+
+    // Shallow stacks too: the text for a grid that fits both, which a deeper grid never gets.
+    const SdfCellFit both{.shortLists = true, .shallowStacks = true};
+    const std::string fitted = generateSdfMap(large, SdfStrategy::Cells, {}, {}, both);
+    EXPECT_NE(fitted.find("SDF_CELLS_SHORT_LISTS"), std::string::npos);
+    EXPECT_NE(fitted.find("SDF_CELLS_SHALLOW_STACKS"), std::string::npos);
+    EXPECT_EQ(shortLists.find("SDF_CELLS_SHALLOW_STACKS"), std::string::npos);
+    EXPECT_EQ(anyGrid.find("SDF_CELLS_SHALLOW_STACKS"), std::string::npos);
+    EXPECT_EQ(generateSdfMap(lean, SdfStrategy::Cells, {}, {}, both), leanMap); // (no stack)
+    auto all = [](const std::string&) { return true; };
+    EXPECT_EQ(editor::chooseEditingMaps(large, large, {}, all, both).draw, fitted);
+    const editor::EditingMaps deeper = editor::chooseEditingMaps(
+        large, large, {}, [&](const std::string& map) { return map != shortLists; },
+        SdfCellFit{.shortLists = true});
+    EXPECT_EQ(deeper.draw, anyGrid); // (the shallow text is ready, and not for this grid)
+    EXPECT_EQ(deeper.build, (std::vector<std::string>{shortLists}));
 }
 
 // The live range is the selected node and its subtree, inclusive, and nothing for a selection

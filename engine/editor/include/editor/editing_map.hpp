@@ -5,7 +5,7 @@
 // after a structural edit (add, delete, duplicate, regroup) and draws the edited scene in the
 // edit's own frame. Scenes too large for generated code draw with the cells map (the program
 // pruned per cell, sdf/cell_pruning.hpp), whose text too depends only on the kinds of shapes
-// (and on how long the grid's lists are: SdfCellLoop), then the interpreter. The maps that are not
+// (and on what the grid's lists fit: SdfCellFit), then the interpreter. The maps that are not
 // ready are built in the background meanwhile.
 #pragma once
 
@@ -47,13 +47,14 @@ SdfLiveRange selectionLiveRange(const Scene& scene, const Selection& selection);
 // in the SDF is selected). `isReady`: are a map's programs built (or warm in the driver's
 // cache)? Scenes too large for generated code have the cells map of `program` (the tree the
 // viewer prunes into cells, so the map reads the lists as the pruning writes them: lean or
-// postfix) and the interpreter of `interpreted`. `cellLoop`: the loop the viewer's grid of
-// `program` allows (sdfCellLoop; two per iteration while it has none): with one per iteration,
-// that map first, then the other (drawn meanwhile, and after an edit that makes a list long).
+// postfix) and the interpreter of `interpreted`. `cellFit`: what the viewer's grid of `program`
+// fits (sdfCellFit; nothing while it has none): where that is more than nothing, the map for it
+// first, then the one for any grid (drawn meanwhile, and after an edit that makes a list long
+// or deep: the first map is then one the new grid fits, or the one for any grid).
 EditingMaps chooseEditingMaps(const SdfProgram& program, const SdfProgram& interpreted,
                               const SdfLiveRange& live,
                               const std::function<bool(const std::string&)>& isReady,
-                              SdfCellLoop cellLoop = SdfCellLoop::TwoPerIteration);
+                              SdfCellFit cellFit = {});
 
 std::string_view editingMapName(EditingMapKind kind); // "baked", "buffer", "interpreter", "cells"
 

@@ -114,7 +114,9 @@ void updateSdfCells(GpuScene& gpu, const SdfCellGrid& grid);
 // (the program with the cells' code, the SDF data, the materials, the lights) and `grid` into
 // its cells (updateSdfCells), when gpu was uploaded with cells from a scene of the same shape
 // (as many instructions, data entries and materials) and neither has meshes, shells, material
-// textures or an image sky. False, with nothing written, when it does not qualify: upload anew.
+// textures or an image sky, and `grid` fits what gpu's map assumes of its lists (SdfCellFit:
+// stacks no deeper than its variables hold). False, with nothing written, when it does not
+// qualify: upload anew.
 bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellGrid& grid);
 
 } // namespace rmsc

@@ -86,6 +86,8 @@ struct SdfCellStats {
     int leafCells = 0;              // cells with a program of their own (not refined)
     double meanLength = 0.0;        // entries per leaf cell's list, mean (steps of the shader's
     int maxLength = 0;              // loop: SdfCellGrid::reading), and largest
+    int maxStack = 0;               // the deepest value stack of a leaf cell's list
+                                    // (sdfListStackDepth)
     double meanInstructions = 0.0;  // instructions per leaf cell's program, mean
     double meanLeaves = 0.0;        // shape evaluations per leaf cell's program, mean
     std::size_t uniquePrograms = 0; // distinct programs after sharing equal ones
@@ -143,6 +145,7 @@ struct SdfCellGrid {
     // operands are planes). It holds no bounding hierarchy (unless sdfCellsNeedHierarchy).
     std::uint32_t outsideOffset = 0; // in words
     std::uint32_t outsideLength = 0; // in entries
+    int outsideStack = 0;            // its value stack's depth (sdfListStackDepth)
     // How every list is read (the cells' and the outside one): the cells of a program of a
     // least-of-shapes form (sdfIsLeastOfShapes) list its shapes without their unions, which
     // the lean loop of sdf_cells.glsl would only step over; the others' lists are postfix in
@@ -172,9 +175,14 @@ struct SdfCellGrid {
 };
 
 // The most instructions a point of `grid` reads: its longest list, a cell's or the outside one
-// (which decides the map's SdfCellLoop, sdf/glsl_codegen.hpp).
+// (which decides the map's SdfCellFit, sdf/glsl_codegen.hpp).
 inline int sdfLongestCellList(const SdfCellGrid& grid) {
     return std::max(grid.stats.maxLength, int(grid.outsideLength));
+}
+// The deepest value stack a point of `grid` needs, its lists' and the outside list's (which
+// decides whether the map holds its stacks in variables: SdfCellFit, sdf/glsl_codegen.hpp).
+inline int sdfDeepestCellStack(const SdfCellGrid& grid) {
+    return std::max(grid.stats.maxStack, grid.outsideStack);
 }
 
 // A lower bound of a whole program's field from the boxes of its shapes (the floors cell

@@ -67,29 +67,38 @@ struct SdfMapNames {
     std::size_t instructionBase = 0;
 };
 
-// How the Cells map steps through a cell's postfix list (common/sdf_interpreter.glsl; the lean
-// loop of a union of shapes reads one shape an iteration whatever the lists). One instruction
-// per loop iteration is the fastest: llvmpipe runs every instruction of a loop's body for all
-// pixels, masked where a pixel's list has ended, and most lists are one or two instructions.
-// But llvmpipe also ends an invocation's loops after a budget of iterations shared by all of
-// them, which a long list would spend within a few march steps: a grid with any list longer
-// than kSdfShortCellList reads two instructions per iteration.
-enum class SdfCellLoop {
-    TwoPerIteration, // any grid
-    OnePerIteration, // a grid whose lists are all short
+// What the Cells map's text may assume of every postfix list of the grid it draws (common/
+// sdf_interpreter.glsl; the lean loop of a union of shapes needs neither). The default assumes
+// nothing and draws any grid; a grid that fits more gets faster text:
+// - shortLists: one instruction per loop iteration, the fastest: llvmpipe runs every instruction
+//   of a loop's body for all pixels, masked where a pixel's list has ended, and most lists are
+//   one or two instructions. But llvmpipe also ends an invocation's loops after a budget of
+//   iterations shared by all of them, which a long list would spend within a few march steps:
+//   a grid with any list longer than kSdfShortCellList reads two instructions per iteration.
+// - shallowStacks: the value stacks in variables, where every list's is at most
+//   kSdfRegisterStack deep (sdf/program.hpp). llvmpipe keeps an array indexed by a value that
+//   differs between pixels in memory, one pixel at a time; the variables cost a few selects.
+//   Deeper lists would overrun them: such a grid must not be drawn with that text.
+struct SdfCellFit {
+    bool shortLists = false;
+    bool shallowStacks = false;
+    bool operator==(const SdfCellFit&) const = default;
 };
 constexpr int kSdfShortCellList = 64;
-// The loop for a grid whose longest list (the outside list included) has `longestList`
-// instructions.
-constexpr SdfCellLoop sdfCellLoop(int longestList) {
-    return longestList <= kSdfShortCellList ? SdfCellLoop::OnePerIteration
-                                            : SdfCellLoop::TwoPerIteration;
+// What a grid whose longest list (the outside list included) has `longestList` entries, and
+// whose deepest value stack is `deepestStack` (sdfLongestCellList, sdfDeepestCellStack in
+// sdf/cell_pruning.hpp), fits.
+constexpr SdfCellFit sdfCellFit(int longestList, int deepestStack) {
+    return {longestList <= kSdfShortCellList, deepestStack <= kSdfRegisterStack};
 }
 
-// `cellLoop` applies to the Cells strategy's postfix lists only: the text is one of two for
+// `cellFit` applies to the Cells strategy's postfix lists only: the text is one of four for
 // every program of the same primitive kinds.
 std::string generateSdfMap(const SdfProgram& program, SdfStrategy strategy,
                            const SdfMapNames& names = {}, const SdfLiveRange& live = {},
-                           SdfCellLoop cellLoop = SdfCellLoop::TwoPerIteration);
+                           SdfCellFit cellFit = {});
+// What a map's text (generateSdfMap's) assumes of the lists of the grid it draws: nothing for
+// any other strategy, nor for the lean loop.
+SdfCellFit sdfMapCellFit(std::string_view map);
 
 } // namespace rmsc

@@ -18,6 +18,9 @@ namespace rmsc {
 // Stack size of the GLSL interpreter (SDF_MAX_STACK; the shaders' copies of these numbers are
 // generated, sdf/glsl_constants.hpp).
 constexpr int kSdfMaxStack = limits::kSdfStack;
+// The deepest value stack the Cells map holds in variables instead of an array, where every
+// list of its grid is that shallow (SdfCellFit, sdf/glsl_codegen.hpp; SDF_REGISTER_STACK).
+constexpr int kSdfRegisterStack = 5;
 // Most instructions one scene may compile to.
 constexpr int kSdfMaxInstructions = limits::kSdfInstructions;
 // Point stack of the GLSL interpreter (SDF_MAX_POINT_STACK): how deep PushPoint may nest.
@@ -169,5 +172,10 @@ void sdfListProgram(std::span<const GpuSdfInstruction> code, std::span<const std
 // How many instructions that is (without making them).
 std::size_t sdfListInstructionCount(std::span<const GpuSdfInstruction> code,
                                     std::span<const std::uint32_t> words, SdfListReading reading);
+// The most entries the shader's value stack holds while it reads `words` (a list of `code`'s
+// read as `reading`): a shape or profile pushes one, a combine and Accumulate pop one. 0 for
+// LeastOfShapes, which the shader reads as a running minimum.
+int sdfListStackDepth(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> words,
+                      SdfListReading reading);
 
 } // namespace rmsc
