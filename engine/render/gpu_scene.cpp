@@ -119,8 +119,7 @@ bool updateSdfScene(GpuScene& gpu, const PreparedScene& prepared, const SdfCellG
         return false;
     // A grid deeper than the drawn map's stack variables (an edit moved shapes together) needs
     // the map for it: the variables would lose stack entries.
-    if (sdfMapCellFit(gpu.sdfMap).shallowStacks && sdfDeepestCellStack(grid) > kSdfRegisterStack)
-        return false;
+    if (sdfMapCellFit(gpu.sdfMap).shallowStacks && !sdfCellFit(grid).shallowStacks) return false;
     GpuSdfHeader sdfHeader;
     sdfHeader.instructionCount = std::uint32_t(prepared.sdf.instructions.size());
     sdfHeader.stackDepth = std::uint32_t(prepared.sdf.stackDepth);
@@ -280,9 +279,7 @@ GpuScene uploadScene(const PreparedScene& prepared, SdfStrategy strategy, const 
     gpu.sdfData =
         gl::createBufferWithData(GLsizeiptr(sdfData.size() * sizeof(glm::vec4)), sdfData.data());
     gpu.sdfProgram = createSdfProgramBuffer(sdfHeader, sceneCode, shellCode);
-    gpu.sdfMap = generateSdfMap(
-        drawn, strategy, {}, {},
-        pruned ? sdfCellFit(sdfLongestCellList(grid), sdfDeepestCellStack(grid)) : SdfCellFit{});
+    gpu.sdfMap = generateSdfMap(drawn, strategy, {}, {}, pruned ? sdfCellFit(grid) : SdfCellFit{});
     if (pruned) {
         GpuSdfCellHeader header;
         header.originSize = glm::vec4(grid.origin, grid.size);

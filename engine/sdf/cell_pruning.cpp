@@ -1033,6 +1033,7 @@ void appendOutsideList(SdfCellGrid& grid, std::span<const std::uint32_t> list) {
     grid.outsideOffset = std::uint32_t(grid.words.size());
     grid.outsideLength = std::uint32_t(sdfListEntries(list.size(), grid.reading));
     grid.outsideStack = sdfListStackDepth(grid.code, list, grid.reading);
+    grid.outsidePointStack = sdfListPointStackDepth(grid.code, list, grid.reading);
     grid.words.insert(grid.words.end(), list.begin(), list.end());
 }
 
@@ -1209,7 +1210,7 @@ struct SdfCellState {
     // eighth more blocks) and how many list words it held, each block's statistics, and which
     // blocks' entries changed since.
     struct BlockStats {
-        int leafCells = 0, maxLength = 0, maxStack = 0, affineCells = 0;
+        int leafCells = 0, maxLength = 0, maxStack = 0, maxPointStack = 0, affineCells = 0;
         long length = 0, instructions = 0, leaves = 0;
     };
     std::uint64_t packStamp = 0;
@@ -1761,6 +1762,8 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
                 std::span(s.lists).subspan(e, sdfListWords(length, s.reading()));
             stats.instructions += long(sdfListInstructionCount(s.code, list, s.reading()));
             stats.maxStack = std::max(stats.maxStack, sdfListStackDepth(s.code, list, s.reading()));
+            stats.maxPointStack =
+                std::max(stats.maxPointStack, sdfListPointStackDepth(s.code, list, s.reading()));
             stats.leaves += long(s.cellLeaves[k]);
             stats.maxLength = std::max(stats.maxLength, int(length));
         }
@@ -1792,6 +1795,7 @@ void packGrid(SdfCellState& s, SdfCellGrid& grid) {
         totalLeaves += stats.leaves;
         grid.stats.maxLength = std::max(grid.stats.maxLength, stats.maxLength);
         grid.stats.maxStack = std::max(grid.stats.maxStack, stats.maxStack);
+        grid.stats.maxPointStack = std::max(grid.stats.maxPointStack, stats.maxPointStack);
     }
     while (!grid.stats.cellsPerLevel.empty() && grid.stats.cellsPerLevel.back() == 0)
         grid.stats.cellsPerLevel.pop_back();

@@ -55,6 +55,7 @@ std::vector<GlslConstant> sdfGlslConstants() {
         {"SDF_MAX_STACK", glslInt(kSdfMaxStack)},
         {"SDF_MAX_POINT_STACK", glslInt(kSdfMaxPointStack)},
         {"SDF_REGISTER_STACK", glslInt(kSdfRegisterStack)},
+        {"SDF_REGISTER_POINT_STACK", glslInt(kSdfRegisterPointStack)},
         {"SDF_UNIFORM_INSTRUCTIONS", glslInt(kSdfUniformInstructions)},
         {"SDF_FAR", glslFloat(kSdfFar)},
         {"SDF_CELL_MAX_LEVELS", glslInt(limits::kSdfCellLevels)},

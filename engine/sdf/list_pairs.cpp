@@ -110,4 +110,18 @@ int sdfListStackDepth(std::span<const GpuSdfInstruction> code, std::span<const s
     return most;
 }
 
+int sdfListPointStackDepth(std::span<const GpuSdfInstruction> code,
+                           std::span<const std::uint32_t> words, SdfListReading reading) {
+    const bool pairs = reading == SdfListReading::PostfixPairs;
+    int top = 0, most = 0;
+    for (std::size_t n = 0; n < words.size(); n += pairs ? 2 : 1) {
+        const SdfOpcode opcode = SdfOpcode(code[pairs ? sdfEntryIndex(words[n]) : words[n]].opcode);
+        if (opcode == SdfOpcode::PushPoint)
+            most = std::max(most, ++top);
+        else if (opcode == SdfOpcode::PopPoint)
+            --top;
+    }
+    return most;
+}
+
 } // namespace rmsc

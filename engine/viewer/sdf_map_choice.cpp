@@ -39,9 +39,7 @@ void ViewRenderer::chooseSdfMap(const SdfLiveRange& live, bool waitForBuilds, in
         return !cellsPending && (!warmer_ || first || renderer_->hasPrograms(shading, map) ||
                                  warmer_->isWarm(shading, map));
     };
-    const SdfCellFit cellFit =
-        cellGrid_ ? sdfCellFit(sdfLongestCellList(*cellGrid_), sdfDeepestCellStack(*cellGrid_))
-                  : SdfCellFit{};
+    const SdfCellFit cellFit = cellGrid_ ? sdfCellFit(*cellGrid_) : SdfCellFit{};
     editor::EditingMaps maps =
         editor::chooseEditingMaps(prepared_->sdf, *boundedSdf_, live, isReady, cellFit);
     if (warmer_) {

@@ -24,19 +24,21 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #ifndef SDF_LIST_PAIRS
 #define SDF_LIST_ENTRY(base, n) uvec2(SDF_PROGRAM_AT((base) + (n)), 0u)
 #endif
-// The value stacks below their top entry, which the interpreters hold in a variable of its own:
-// entry k of `name` (k from 0, the bottom). An array, which llvmpipe keeps in memory and reads or
-// writes one pixel at a time where the index differs between pixels (each of a surface's fields
-// too). Where every list of the cells' grid is at most SDF_REGISTER_STACK deep
-// (SDF_CELLS_SHALLOW_STACKS, engine/sdf/glsl_codegen.cpp: SdfCellFit), the entries below the top
-// are that many less one variables instead, read and written through selects: the 4,096-sphere
-// tree's frame about a sixth faster (docs/performance.md). SDF_STACK_SET's value is read once per
-// variable: pass a variable.
+// The stacks: the value stacks below their top entry, which the interpreters hold in a variable
+// of its own, and the point stacks; entry k of `name` (k from 0, the bottom). An array of `size`,
+// which llvmpipe keeps in memory and reads or writes one pixel at a time where the index differs
+// between pixels (each of a surface's fields too). Where every list of the cells' grid has a
+// value stack at most SDF_REGISTER_STACK deep and a point stack at most SDF_REGISTER_POINT_STACK
+// (SDF_CELLS_SHALLOW_STACKS, engine/sdf/glsl_codegen.cpp: SdfCellFit), four variables instead,
+// read and written through selects (docs/performance.md: the 4,096-sphere tree's frame and the
+// 1,000 mixed shapes' about a seventh faster). SDF_STACK_SET's value is read once per variable:
+// pass a variable.
 #ifdef SDF_CELLS_SHALLOW_STACKS
-#if SDF_REGISTER_STACK != 5
-#error "the shallow stacks hold SDF_REGISTER_STACK - 1 entries: write them out"
+#if SDF_REGISTER_STACK != 5 || SDF_REGISTER_POINT_STACK != 4
+#error "the shallow stacks hold four entries below the top and four points: write them out"
 #endif
-#define SDF_STACK(T, name, init) T name##0 = init, name##1 = init, name##2 = init, name##3 = init
+#define SDF_STACK(T, name, size, init) \
+    T name##0 = init, name##1 = init, name##2 = init, name##3 = init
 #define SDF_STACK_GET(name, k) \
     ((k) == 0 ? name##0 : (k) == 1 ? name##1 : (k) == 2 ? name##2 : name##3)
 #define SDF_STACK_SET(name, k, value) \
@@ -48,7 +50,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
         name##3 = k_ == 3 ? (value) : name##3; \
     }
 #else
-#define SDF_STACK(T, name, init) T name[SDF_MAX_STACK]
+#define SDF_STACK(T, name, size, init) T name[size]
 #define SDF_STACK_GET(name, k) name[k]
 #define SDF_STACK_SET(name, k, value) name[k] = (value)
 #endif
@@ -81,12 +83,12 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 #if SDF_HAS_POINT_FRAMES
 #define SDF_DISTANCE_STEP_FRAMES \
     else if (op == SDF_OPCODE_PUSH_POINT) { \
-        saved[savedTop] = p; \
+        SDF_STACK_SET(saved, savedTop, p); \
         ++savedTop; \
         p = sdfInstructionPointOf(data, p); \
     } else if (op == SDF_OPCODE_POP_POINT) { \
         --savedTop; \
-        p = saved[savedTop]; \
+        p = SDF_STACK_GET(saved, savedTop); \
     }
 #else
 #define SDF_DISTANCE_STEP_FRAMES
@@ -159,10 +161,10 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 float sdfListDistanceLast(vec3 p, uint base, uint count, out SdfInstructionData last) {
     if (count == 0u) return SDF_FAR;
     // The stack's top entry is `value`, the ones below it in `stack` (SDF_STACK).
-    SDF_STACK(float, stack, SDF_FAR);
+    SDF_STACK(float, stack, SDF_MAX_STACK, SDF_FAR);
     float value = SDF_FAR;
     int top = 0; // entries in all, the top one included
-    vec3 saved[SDF_MAX_POINT_STACK];
+    SDF_STACK(vec3, saved, SDF_MAX_POINT_STACK, vec3(0.0));
     int savedTop = 0;
     float best = SDF_FAR; // what SDF_OPCODE_ACCUMULATE unites into
     // Eight instructions per loop iteration: Mesa's llvmpipe ends a shader invocation's loops
@@ -234,8 +236,11 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     // and `tapStack` (SDF_STACK): an operation reads one entry below the top instead of two and
     // writes none.
     int top = 0; // entries in all, the top one included
-    vec3 saved[SDF_MAX_POINT_STACK];
-    vec3 savedTaps[4 * SDF_MAX_POINT_STACK];
+    SDF_STACK(vec3, saved, SDF_MAX_POINT_STACK, vec3(0.0));
+    SDF_STACK(vec3, savedTap0, SDF_MAX_POINT_STACK, vec3(0.0)); // the taps', one stack each
+    SDF_STACK(vec3, savedTap1, SDF_MAX_POINT_STACK, vec3(0.0));
+    SDF_STACK(vec3, savedTap2, SDF_MAX_POINT_STACK, vec3(0.0));
+    SDF_STACK(vec3, savedTap3, SDF_MAX_POINT_STACK, vec3(0.0));
     int savedTop = 0;
     vec3 t0 = p + h * sdfTetrahedronVertex(0), t1 = p + h * sdfTetrahedronVertex(1);
     vec3 t2 = p + h * sdfTetrahedronVertex(2), t3 = p + h * sdfTetrahedronVertex(3);
@@ -243,8 +248,8 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
     vec4 bestTaps = vec4(SDF_FAR);
     SdfSurface surface = best; // (read only if the program pushes nothing)
     vec4 surfaceTaps = bestTaps;
-    SDF_STACK(SdfSurface, stack, best);
-    SDF_STACK(vec4, tapStack, bestTaps);
+    SDF_STACK(SdfSurface, stack, SDF_MAX_STACK, best);
+    SDF_STACK(vec4, tapStack, SDF_MAX_STACK, bestTaps);
     for (uint n = 0u; n < count; ++n) {
         uvec2 entry = SDF_LIST_ENTRY(base, n);
         SdfInstructionData data = sdfInstructionData(SDF_ENTRY_INDEX(entry));
@@ -275,13 +280,13 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
 #endif
 #if SDF_HAS_POINT_FRAMES
         else if (op == SDF_OPCODE_PUSH_POINT) {
-            saved[savedTop] = p;
+            SDF_STACK_SET(saved, savedTop, p);
             p = sdfInstructionPointOf(data, p);
             if (withTaps) {
-                savedTaps[4 * savedTop] = t0;
-                savedTaps[4 * savedTop + 1] = t1;
-                savedTaps[4 * savedTop + 2] = t2;
-                savedTaps[4 * savedTop + 3] = t3;
+                SDF_STACK_SET(savedTap0, savedTop, t0);
+                SDF_STACK_SET(savedTap1, savedTop, t1);
+                SDF_STACK_SET(savedTap2, savedTop, t2);
+                SDF_STACK_SET(savedTap3, savedTop, t3);
                 t0 = sdfInstructionPointOf(data, t0);
                 t1 = sdfInstructionPointOf(data, t1);
                 t2 = sdfInstructionPointOf(data, t2);
@@ -290,12 +295,12 @@ SdfSurface sdfSurfaceRead(vec3 p, float h, bool withTaps, out vec4 taps) {
             ++savedTop;
         } else if (op == SDF_OPCODE_POP_POINT) {
             --savedTop;
-            p = saved[savedTop];
+            p = SDF_STACK_GET(saved, savedTop);
             if (withTaps) {
-                t0 = savedTaps[4 * savedTop];
-                t1 = savedTaps[4 * savedTop + 1];
-                t2 = savedTaps[4 * savedTop + 2];
-                t3 = savedTaps[4 * savedTop + 3];
+                t0 = SDF_STACK_GET(savedTap0, savedTop);
+                t1 = SDF_STACK_GET(savedTap1, savedTop);
+                t2 = SDF_STACK_GET(savedTap2, savedTop);
+                t3 = SDF_STACK_GET(savedTap3, savedTop);
             }
         }
 #endif

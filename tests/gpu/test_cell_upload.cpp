@@ -149,6 +149,7 @@ TEST(CellUpload, AnEditOfNumbersIsWrittenIntoTheSceneInPlace) {
 // there list all seven, seven leaves before the first combine). updateSdfScene refuses; a new
 // upload gets the map for any grid.
 TEST(CellUpload, AnEditThatDeepensTheListsIsNotWrittenIntoShallowStacks) {
+    sharedRenderer(); // (the context the uploads need)
     std::string nested;
     for (int i = 6; i >= 0; --i) {
         const std::string sphere =

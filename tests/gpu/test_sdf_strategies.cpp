@@ -437,6 +437,24 @@ TEST(SdfStrategies, CellsOfModifiedShapesAndBakedDrawTheSameImage) {
     ASSERT_NE(map.find("#define SDF_HAS_DISTANCE_MODIFIERS 1"), std::string::npos) << map;
     ASSERT_NE(map.find("#define SDF_HAS_POINT_FRAMES 1"), std::string::npos) << map;
     expectSameImages(prepared, SdfStrategy::Baked, SdfStrategy::Cells, "strategy_cells_modifiers");
+
+    // Its frames' points are pushed: held in variables (SdfCellFit::shallowStacks), they draw
+    // exactly what the arrays of the map for any grid draw.
+    Renderer& renderer = sharedRenderer();
+    GpuScene gpu = uploadScene(prepared, SdfStrategy::Cells);
+    EXPECT_GT(gpu.sdfCellStats.maxPointStack, 0);
+    const SdfCellFit fit = sdfMapCellFit(gpu.sdfMap);
+    EXPECT_TRUE(fit.shallowStacks);
+    FrameTargets variables = createFrameTargets(160, 96);
+    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, variables);
+    gpu.sdfMap =
+        generateSdfMap(prepared.sdf, SdfStrategy::Cells, {}, {}, {.shortLists = fit.shortLists});
+    FrameTargets arrays = createFrameTargets(160, 96);
+    renderer.render(gpu, prepared.scene.camera, prepared.scene.render, arrays);
+    expectNoGlErrors();
+    EXPECT_TRUE(imagesMatch(readDisplayColor(variables), readDisplayColor(arrays),
+                            "strategy_cells_modifiers_shallow_stacks", {0, 0.0}));
+    EXPECT_EQ(readObjectIds(variables).data, readObjectIds(arrays).data);
 }
 
 TEST(SdfStrategies, ParameterEditsReuseTheProgramStructuralEditsCompile) {

@@ -376,19 +376,19 @@ TEST(CellPruning, TheLongestListDecidesTheLoop) {
     const SdfCellGrid short_ = buildSdfCells(a->program, sdfContentBox(*a->scene.sdf));
     EXPECT_GT(short_.levels, 0);
     EXPECT_LE(sdfLongestCellList(short_), kSdfShortCellList);
-    EXPECT_TRUE(sdfCellFit(sdfLongestCellList(short_), 0).shortLists);
+    EXPECT_TRUE(sdfCellFit(short_).shortLists);
 
     const SdfCellGrid overlapping = buildSdfCells(t->program, sdfContentBox(*t->scene.sdf));
     EXPECT_GT(overlapping.levels, 0);
     EXPECT_GT(overlapping.stats.maxLength, kSdfShortCellList);
     EXPECT_EQ(sdfLongestCellList(overlapping), overlapping.stats.maxLength);
-    EXPECT_FALSE(sdfCellFit(sdfLongestCellList(overlapping), 0).shortLists);
+    EXPECT_FALSE(sdfCellFit(overlapping).shortLists);
 
     const SdfCellGrid none = buildSdfCells(a->program, Aabb{});
     EXPECT_EQ(none.levels, 0);
     EXPECT_EQ(none.stats.maxLength, 0);
     EXPECT_GT(int(none.outsideLength), kSdfShortCellList);
-    EXPECT_FALSE(sdfCellFit(sdfLongestCellList(none), 0).shortLists);
+    EXPECT_FALSE(sdfCellFit(none).shortLists);
 }
 
 // The map holds its value stacks in variables (sdf/glsl_codegen.hpp, SdfCellFit::shallowStacks)
@@ -422,8 +422,7 @@ TEST(CellPruning, TheDeepestListDecidesTheStacks) {
         ASSERT_GT(grid.levels, 0);
         EXPECT_EQ(grid.stats.maxStack, depth);
         EXPECT_EQ(sdfDeepestCellStack(grid), depth);
-        EXPECT_EQ(sdfCellFit(sdfLongestCellList(grid), sdfDeepestCellStack(grid)).shallowStacks,
-                  depth <= kSdfRegisterStack);
+        EXPECT_EQ(sdfCellFit(grid).shallowStacks, depth <= kSdfRegisterStack);
         // The cell at the spheres' middle lists them all; no cell lists a deeper one.
         const std::span<const std::uint32_t> middle =
             sdfCellWords(grid, sdfCellRange(grid, glm::vec3(0.03f, 0.0f, 0.0f)));
@@ -462,6 +461,41 @@ TEST(CellPruning, AListsStackDepthFollowsItsReading) {
     code.back().opcode = std::uint32_t(SdfOpcode::Accumulate);
     const std::vector<std::uint32_t> parts{0, 3, 0, 1, 2, 3, 0, 3};
     EXPECT_EQ(sdfListStackDepth(code, parts, SdfListReading::Postfix), 2);
+
+    // Point frames: PushPoint pushes a point, PopPoint pops it, whatever the reading.
+    code.push_back(code[0]);
+    code.back().opcode = std::uint32_t(SdfOpcode::PushPoint);
+    code.push_back(code[0]);
+    code.back().opcode = std::uint32_t(SdfOpcode::PopPoint);
+    const std::vector<std::uint32_t> frames{4, 4, 0, 5, 4, 1, 5, 2, 5};
+    EXPECT_EQ(sdfListPointStackDepth(code, frames, SdfListReading::Postfix), 2);
+    EXPECT_EQ(sdfListStackDepth(code, frames, SdfListReading::Postfix), 2);
+    std::vector<std::uint32_t> pairs;
+    sdfPairList(code, frames, pairs);
+    EXPECT_EQ(sdfListPointStackDepth(code, pairs, SdfListReading::PostfixPairs), 2);
+}
+
+// The point stack decides too: a sphere in five nested groups, each twisted (a point modifier:
+// the group's point is pushed, sdf/sdf_emit.cpp) and holding a second sphere, is five points
+// deep in the cells by the innermost sphere; SdfCellFit keeps its stacks in arrays. Four groups
+// fit.
+TEST(CellPruning, TheDeepestPointStackDecidesTheStacksToo) {
+    for (const int groups : {4, 5}) {
+        std::string tree = R"({"shape": "sphere", "radius": 0.3})";
+        for (int i = 0; i < groups; ++i)
+            tree = R"({"op": "smooth_union", "smoothness": 0.1, "modifiers": [{"type": "twist",
+                "amount": )" +
+                   std::to_string(10 + 5 * i) + R"(, "radius": 0.5}], "children": [)" + tree +
+                   R"(, {"shape": "sphere", "radius": 0.2, "position": [0.4, 0, 0]}]})";
+        const std::optional<Compiled> compiled = compileText(tree, false);
+        ASSERT_TRUE(compiled);
+        const SdfCellGrid grid =
+            buildSdfCells(compiled->program, sdfContentBox(*compiled->scene.sdf));
+        ASSERT_GT(grid.levels, 0);
+        EXPECT_EQ(sdfDeepestCellPointStack(grid), groups);
+        EXPECT_LE(sdfDeepestCellStack(grid), kSdfRegisterStack);
+        EXPECT_EQ(sdfCellFit(grid).shallowStacks, groups <= kSdfRegisterPointStack);
+    }
 }
 
 // The lists two grids over the same cube run at random points of it: equal everywhere.

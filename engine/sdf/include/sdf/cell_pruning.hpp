@@ -88,6 +88,7 @@ struct SdfCellStats {
     int maxLength = 0;              // loop: SdfCellGrid::reading), and largest
     int maxStack = 0;               // the deepest value stack of a leaf cell's list
                                     // (sdfListStackDepth)
+    int maxPointStack = 0;          // and point stack (sdfListPointStackDepth)
     double meanInstructions = 0.0;  // instructions per leaf cell's program, mean
     double meanLeaves = 0.0;        // shape evaluations per leaf cell's program, mean
     std::size_t uniquePrograms = 0; // distinct programs after sharing equal ones
@@ -146,6 +147,7 @@ struct SdfCellGrid {
     std::uint32_t outsideOffset = 0; // in words
     std::uint32_t outsideLength = 0; // in entries
     int outsideStack = 0;            // its value stack's depth (sdfListStackDepth)
+    int outsidePointStack = 0;       // and point stack's (sdfListPointStackDepth)
     // How every list is read (the cells' and the outside one): the cells of a program of a
     // least-of-shapes form (sdfIsLeastOfShapes) list its shapes without their unions, which
     // the lean loop of sdf_cells.glsl would only step over; the others' lists are postfix in
@@ -183,6 +185,9 @@ inline int sdfLongestCellList(const SdfCellGrid& grid) {
 // decides whether the map holds its stacks in variables: SdfCellFit, sdf/glsl_codegen.hpp).
 inline int sdfDeepestCellStack(const SdfCellGrid& grid) {
     return std::max(grid.stats.maxStack, grid.outsideStack);
+}
+inline int sdfDeepestCellPointStack(const SdfCellGrid& grid) {
+    return std::max(grid.stats.maxPointStack, grid.outsidePointStack);
 }
 
 // A lower bound of a whole program's field from the boxes of its shapes (the floors cell

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/limits.hpp"
+#include "sdf/cell_pruning.hpp"
 #include "sdf/program.hpp"
 
 #include <cstdint>
@@ -75,21 +76,23 @@ struct SdfMapNames {
 //   one or two instructions. But llvmpipe also ends an invocation's loops after a budget of
 //   iterations shared by all of them, which a long list would spend within a few march steps:
 //   a grid with any list longer than kSdfShortCellList reads two instructions per iteration.
-// - shallowStacks: the value stacks in variables, where every list's is at most
-//   kSdfRegisterStack deep (sdf/program.hpp). llvmpipe keeps an array indexed by a value that
-//   differs between pixels in memory, one pixel at a time; the variables cost a few selects.
-//   Deeper lists would overrun them: such a grid must not be drawn with that text.
+// - shallowStacks: the value and point stacks in variables, where every list's are at most
+//   kSdfRegisterStack and kSdfRegisterPointStack deep (sdf/program.hpp). llvmpipe keeps an array
+//   indexed by a value that differs between pixels in memory, one pixel at a time; the variables
+//   cost a few selects. Deeper lists would overrun them: such a grid must not be drawn with that
+//   text.
 struct SdfCellFit {
     bool shortLists = false;
     bool shallowStacks = false;
     bool operator==(const SdfCellFit&) const = default;
 };
 constexpr int kSdfShortCellList = 64;
-// What a grid whose longest list (the outside list included) has `longestList` entries, and
-// whose deepest value stack is `deepestStack` (sdfLongestCellList, sdfDeepestCellStack in
-// sdf/cell_pruning.hpp), fits.
-constexpr SdfCellFit sdfCellFit(int longestList, int deepestStack) {
-    return {longestList <= kSdfShortCellList, deepestStack <= kSdfRegisterStack};
+// What a grid fits: its longest list, deepest value stack and deepest point stack, the outside
+// list's included (sdfLongestCellList, sdfDeepestCellStack, sdfDeepestCellPointStack).
+inline SdfCellFit sdfCellFit(const SdfCellGrid& grid) {
+    return {sdfLongestCellList(grid) <= kSdfShortCellList,
+            sdfDeepestCellStack(grid) <= kSdfRegisterStack &&
+                sdfDeepestCellPointStack(grid) <= kSdfRegisterPointStack};
 }
 
 // `cellFit` applies to the Cells strategy's postfix lists only: the text is one of four for

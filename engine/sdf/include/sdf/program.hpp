@@ -21,6 +21,8 @@ constexpr int kSdfMaxStack = limits::kSdfStack;
 // The deepest value stack the Cells map holds in variables instead of an array, where every
 // list of its grid is that shallow (SdfCellFit, sdf/glsl_codegen.hpp; SDF_REGISTER_STACK).
 constexpr int kSdfRegisterStack = 5;
+// The same for the point stack (SDF_REGISTER_POINT_STACK): how deep PushPoint may nest there.
+constexpr int kSdfRegisterPointStack = 4;
 // Most instructions one scene may compile to.
 constexpr int kSdfMaxInstructions = limits::kSdfInstructions;
 // Point stack of the GLSL interpreter (SDF_MAX_POINT_STACK): how deep PushPoint may nest.
@@ -177,5 +179,8 @@ std::size_t sdfListInstructionCount(std::span<const GpuSdfInstruction> code,
 // LeastOfShapes, which the shader reads as a running minimum.
 int sdfListStackDepth(std::span<const GpuSdfInstruction> code, std::span<const std::uint32_t> words,
                       SdfListReading reading);
+// The same for the point stack: PushPoint pushes, PopPoint pops (in every reading).
+int sdfListPointStackDepth(std::span<const GpuSdfInstruction> code,
+                           std::span<const std::uint32_t> words, SdfListReading reading);
 
 } // namespace rmsc
