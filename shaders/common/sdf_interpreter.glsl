@@ -31,7 +31,7 @@ void sdfProgramRange(vec3 p, out uint base, out uint count) {
 // value stack at most SDF_REGISTER_STACK deep and a point stack at most SDF_REGISTER_POINT_STACK
 // (SDF_CELLS_SHALLOW_STACKS, engine/sdf/glsl_codegen.cpp: SdfCellFit), four variables instead,
 // read and written through selects (docs/performance.md: the 4,096-sphere tree's frame and the
-// 1,000 mixed shapes' about a seventh faster). SDF_STACK_SET's value is read once per variable:
+// 1,000 mixed shapes' about a sixth faster). SDF_STACK_SET's value is read once per variable:
 // pass a variable.
 #ifdef SDF_CELLS_SHALLOW_STACKS
 #if SDF_REGISTER_STACK != 5 || SDF_REGISTER_POINT_STACK != 4
