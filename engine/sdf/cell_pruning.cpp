@@ -992,16 +992,9 @@ void pruneCellDirect(const Pruner& pr, const DirectChain& d, glm::vec3 c, float 
     }
 }
 
-// The value-stack depth a list needs.
+// The value-stack depth a postfix list needs.
 int stackDepth(const std::vector<GpuSdfInstruction>& code, std::span<const std::uint32_t> list) {
-    int top = 0, most = 0;
-    for (std::uint32_t i : list) {
-        if (isLeafOpcode(code[i].opcode))
-            most = std::max(most, ++top);
-        else if (SdfOpcode(code[i].opcode) == SdfOpcode::Combine)
-            --top;
-    }
-    return most;
+    return sdfListStackDepth(code, list, SdfListReading::Postfix);
 }
 
 void collectContent(const SdfNode& node, const glm::mat4& parentToWorld, Aabb& box) {
