@@ -213,7 +213,30 @@ struct NodeFloor {
     Aabb box;
     float drop = 0.0f;
     bool valid = false;
+    // A chain of smooth unions (smoothChainDrop): the largest drop of its other operands, and
+    // its largest smoothness; chainBase < 0 where the node is no such chain.
+    float chainBase = -1.0f;
+    float chainSmoothness = 0.0f;
 };
+
+// The drop of a chain of smooth unions, each with one operand that is no such chain
+// (((a u b) u c) u d ...: how a group's children are folded). Each union dips up to k/4 below
+// the least of its operands (operationFloor), which a chain of a thousand added up to 250 k (the
+// 1,000-sphere molecule's floor dropped 30 units: no floor at all). But the smooth minimum,
+// polynomial or circular (shaders/common/sdf_functions.glsl, sdfSmoothMin), is the least of its
+// operands where they are k or more apart, and grows with each of them. So with every other
+// operand at least m = distance(y, box) - base (base: the largest of their drops), and the chain
+// below at least m - K (K: the chain's largest smoothness; by induction, a lone operand being at
+// least m), the union is at least smin_k(m - K, m) = m - K: the chain's drop is at most
+// base + K, however long it is.
+void smoothChainDrop(const NodeFloor& a, const NodeFloor& b, float k, NodeFloor& f) {
+    if (a.chainBase >= 0.0f && b.chainBase >= 0.0f) return; // two chains: the rule's drop
+    const float base = std::max(a.chainBase >= 0.0f ? a.chainBase : a.drop,
+                                b.chainBase >= 0.0f ? b.chainBase : b.drop);
+    f.chainBase = base;
+    f.chainSmoothness = std::max({k, a.chainSmoothness, b.chainSmoothness});
+    f.drop = std::min(f.drop, base + f.chainSmoothness);
+}
 
 // The affine matrix whose rows are worldToLocal, inverted: local to world.
 glm::mat4 localToWorld(const GpuSdfInstruction& in) {
@@ -278,6 +301,9 @@ NodeFloor nodeFloor(const std::vector<GpuSdfInstruction>& code, const ProgramTre
             f.box.add(b.box);
             f.drop = rule.dropScale * std::max(a.drop, b.drop) + rule.smoothnessDrop * k;
             f.valid = true;
+            const OperationSpec& spec = operationSpec(SdfOp(in.kind));
+            if (spec.combination == SdfOpCombination::Union && spec.seam == SdfOpSeam::Smooth)
+                smoothChainDrop(a, b, k, f);
         }
         break;
     }

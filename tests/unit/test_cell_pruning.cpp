@@ -758,6 +758,89 @@ TEST(CellPruning, MovingOneShapeAmongGroupsWithoutFloorsPrunesFewCellsAgain) {
     EXPECT_LT(r.grid.stats.prunedCells * 4, r.fullCells);
 }
 
+// Outside its floor's box a program is at least the distance to the box less the drop
+// (sdfProgramFloor). At random points around the floor's box: is it?
+void expectFloorHolds(const SdfProgram& program, const SdfFieldFloor& floor, std::mt19937& rng,
+                      const std::string& what, float* deepest = nullptr) {
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), far(0.0f, 1.5f);
+    const glm::vec3 centre = floor.box.center(), half = floor.box.halfSize();
+    for (int i = 0; i < 3000; ++i) {
+        // On the box's faces' axes too, where a box's distance is a round shape's.
+        glm::vec3 direction(u(rng), u(rng), u(rng));
+        if (i % 3 == 0) {
+            direction = glm::vec3(0.0f);
+            direction[i % 9 / 3] = i % 2 ? 1.0f : -1.0f;
+        }
+        if (glm::length(direction) < 1e-3f) continue;
+        direction = glm::normalize(direction);
+        const glm::vec3 reach = glm::abs(direction) / glm::max(half, glm::vec3(1e-6f));
+        const glm::vec3 onFace = centre + direction / std::max({reach.x, reach.y, reach.z});
+        const glm::vec3 p = onFace + direction * far(rng);
+        const glm::vec3 away = glm::max(glm::max(floor.box.min - p, p - floor.box.max), 0.0f);
+        const float boxDistance = glm::length(away);
+        if (boxDistance <= 0.0f) continue;
+        const float field = sdfDistance(program, p);
+        ASSERT_GE(field, boxDistance - floor.drop - 1e-5f) << what << " at " << i;
+        if (deepest) *deepest = std::max(*deepest, boxDistance - field);
+    }
+}
+
+// A chain of smooth unions, as a group's children are folded, dips below the least of its
+// operands by at most its largest smoothness, however long it is (smoothChainDrop in
+// engine/sdf/cell_pruning.cpp): its floor's drop is that, where each union's own rule added
+// k / 4 a link (the molecule of 1,000 spheres: 30 units). Spheres at one place make the chain dip
+// the most (towards the least minus k), and the floor still holds; so it does on random trees
+// of smooth and plain unions, chains of chains among them, and on random trees of every
+// operation.
+TEST(CellPruning, AChainOfSmoothUnionsDropsByItsSmoothnessNotItsLength) {
+    std::mt19937 rng(2026120801);
+    const auto chain = [](const std::string& blend, int n) {
+        std::ostringstream s;
+        s << R"({"op": "smooth_union", "smoothness": 0.2, "blend": ")" << blend
+          << R"(", "children": [)";
+        for (int i = 0; i < n; ++i)
+            s << (i ? ", " : "") << R"({"shape": "sphere", "radius": 0.3, "position": [0, 0, 0]})";
+        s << "]}";
+        return s.str();
+    };
+    for (const std::string blend : {"polynomial", "circular"}) {
+        const auto floorOf = [&](const std::string& sdf, float most, float dips) {
+            const std::optional<Compiled> c = compileText(sdf, false);
+            ASSERT_TRUE(c);
+            const std::optional<SdfFieldFloor> floor = sdfProgramFloor(c->program.instructions);
+            ASSERT_TRUE(floor) << blend;
+            EXPECT_LE(floor->drop, most + 1e-6f) << blend;
+            float deepest = 0.0f;
+            expectFloorHolds(c->program, *floor, rng, blend, &deepest);
+            EXPECT_GT(deepest, dips) << blend; // the bound is tight
+        };
+        // One chain: the rule alone gave 200 k / 4 = 10. It dips nearly k.
+        floorOf(chain(blend, 200), 0.2f, 0.9f * 0.2f);
+        // Two such chains smoothly united: both dip nearly k, then their union as much again as
+        // the rule adds (k / 4, or k (1 - 1 / sqrt 2) circular): a chain's bound needs one
+        // operand that is no chain.
+        const float link = blend == "circular" ? 1.0f - 1.0f / std::sqrt(2.0f) : 0.25f;
+        floorOf(R"({"op": "smooth_union", "smoothness": 0.2, "blend": ")" + blend +
+                    R"(", "children": [)" + chain(blend, 100) + ", " + chain(blend, 100) + "]}",
+                (1.0f + link) * 0.2f, 1.15f * 0.2f);
+    }
+    RandomTree unions{std::mt19937(20261208)};
+    unions.ops = {"smooth_union", "union"};
+    RandomTree any{std::mt19937(20261209)};
+    int floors = 0;
+    for (int t = 0; t < 80; ++t) {
+        const std::string sdf = t % 2 ? unions.group(3) : any.group(3);
+        const std::optional<Compiled> c = compileText(sdf, false);
+        if (!c) continue;
+        const std::optional<SdfFieldFloor> floor = sdfProgramFloor(c->program.instructions);
+        if (!floor) continue;
+        ++floors;
+        expectFloorHolds(c->program, *floor, rng, sdf);
+        if (HasFailure()) return;
+    }
+    EXPECT_GT(floors, 20);
+}
+
 // Outside the grid run the whole program's unbounded operands (here a plane: one of the grid's
 // planes, so the outside list is empty) and the floor of the rest stands for them
 // (SdfCellGrid::outsideFloor): the least of the two is never above the whole program's
