@@ -682,4 +682,9 @@ SdfBounds sdfNodeBounds(const SdfNode& node, float parentFieldScale) {
     return parentBoundsAt(node, 0.0f, parentFieldScale);
 }
 
+SdfBounds sdfNodeBoundsAtLevel(const SdfNode& node, float level, float parentFieldScale) {
+    // A length L of the parent's frame is a field value of L * parentFieldScale.
+    return parentBoundsAt(node, std::max(level, 0.0f) / parentFieldScale, parentFieldScale);
+}
+
 } // namespace rmsc

@@ -30,9 +30,11 @@ layout(std140, binding = SDF_CELL_HEADER_BINDING) uniform SdfCellHeader {
     // where there is none): llvmpipe runs every iteration of a loop of constant length.
     vec4 sdfCellPlaneFields[SDF_CELL_PLANES];
     uvec4 sdfCellPlaneInstructions;
+    vec4 sdfCellHitEndMin; // a box that holds every point whose field is at most w (0: none)
+    vec4 sdfCellHitEndMax;
 }; // then the words (SdfCellGrid::words), read through sdfCellTexels below
 // The header's size in texels of two words (engine/render/gpu_layout.hpp, GpuSdfCellHeader).
-#define SDF_CELL_HEADER_TEXELS (2u * uint(5 + SDF_CELL_PLANES))
+#define SDF_CELL_HEADER_TEXELS (2u * uint(7 + SDF_CELL_PLANES))
 
 // The same buffer as pairs of words (a buffer texture over it, engine/render/gpu_scene.cpp),
 // read at indices that differ between pixels: a cell's two words in one fetch, where llvmpipe
@@ -69,6 +71,20 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
     vec2 span =
         sdfBoxSpan(sdfCellOrigin.xyz, sdfCellOrigin.xyz + vec3(sdfCellOrigin.w), ro, rd);
     return span.y < max(span.x, 0.0) ? 0.0 : min(tMax, span.y);
+}
+
+// How far along the ray ro + t rd the march can hit a surface: sdfRayEnd, and where the ray
+// leaves the header's hit-end box (the scene's bounds at a field level, engine/render/
+// gpu_scene.cpp: setHitEnd) when the hit threshold epsilon * max(t, 1) stays within that level
+// up to there. A hit needs the field below the threshold, so it lies in the box; a ray past the
+// content ends there instead of crossing the grid's empty space (0 when it misses the box).
+#define SDF_HAS_HIT_END 1
+float sdfHitEnd(vec3 ro, vec3 rd, float tMax, float epsilon) {
+    float end = sdfRayEnd(ro, rd, tMax);
+    float level = sdfCellHitEndMin.w;
+    if (level <= 0.0 || epsilon * max(end, 1.0) > level) return end;
+    vec2 span = sdfBoxSpan(sdfCellHitEndMin.xyz, sdfCellHitEndMax.xyz, ro, rd);
+    return span.y < max(span.x, 0.0) ? 0.0 : min(end, span.y);
 }
 
 // The list of the program that runs at p, as sdfCellRange in engine/sdf/cell_pruning.cpp. The

@@ -20,6 +20,11 @@ float sdfRayEnd(vec3 ro, vec3 rd, float tMax) {
     return tMax;
 }
 #endif
+#ifndef SDF_HAS_HIT_END
+float sdfHitEnd(vec3 ro, vec3 rd, float tMax, float epsilon) {
+    return sdfRayEnd(ro, rd, tMax);
+}
+#endif
 
 // The field whose gradient is the normal at a hit: the scene's distance, or the one the map
 // names (SDF_SURFACE_FIELD: the nearest shape of a union of shapes, which sdfSurface found;

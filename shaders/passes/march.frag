@@ -35,7 +35,8 @@ void main() {
     vec3 ro = frustumOrigin(gl_FragCoord.xy); // the eye, or the pixel's point (orthographic)
     float tMin = max(frame.cameraPosition.w / forwardness,
                      texelFetch(uConeStart, pixel / CONE_TILE_SIZE, 0).x);
-    float tMax = sdfRayEnd(ro, rd, min(frame.march.y, rasterViewDepth / forwardness));
+    float tMax =
+        sdfHitEnd(ro, rd, min(frame.march.y, rasterViewDepth / forwardness), frame.march.z);
 
     float t;
     int steps = 0;

@@ -389,6 +389,61 @@ TEST(SdfStrategies, CellsComeDownToTheContentInAStep) {
     EXPECT_LE(floorFarSteps, 2);
 }
 
+// Twisted shapes have no floor (a twist's field is no distance to a box), so nothing told the
+// march where the content ends: a ray that passed between them crossed the grid's empty space to
+// its far side, the content's cube grown 16 times. It now ends where it leaves the scene's bounds
+// at a level above the hit threshold (sdfHitEnd, common/sdf_cells.glsl; the header's hit-end
+// box, render/gpu_scene.cpp), where no hit can lie: exactly the picture, the depths and the ids
+// the march drew without that end, in a fraction of the steps.
+TEST(SdfStrategies, CellsEndRaysWhereTheyLeaveTheContentsBounds) {
+    std::ostringstream sdf;
+    sdf << R"({"version": 1, "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "fov": 40},
+        "materials": {"a": {"base_color": "#e76f51"}, "b": {"base_color": "#2a9d8f"}},
+        "lights": [{"type": "directional", "direction": [-0.4, -0.7, -1.0], "intensity": 3.0}],
+        "sdf": {"children": [)";
+    for (int i = 0; i < 24; ++i)
+        sdf << (i ? ", " : "") << R"({"rotation": [0, )" << (i * 37) % 80 - 40
+            << R"(, 0], "position": [)" << (i % 6) * 0.6f - 1.5f << ", " << (i / 6) * 0.6f - 0.9f
+            << R"(, 0], "children": [{"shape": "capsule", "half_height": 0.15, "radius": 0.08,
+                "material": ")"
+            << (i % 2 ? "a" : "b") << R"(", "modifiers": [{"type": "twist",
+                "amount": 60, "radius": 0.1}]}, {"shape": "box", "half_extents": [0.1, 0.1, 0.1],
+                "position": [0.15, 0.15, 0]}]})";
+    sdf << "]}}";
+    const PreparedScene prepared = prepareSceneText(sdf.str());
+    Renderer& renderer = sharedRenderer(); // (and the context)
+    GpuScene gpu = uploadScene(prepared, SdfStrategy::Cells);
+    ASSERT_NE(gpu.sdfMap.find("common/sdf_cells.glsl"), std::string::npos);
+    ASSERT_GT(gpu.sdfCellHeader.hitEndMin.w, 0.0f);
+    FrameTargets targets = createFrameTargets(160, 96);
+    const auto draw = [&](Pixels<float>& steps, Pixels<float>& depths, Pixels<std::uint32_t>& ids) {
+        renderer.render(gpu, prepared.scene.camera, prepared.scene.render, targets);
+        steps = readMarchSteps(targets);
+        depths = readViewDepth(targets);
+        ids = readObjectIds(targets);
+        return readDisplayColor(targets);
+    };
+    Pixels<float> steps, depths, endlessSteps, endlessDepths;
+    Pixels<std::uint32_t> ids, endlessIds;
+    const auto colour = draw(steps, depths, ids);
+    gpu.sdfCellHeader.hitEndMin.w = 0.0f; // no hit end: the rays cross the grid
+    glNamedBufferSubData(gpu.sdfCells.id(), 0, sizeof gpu.sdfCellHeader, &gpu.sdfCellHeader);
+    const auto endless = draw(endlessSteps, endlessDepths, endlessIds);
+    EXPECT_TRUE(imagesMatch(colour, endless, "strategy_cells_hit_end", {0, 0.0}));
+    EXPECT_EQ(depths.data, endlessDepths.data);
+    EXPECT_EQ(ids.data, endlessIds.data);
+    double missed = 0.0, missedSteps = 0.0, endlessMissedSteps = 0.0;
+    for (std::size_t i = 0; i < steps.data.size(); ++i)
+        if (steps.data[i] > 0.0f && ids.data[i] == 0u) {
+            missed += 1.0;
+            missedSteps += steps.data[i];
+            endlessMissedSteps += endlessSteps.data[i];
+        }
+    ASSERT_GT(missed, 2000.0);                        // the rays between the shapes
+    EXPECT_LT(missedSteps / missed, 6.0);             // 5.67
+    EXPECT_LT(missedSteps, 0.5 * endlessMissedSteps); // 14.06 a missed pixel without
+}
+
 // A ray level with the floor, or rising slightly, still meets it: the hit threshold grows by
 // epsilon a unit of distance and catches up with a field that grows more slowly (the march
 // stops there). Looking away from the content, every ray misses its box, and the step to the

@@ -165,6 +165,13 @@ void expectTreeContained(const SdfNode& root, const std::string& what, bool tigh
     const SdfBounds bounds = sdfNodeBounds(root);
     expectContained([&](glm::vec3 p) { return sdfDistance(program, p); }, bounds, 0.0f, what,
                     tightness);
+    // And at a positive level (where the march's hit threshold reaches: sdfNodeBoundsAtLevel
+    // ends rays, render/gpu_scene.cpp).
+    const SdfBounds atLevel = sdfNodeBoundsAtLevel(root, 0.1f);
+    ASSERT_EQ(atLevel.bounded, bounds.bounded) << what;
+    if (atLevel.bounded)
+        expectContained([&](glm::vec3 p) { return sdfDistance(program, p); }, atLevel, 0.1f,
+                        what + ", level 0.1", false);
 }
 
 // A sphere and a box overlapping a little, the box turned and scaled non-uniformly.

@@ -62,8 +62,12 @@ struct GpuSdfCellHeader {
     // 0xffffffff.
     glm::vec4 planeFields[4]{};
     glm::uvec4 planeInstructions{0xffffffffu};
+    // Where every hit lies (render/gpu_scene.cpp, setHitEnd): a box that holds every point
+    // whose field is at most hitEndMin.w (0: no such box), xyz its corners.
+    glm::vec4 hitEndMin{0.0f};
+    glm::vec4 hitEndMax{0.0f};
 };
-static_assert(sizeof(GpuSdfCellHeader) == 144); // sdf_cells.glsl: the words from texel 18
+static_assert(sizeof(GpuSdfCellHeader) == 176); // sdf_cells.glsl: the words from texel 22
 
 // GpuLight::directionType.w.
 enum GpuLightType : int { kGpuDirectional = 0, kGpuPoint = 1, kGpuSpot = 2 };

@@ -68,7 +68,7 @@ SdfBounds primitiveBounds(PrimitiveId id, const PrimitiveParams& params, float l
 // The same for an extruded or revolved 2D profile.
 SdfBounds profileBounds(const SdfProfile& profile, float level = 0.0f);
 
-// `parentFieldScale` in the two functions below: the field units (world units, in which the
+// `parentFieldScale` in the functions below: the field units (world units, in which the
 // smoothness of the operations is given) per unit of length of the node's parent frame. 1 for
 // the root of a scene's tree; for a subtree, the product of the smallest scale factors of its
 // ancestors' transforms divided by their modifiers' step corrections (sdfFieldShrink), or any
@@ -80,5 +80,8 @@ SdfBounds profileBounds(const SdfProfile& profile, float level = 0.0f);
 SdfBounds sdfNodeLocalBounds(const SdfNode& node, float parentFieldScale = 1.0f);
 // The same in the parent's frame (node.transform applied).
 SdfBounds sdfNodeBounds(const SdfNode& node, float parentFieldScale = 1.0f);
+// Where the node's field is at most `level` (>= 0, field units), in the parent's frame: every
+// point whose field is at most the level lies in the box.
+SdfBounds sdfNodeBoundsAtLevel(const SdfNode& node, float level, float parentFieldScale = 1.0f);
 
 } // namespace rmsc
