@@ -57,8 +57,8 @@ constexpr float kHitEndLevel = 0.1f;
 
 // The box where every hit lies, when every surface lies inside the grid's cube: the scene's
 // bounds at kHitEndLevel. A ray that passes the content ends there, not at the cube's far side
-// (the cube is the content's grown 16 times, and the march's steps through its empty space
-// towards it were a third of the 1,000 mixed shapes' steps).
+// (the cube is the content's grown 16 times: the 1,000 mixed shapes, which have no floor, took
+// 8.9 march steps a pixel crossing it, 3.6 with this end).
 void setHitEnd(GpuSdfCellHeader& header, const PreparedScene& prepared) {
     header.hitEndMin = header.hitEndMax = glm::vec4(0.0f);
     if (header.info.w == 0u || !prepared.scene.sdf) return;

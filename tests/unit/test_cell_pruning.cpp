@@ -838,7 +838,7 @@ TEST(CellPruning, AChainOfSmoothUnionsDropsByItsSmoothnessNotItsLength) {
         expectFloorHolds(c->program, *floor, rng, sdf);
         if (HasFailure()) return;
     }
-    EXPECT_GT(floors, 20);
+    EXPECT_GE(floors, 29); // of the 80 trees, those with a floor: 29
 }
 
 // Outside the grid run the whole program's unbounded operands (here a plane: one of the grid's
